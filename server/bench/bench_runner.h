@@ -1,0 +1,61 @@
+// Shared pieces of locator-bench's runs: query streams, cost measurement and
+// timing of a PointLocator.
+
+#ifndef LOCATOR_SERVER_BENCH_BENCH_RUNNER_H_
+#define LOCATOR_SERVER_BENCH_BENCH_RUNNER_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "server/core/geometry.h"
+#include "server/core/locate_result.h"
+#include "server/core/point_locator.h"
+#include "server/core/workload.h"
+
+namespace locator::bench {
+
+// Sums of the paper's cost metric over some queries.
+struct CostSums {
+  double cost = 0;
+  double faces = 0;
+  double comparisons = 0;
+  size_t queries = 0;
+
+  void Add(const LocateCost& c) {
+    cost += c.total();
+    faces += c.faces_visited;
+    comparisons += c.comparisons;
+    ++queries;
+  }
+  void Add(const CostSums& o) {
+    cost += o.cost;
+    faces += o.faces;
+    comparisons += o.comparisons;
+    queries += o.queries;
+  }
+  double mean_cost() const { return queries ? cost / queries : 0; }
+  double mean_faces() const { return queries ? faces / queries : 0; }
+  double mean_comparisons() const {
+    return queries ? comparisons / queries : 0;
+  }
+};
+
+// The first `count` queries of `kind` over `box`.
+std::vector<Point2> MakeQueries(WorkloadKind kind, const BoundingBox& box,
+                                uint64_t seed, size_t count);
+
+// Locates every query in order, adding costs to *sums (if given).
+void LocateAll(const PointLocator& locator, std::span<const Point2> queries,
+               CostSums* sums);
+
+// Median over `repeats` runs of the wall-clock ns per call of
+// locate(queries[i]) over all queries.
+double MedianNsPerQuery(std::span<const Point2> queries, int repeats,
+                        const std::function<void(const Point2&)>& locate);
+
+}  // namespace locator::bench
+
+#endif  // LOCATOR_SERVER_BENCH_BENCH_RUNNER_H_

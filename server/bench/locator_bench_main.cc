@@ -1,0 +1,105 @@
+// locator-bench: in-process benchmark of the point-location strategies.
+//
+//   locator-bench --paper [--format csv|md] [--seeds 5] [--budget 64KiB]
+//   locator-bench --scale [--big] [--format csv|md] [--queries 100000]
+//
+// A program that prints figures, never a test: compare strategies within one
+// run (the machine is shared and noisy).
+
+#include <boost/program_options.hpp>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "server/bench/bench_report.h"
+#include "server/bench/paper_benchmark.h"
+#include "server/bench/scale_benchmark.h"
+#include "server/core/byte_size.h"
+
+namespace po = boost::program_options;
+
+namespace {
+
+std::vector<size_t> ParseSizes(const std::string& text) {
+  std::vector<size_t> sizes;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    sizes.push_back(std::stoul(item));
+  }
+  return sizes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  po::options_description desc(
+      "locator-bench: in-process point-location benchmark\nOptions");
+  std::string format = "md", budget, sizes;
+  locator::bench::PaperOptions paper;
+  locator::bench::ScaleOptions scale;
+  desc.add_options()("help,h", "print this help")(
+      "paper", "reproduce the paper's Tables 1-4 (+ uniform, mixed, drift)")(
+      "scale", "ns per locate at n = 100K and 1M vs CGAL")(
+      "big", "with --scale: also n = 4M")(
+      "format", po::value(&format)->default_value("md"), "csv | md")(
+      "seeds", po::value(&paper.seeds)->default_value(5),
+      "--paper: datasets per n")(
+      "sizes", po::value(&sizes),
+      "comma-separated n values (default: the mode's own)")(
+      "budget", po::value(&budget),
+      "self-tuning memory budget, e.g. 64KiB (default 3% of the "
+      "triangulation)")("queries",
+                        po::value(&scale.queries)->default_value(100000),
+                        "--scale: timed queries per workload")(
+      "repeats", po::value(&scale.repeats)->default_value(5),
+      "--scale: timing repeats (median reported)");
+  po::variables_map vm;
+  try {
+    po::store(po::parse_command_line(argc, argv, desc), vm);
+    po::notify(vm);
+  } catch (const std::exception& e) {
+    std::cerr << "locator-bench: " << e.what() << "\n" << desc;
+    return 2;
+  }
+  if (vm.count("help") || (!vm.count("paper") && !vm.count("scale")) ||
+      (format != "csv" && format != "md")) {
+    std::cerr << desc;
+    return vm.count("help") ? 0 : 2;
+  }
+  if (!budget.empty()) {
+    locator::Status s =
+        locator::ParseByteSize(budget, &paper.tuning.budget_bytes);
+    if (!s.ok()) {
+      std::cerr << "locator-bench: " << s.message() << "\n";
+      return 2;
+    }
+    scale.tuning.budget_bytes = paper.tuning.budget_bytes;
+  }
+  if (!sizes.empty()) {
+    try {
+      paper.sizes = scale.sizes = ParseSizes(sizes);
+    } catch (const std::exception&) {
+      std::cerr << "locator-bench: bad --sizes '" << sizes << "'\n";
+      return 2;
+    }
+  } else if (vm.count("big")) {
+    scale.sizes.push_back(4000000);
+  }
+
+  locator::bench::BenchReport report;
+  if (vm.count("paper")) locator::bench::RunPaper(paper, &report);
+  if (vm.count("scale")) {
+    locator::Status s = locator::bench::RunScale(scale, &report);
+    if (!s.ok()) {
+      std::cerr << "locator-bench: " << s.ToString() << "\n";
+      return 1;
+    }
+  }
+  if (format == "csv") {
+    report.PrintCsv(std::cout);
+  } else {
+    report.PrintMarkdown(std::cout);
+  }
+  return 0;
+}

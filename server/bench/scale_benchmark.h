@@ -1,0 +1,33 @@
+// RunScale: wall-clock ns per locate at large n, for every workload and
+// strategy and for CGAL's own methods (no hint, last answer as hint,
+// Triangulation_hierarchy_2), checking every answer against CGAL; plus build
+// times and bytes of each structure.
+
+#ifndef LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_
+#define LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_
+
+#include <cstddef>
+#include <vector>
+
+#include "server/bench/bench_report.h"
+#include "server/core/status.h"
+#include "server/core/tuning_options.h"
+
+namespace locator::bench {
+
+struct ScaleOptions {
+  std::vector<size_t> sizes = {100000, 1000000};
+  size_t warmup = 5000;
+  size_t queries = 100000;
+  // walk and CGAL without a hint are O(sqrt n) per query: fewer queries.
+  size_t slow_queries = 2000;
+  int repeats = 5;
+  TuningOptions tuning;
+};
+
+// Fails with Internal if any answer disagrees with CGAL.
+Status RunScale(const ScaleOptions& options, BenchReport* report);
+
+}  // namespace locator::bench
+
+#endif  // LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_

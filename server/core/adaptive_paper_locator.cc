@@ -1,0 +1,160 @@
+#include "server/core/adaptive_paper_locator.h"
+
+#include <algorithm>
+#include <queue>
+#include <random>
+#include <unordered_set>
+
+#include "server/core/hot_regions.h"
+#include "server/core/walk.h"
+
+namespace locator {
+
+namespace {
+
+using Face_handle = Triangulation::Face_handle;
+
+// "Slightly fatter": each side grows by this fraction of the rectangle.
+constexpr double kFatten = 0.1;
+
+bool Intersects(const BoundingBox& a, const BoundingBox& b) {
+  return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y &&
+         b.min_y <= a.max_y;
+}
+
+BoundingBox FaceBox(Face_handle f) {
+  BoundingBox b;
+  for (int i = 0; i < 3; ++i)
+    b.Extend(Triangulation::FromCgal(f->vertex(i)->point()));
+  return b;
+}
+
+}  // namespace
+
+AdaptivePaperLocator::AdaptivePaperLocator(const Triangulation& t,
+                                           const TuningOptions& options)
+    : t_(t),
+      options_(options),
+      fallback_(t),
+      histogram_(GridGeometry(t.bounding_box(), options.grid_size)) {}
+
+void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
+  const std::shared_ptr<const Samples> s =
+      samples_.load(std::memory_order_acquire);
+  if (!s) {
+    histogram_.Add(q);
+    fallback_.Locate(q, result);
+    if (warmup_seen_.fetch_add(1, std::memory_order_relaxed) + 1 ==
+        options_.warmup_queries) {
+      Tune();
+    }
+    return;
+  }
+  const bool in_region =
+      std::any_of(s->regions.begin(), s->regions.end(),
+                  [&q](const BoundingBox& r) { return r.Contains(q); });
+  if (!in_region) {
+    fallback_.Locate(q, result);
+    return;
+  }
+  size_t best = 0;
+  double best_d2 = SquaredDistance(s->points[0], q);
+  for (size_t i = 1; i < s->points.size(); ++i) {
+    const double d2 = SquaredDistance(s->points[i], q);
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best = i;
+    }
+  }
+  result->cost = LocateCost();
+  WalkAndDescribe(t_, s->faces[best], q, result);
+  result->cost.comparisons = static_cast<uint32_t>(s->points.size());
+}
+
+void AdaptivePaperLocator::Retune() { Tune(); }
+
+void AdaptivePaperLocator::Tune() const {
+  std::lock_guard<std::mutex> lock(tune_mu_);
+  histogram_.Drain(&counts_);
+  auto s = std::make_shared<Samples>();
+  const std::shared_ptr<const Samples> old = samples_.load();
+  s->version = old ? old->version + 1 : 1;
+  s->histogram = counts_;
+  s->regions = FindHotRegions(histogram_.grid(), counts_);
+  for (const BoundingBox& r : s->regions) {
+    s->fat.push_back(r.Inflated(kFatten));
+    SampleRegion(s->fat.back(), s.get());
+  }
+  // A region whose sampling found nothing cannot serve queries.
+  if (s->points.empty()) s->regions.clear();
+  samples_.store(std::move(s), std::memory_order_release);
+}
+
+void AdaptivePaperLocator::SampleRegion(const BoundingBox& fat,
+                                        Samples* out) const {
+  // Collect every edge whose midpoint lies in the fat rectangle by a
+  // breadth-first search over the faces that overlap it, then draw the
+  // samples uniformly without replacement. Same distribution as the paper's
+  // rejection sampling, with a bounded running time.
+  const Point2 centre{(fat.min_x + fat.max_x) / 2, (fat.min_y + fat.max_y) / 2};
+  const Face_handle seed = FaceNear(t_, t_.DefaultStart(), centre);
+  std::vector<std::pair<Point2, Face_handle>> edges;
+  std::unordered_set<const void*> seen{&*seed};
+  std::queue<Face_handle> frontier;
+  frontier.push(seed);
+  while (!frontier.empty()) {
+    const Face_handle f = frontier.front();
+    frontier.pop();
+    for (int i = 0; i < 3; ++i) {
+      const Face_handle n = f->neighbor(i);
+      const bool infinite = t_.IsInfinite(n);
+      // Each edge once: from the face with the smaller id, or the hull side.
+      if (infinite || f->info() < n->info()) {
+        const Point2 a =
+            Triangulation::FromCgal(f->vertex((i + 1) % 3)->point());
+        const Point2 b =
+            Triangulation::FromCgal(f->vertex((i + 2) % 3)->point());
+        const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+        if (fat.Contains(mid)) edges.emplace_back(mid, f);
+      }
+      if (!infinite && !seen.count(&*n) && Intersects(FaceBox(n), fat)) {
+        seen.insert(&*n);
+        frontier.push(n);
+      }
+    }
+  }
+  if (edges.empty()) {
+    // The rectangle lies outside the hull: start from the nearest hull face.
+    const Point2 a = Triangulation::FromCgal(seed->vertex(0)->point());
+    edges.emplace_back(a, seed);
+  }
+  std::mt19937_64 rng(options_.seed + out->points.size());
+  const size_t k = std::min<size_t>(edges.size(), options_.samples_per_region);
+  for (size_t i = 0; i < k; ++i) {
+    std::uniform_int_distribution<size_t> pick(i, edges.size() - 1);
+    std::swap(edges[i], edges[pick(rng)]);
+    out->points.push_back(edges[i].first);
+    out->faces.push_back(edges[i].second);
+  }
+}
+
+TuningSummary AdaptivePaperLocator::Summary() const {
+  TuningSummary sum;
+  sum.grid_size = histogram_.grid().size();
+  sum.grid_box = histogram_.grid().box();
+  const std::shared_ptr<const Samples> s = samples_.load();
+  if (!s) return sum;
+  sum.snapshot_version = s->version;
+  sum.retune_count = s->version;
+  sum.histogram = s->histogram;
+  sum.hot_regions = s->regions;
+  sum.start_points = s->points;
+  sum.start_point_count = s->points.size();
+  sum.memory_bytes =
+      histogram_.MemoryBytes() + s->points.capacity() * sizeof(Point2) +
+      s->faces.capacity() * sizeof(Face_handle) +
+      (s->regions.capacity() + s->fat.capacity()) * sizeof(BoundingBox);
+  return sum;
+}
+
+}  // namespace locator

@@ -1,0 +1,70 @@
+// Dataset: the input points (and optional values) a triangulation is built
+// from, and the loaders that produce one.
+//
+// Sources, selected by LoadDataset's spec:
+//   uniform:N[:SEED]        N points uniform in the unit square.
+//   clusters:N:K[:SEED]     N points in K Gaussian blobs in the unit square
+//                           (non-uniform data).
+//   PATH ending in .node    Triangle's node format.
+//   any other PATH          CSV/XYZ text: "x,y[,z]" per line, comma- or
+//                           whitespace-separated, optional header line,
+//                           '#' comments, blank lines ignored.
+// Every parse error is InvalidArgument with "file:line: what is wrong"
+// (not a number, NaN/inf, wrong column count, empty file). A missing file is
+// NotFound / IOError with the path.
+//
+// Thread-safety: free functions; a Dataset is a plain value.
+
+#ifndef LOCATOR_CORE_DATASET_H_
+#define LOCATOR_CORE_DATASET_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "server/core/geometry.h"
+#include "server/core/status.h"
+
+namespace locator {
+
+struct Dataset {
+  std::vector<Point2> points;
+  // Empty when the source has no values; otherwise parallel to `points`.
+  std::vector<double> values;
+  // The spec or path it came from, for stats and logs.
+  std::string source;
+
+  bool has_values() const { return !values.empty(); }
+};
+
+struct DatasetLimits {
+  // Loading more points than this fails with ResourceExhausted, before the
+  // memory is committed (each point costs ~200 bytes once triangulated).
+  size_t max_points = 50'000'000;
+};
+
+// Loads a dataset from a file path or a generator spec (see above).
+Status LoadDataset(const std::string& spec, Dataset* out,
+                   const DatasetLimits& limits = DatasetLimits());
+
+// Parses CSV/XYZ text. `filename` is only used in error messages.
+Status ParseXyzText(std::string_view text, std::string_view filename,
+                    Dataset* out,
+                    const DatasetLimits& limits = DatasetLimits());
+
+// Parses Triangle .node text ("<#points> <dim=2> <#attributes> <#markers>"
+// then "<index> <x> <y> [attributes...] [marker]"); the first attribute, if
+// any, becomes the value.
+Status ParseNodeText(std::string_view text, std::string_view filename,
+                     Dataset* out,
+                     const DatasetLimits& limits = DatasetLimits());
+
+// Deterministic generators (same seed, same points, on every platform).
+Dataset GenerateUniform(size_t n, uint64_t seed);
+Dataset GenerateClusters(size_t n, size_t k, uint64_t seed);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_DATASET_H_

@@ -1,0 +1,113 @@
+#include "server/core/engine.h"
+
+#include <chrono>
+#include <string>
+#include <utility>
+
+#include "server/core/locator_factory.h"
+#include "server/core/triangulation.h"
+
+namespace locator {
+
+namespace {
+
+// Points located between two polls of the batch's keep_going callback:
+// small enough to notice a cancellation within ~0.1 ms, large enough that
+// polling is free.
+constexpr size_t kBatchChunk = 256;
+
+Status CheckFinite(const Point2& q, const std::string& what) {
+  if (IsFinite(q)) return Status::OK();
+  return Status::InvalidArgument(
+      what + " has a non-finite coordinate (x=" + std::to_string(q.x) +
+      ", y=" + std::to_string(q.y) + ")");
+}
+
+}  // namespace
+
+Engine::Engine() = default;
+Engine::~Engine() = default;
+
+Status Engine::Create(Dataset dataset, const EngineOptions& options,
+                      std::unique_ptr<Engine>* engine) {
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<Engine> e(new Engine());
+  Status s = Triangulation::Build(dataset, &e->triangulation_);
+  if (!s.ok()) return s;
+  const Triangulation& t = *e->triangulation_;
+  s = MakePointLocator(options.strategy, t, options.tuning, &e->locator_);
+  if (!s.ok()) return s;
+  DatasetInfo& info = e->info_;
+  info.source = std::move(dataset.source);
+  info.input_points = t.input_points();
+  info.vertices = t.num_vertices();
+  info.duplicates_merged = t.duplicates_merged();
+  info.triangles = t.num_triangles();
+  info.bounding_box = t.bounding_box();
+  info.has_values = t.has_values();
+  info.triangulation_bytes = t.MemoryBytes();
+  info.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+  *engine = std::move(e);
+  return Status::OK();
+}
+
+void Engine::Record(uint64_t cost) const {
+  queries_.fetch_add(1, std::memory_order_relaxed);
+  cost_sum_.fetch_add(cost, std::memory_order_relaxed);
+  window_cost_.fetch_add(cost, std::memory_order_relaxed);
+  // The query that completes a window publishes its mean; costs that race
+  // with the reset land in the next window, which is fine for a statistic.
+  if (window_count_.fetch_add(1, std::memory_order_relaxed) + 1 ==
+      kStatsWindow) {
+    const uint64_t sum = window_cost_.exchange(0, std::memory_order_relaxed);
+    window_count_.store(0, std::memory_order_relaxed);
+    last_window_mean_.store(static_cast<double>(sum) / kStatsWindow,
+                            std::memory_order_relaxed);
+  }
+}
+
+Status Engine::Locate(const Point2& q, LocateResult* result) const {
+  Status s = CheckFinite(q, "query point");
+  if (!s.ok()) return s;
+  locator_->Locate(q, result);
+  Record(result->cost.total());
+  return Status::OK();
+}
+
+Status Engine::LocateBatch(std::span<const Point2> queries,
+                           std::vector<LocateResult>* results,
+                           const std::function<bool()>& keep_going) const {
+  for (size_t i = 0; i < queries.size(); ++i) {
+    Status s = CheckFinite(queries[i], "point " + std::to_string(i));
+    if (!s.ok()) return s;
+  }
+  results->resize(queries.size());
+  for (size_t begin = 0; begin < queries.size(); begin += kBatchChunk) {
+    if (keep_going && !keep_going()) return Status::Unavailable("cancelled");
+    const size_t end = std::min(queries.size(), begin + kBatchChunk);
+    for (size_t i = begin; i < end; ++i) {
+      locator_->Locate(queries[i], &(*results)[i]);
+      Record((*results)[i].cost.total());
+    }
+  }
+  return Status::OK();
+}
+
+void Engine::Retune() { locator_->Retune(); }
+
+EngineStats Engine::Stats() const {
+  EngineStats s;
+  s.dataset = info_;
+  s.strategy = std::string(locator_->name());
+  s.queries = queries_.load(std::memory_order_relaxed);
+  const uint64_t sum = cost_sum_.load(std::memory_order_relaxed);
+  s.mean_cost_lifetime = s.queries ? static_cast<double>(sum) / s.queries : 0;
+  const double recent = last_window_mean_.load(std::memory_order_relaxed);
+  s.mean_cost_recent = recent >= 0 ? recent : s.mean_cost_lifetime;
+  s.tuning = locator_->Summary();
+  return s;
+}
+
+}  // namespace locator

@@ -1,0 +1,108 @@
+// Engine: a dataset's triangulation plus the locator strategy answering on
+// it, with query validation and serving statistics. This is the one entry
+// point the service and tools use; it exposes plain types only (no CGAL).
+//
+// Thread-safety: all const methods and Retune() may be called concurrently.
+// Invariant: the triangulation is immutable once Create() returns.
+
+#ifndef LOCATOR_CORE_ENGINE_H_
+#define LOCATOR_CORE_ENGINE_H_
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "server/core/dataset.h"
+#include "server/core/locate_result.h"
+#include "server/core/point_locator.h"
+#include "server/core/status.h"
+#include "server/core/tuning_options.h"
+
+namespace locator {
+
+class Triangulation;
+
+struct EngineOptions {
+  // walk | jump-and-walk | adaptive-paper | self-tuning
+  std::string strategy = "self-tuning";
+  TuningOptions tuning;
+};
+
+struct DatasetInfo {
+  std::string source;
+  uint64_t input_points = 0;
+  uint64_t vertices = 0;           // distinct points
+  uint64_t duplicates_merged = 0;  // input_points - vertices
+  uint64_t triangles = 0;          // finite faces
+  BoundingBox bounding_box;
+  bool has_values = false;
+  size_t triangulation_bytes = 0;
+  double build_seconds = 0;
+};
+
+struct EngineStats {
+  DatasetInfo dataset;
+  std::string strategy;
+  uint64_t queries = 0;
+  double mean_cost_lifetime = 0;
+  // Mean cost over the most recent completed window of kStatsWindow queries
+  // (the lifetime mean until the first window completes).
+  double mean_cost_recent = 0;
+  TuningSummary tuning;
+};
+
+class Engine {
+ public:
+  static constexpr uint64_t kStatsWindow = 1000;
+
+  // Triangulates `dataset` and sets up the strategy. Fails with
+  // InvalidArgument for fewer than 3 distinct or all-collinear points, or an
+  // unknown strategy.
+  static Status Create(Dataset dataset, const EngineOptions& options,
+                       std::unique_ptr<Engine>* engine);
+  ~Engine();
+
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  // Locates one point. InvalidArgument if a coordinate is NaN or infinite.
+  Status Locate(const Point2& q, LocateResult* result) const;
+
+  // Locates every point of `queries` into `results` (resized), in input
+  // order. Validates all points first: the first non-finite one fails the
+  // whole call with InvalidArgument naming its index, and nothing is located.
+  // `keep_going`, if set, is polled between chunks; returning false stops the
+  // batch with Unavailable("cancelled").
+  Status LocateBatch(std::span<const Point2> queries,
+                     std::vector<LocateResult>* results,
+                     const std::function<bool()>& keep_going = nullptr) const;
+
+  // Re-tunes the strategy now (no-op for fixed strategies).
+  void Retune();
+
+  const DatasetInfo& dataset_info() const { return info_; }
+  EngineStats Stats() const;
+
+ private:
+  Engine();
+  void Record(uint64_t cost) const;
+
+  DatasetInfo info_;
+  std::unique_ptr<Triangulation> triangulation_;
+  std::unique_ptr<PointLocator> locator_;
+
+  mutable std::atomic<uint64_t> queries_{0};
+  mutable std::atomic<uint64_t> cost_sum_{0};
+  mutable std::atomic<uint64_t> window_cost_{0};
+  mutable std::atomic<uint64_t> window_count_{0};
+  mutable std::atomic<double> last_window_mean_{-1};
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_ENGINE_H_

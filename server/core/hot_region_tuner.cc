@@ -1,0 +1,151 @@
+#include "server/core/hot_region_tuner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "server/core/hot_regions.h"
+
+namespace locator {
+
+namespace {
+
+// Beyond about this many starts per vertex a cell's walk is already one face.
+constexpr double kStartsPerPointCap = 4.0;
+
+}  // namespace
+
+HotRegionTuner::HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
+                               const TuningOptions& options, size_t fixed_bytes)
+    : t_(t),
+      grid_(grid),
+      options_(options),
+      counts_(grid.cells(), 0.0),
+      points_(grid.cells(), 0.0) {
+  budget_ = Budget(t, options);
+  // The owner's histogram, our per-cell arrays, the snapshot's histogram
+  // copy and hot flags, and the coarse table are paid first; what is left
+  // buys sub-grid starts.
+  const size_t fixed = fixed_bytes +
+                       grid.cells() * (3 * sizeof(double) + sizeof(char)) +
+                       grid.cells() * StartTable::kBytesPerCell;
+  leaf_budget_ =
+      budget_ > fixed ? (budget_ - fixed) / StartTable::kBytesPerStart : 0;
+  const auto& dt = t.cgal();
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end();
+       ++v) {
+    points_[grid.CellOf(Triangulation::FromCgal(v->point()))] += 1;
+  }
+}
+
+size_t HotRegionTuner::Budget(const Triangulation& t,
+                              const TuningOptions& options) {
+  return options.budget_bytes > 0
+             ? options.budget_bytes
+             : static_cast<size_t>(options.budget_fraction *
+                                   static_cast<double>(t.MemoryBytes()));
+}
+
+int HotRegionTuner::CoarseGridSize(size_t budget, int max_grid) {
+  int g = max_grid;
+  while (g > 4 && size_t(g) * g * kBytesPerCoarseCell > budget / 4) --g;
+  return g;
+}
+
+void HotRegionTuner::AddCounts(const std::vector<double>& fresh) {
+  const double keep = seen_traffic_ ? options_.decay : 0.0;
+  for (size_t c = 0; c < counts_.size(); ++c) {
+    counts_[c] = counts_[c] * keep + fresh[c];
+  }
+  seen_traffic_ = seen_traffic_ || std::any_of(fresh.begin(), fresh.end(),
+                                               [](double x) { return x > 0; });
+}
+
+std::vector<uint32_t> HotRegionTuner::PlanResolution(
+    const std::vector<double>& weight) const {
+  const size_t cells = grid_.cells();
+  std::vector<double> desire(cells), cap(cells), starts(cells, 0.0);
+  for (size_t c = 0; c < cells; ++c) {
+    desire[c] = std::cbrt(std::pow(weight[c] * std::sqrt(points_[c]), 2.0));
+    cap[c] = kStartsPerPointCap * points_[c] + 1;
+  }
+  // Water-filling: scale desires to the budget, pin the cells that hit
+  // their cap, and share what they leave among the rest.
+  std::vector<char> pinned(cells, 0);
+  double remaining = kPlanFill * static_cast<double>(leaf_budget_);
+  for (int round = 0; round < 16; ++round) {
+    double open = 0;
+    for (size_t c = 0; c < cells; ++c) open += pinned[c] ? 0 : desire[c];
+    if (open <= 0 || remaining <= 0) break;
+    const double scale = remaining / open;
+    bool pinned_any = false;
+    for (size_t c = 0; c < cells; ++c) {
+      if (!pinned[c] && scale * desire[c] >= cap[c]) {
+        pinned[c] = 1;
+        starts[c] = cap[c];
+        remaining -= cap[c];
+        pinned_any = true;
+      }
+    }
+    if (!pinned_any) {
+      for (size_t c = 0; c < cells; ++c) {
+        if (!pinned[c]) starts[c] = scale * desire[c];
+      }
+      break;
+    }
+  }
+  std::vector<uint32_t> resolution(cells);
+  for (size_t c = 0; c < cells; ++c) {
+    resolution[c] = std::max<uint32_t>(
+        1, static_cast<uint32_t>(std::sqrt(std::max(0.0, starts[c]))));
+  }
+  return resolution;
+}
+
+std::vector<uint32_t> HotRegionTuner::KeepStableCells(
+    std::vector<uint32_t> fresh) const {
+  if (!table_) return fresh;
+  std::vector<uint32_t> mixed(fresh.size());
+  double leaves = 0;
+  for (size_t c = 0; c < fresh.size(); ++c) {
+    const double old_r = table_->resolution(c);
+    const bool stable =
+        fresh[c] <= kHysteresis * old_r && fresh[c] * kHysteresis >= old_r;
+    mixed[c] = stable ? table_->resolution(c) : fresh[c];
+    leaves += mixed[c] > 1 ? static_cast<double>(mixed[c]) * mixed[c] : 0;
+  }
+  return leaves <= static_cast<double>(leaf_budget_) ? mixed : fresh;
+}
+
+std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
+  const size_t cells = grid_.cells();
+  const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
+  const double prior = total > 0 ? kPriorShare : 1.0;
+  std::vector<double> weight(cells);
+  auto snapshot = std::make_shared<TuningSnapshot>();
+  snapshot->version = version;
+  snapshot->hot.assign(cells, 1);
+  for (size_t c = 0; c < cells; ++c) {
+    const double share = total > 0 ? counts_[c] / total : 0.0;
+    weight[c] = prior / cells + (1 - prior) * share;
+    if (total > 0) snapshot->hot[c] = share * cells >= 0.5;
+  }
+  const std::vector<uint32_t> plan = KeepStableCells(PlanResolution(weight));
+  bool unchanged = table_ != nullptr;
+  for (size_t c = 0; unchanged && c < cells; ++c) {
+    unchanged = table_->resolution(c) == plan[c];
+  }
+  if (!unchanged) {
+    table_ = std::make_shared<StartTable>(t_, grid_, plan, table_.get());
+  }
+  snapshot->table = table_;
+  snapshot->hot_regions = FindHotRegions(grid_, counts_);
+  snapshot->histogram = counts_;
+  snapshot->memory_bytes = snapshot->table->MemoryBytes() +
+                           snapshot->hot.capacity() +
+                           snapshot->histogram.capacity() * sizeof(double) +
+                           2 * cells * sizeof(double);  // counts_, points_
+  return snapshot;
+}
+
+}  // namespace locator

@@ -1,0 +1,101 @@
+// HotRegionTuner: decides where the self-tuning strategy spends its start
+// points, and builds the immutable snapshot the read path uses.
+//
+// It owns the long-term query histogram (decayed at every re-tune, so old
+// traffic fades and a moved hot spot is re-learned) and the number of
+// triangulation vertices in each coarse cell. From both it plans a sub-grid
+// resolution per coarse cell under a memory budget: with w the cell's share
+// of traffic and P its points, a cell with S starts costs about
+// w * sqrt(P / S) faces per query, and minimising the sum under sum S = L
+// gives S proportional to (w * sqrt(P))^(2/3). Starts are capped near the
+// cell's point count, beyond which the walk cannot get shorter. A small
+// prior share of uniform traffic keeps every cell served, so under uniform
+// traffic the plan is a coarse uniform grid and no traffic is ever answered
+// worse than by a start in its own cell.
+//
+// Re-tunes are incremental: a cell keeps its resolution unless the new plan
+// differs by more than kHysteresis (noise in the histogram must not cost a
+// rebuild), an unchanged plan reuses the current table outright, and a
+// changed one copies every unchanged cell. The plan fills kPlanFill of the
+// budget so that kept cells have headroom; a mix that would still exceed
+// the budget falls back to the fresh plan.
+//
+// Thread-safety: not thread-safe; the owner serialises calls.
+
+#ifndef LOCATOR_CORE_HOT_REGION_TUNER_H_
+#define LOCATOR_CORE_HOT_REGION_TUNER_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "server/core/query_histogram.h"
+#include "server/core/start_table.h"
+#include "server/core/triangulation.h"
+#include "server/core/tuning_options.h"
+
+namespace locator {
+
+// What the read path uses between two re-tunes. Immutable once published.
+struct TuningSnapshot {
+  uint64_t version = 0;
+  std::shared_ptr<const StartTable> table;  // shared while the plan holds
+  // hot[c]: coarse cell c drew at least half a uniform share of the traffic
+  // this snapshot was tuned for. Queries elsewhere count as "cold hits"; a
+  // burst of them means the traffic moved.
+  std::vector<char> hot;
+  std::vector<BoundingBox> hot_regions;
+  std::vector<double> histogram;  // decayed counts it was tuned from
+  size_t memory_bytes = 0;
+};
+
+class HotRegionTuner {
+ public:
+  // Share of the plan reserved for uniform traffic.
+  static constexpr double kPriorShare = 0.1;
+  static constexpr double kHysteresis = 1.5;
+  static constexpr double kPlanFill = 0.9;
+  // Bookkeeping per coarse cell: histogram shards, our counts and point
+  // counts, the snapshot's histogram copy and hot flag, the table's cell.
+  static constexpr size_t kBytesPerCoarseCell =
+      QueryHistogram::kShards * sizeof(uint32_t) + 3 * sizeof(double) + 1 +
+      StartTable::kBytesPerCell;
+
+  // The memory budget for `t` under `options`, in bytes.
+  static size_t Budget(const Triangulation& t, const TuningOptions& options);
+  // The largest coarse grid <= max_grid whose bookkeeping takes at most a
+  // quarter of `budget` (at least 4): a tiny budget buys starts, not cells.
+  static int CoarseGridSize(size_t budget, int max_grid);
+
+  // `t` must outlive the tuner. `fixed_bytes` is the memory the owner spends
+  // outside the snapshot's table (counted against the budget).
+  HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
+                 const TuningOptions& options, size_t fixed_bytes);
+
+  // Folds the counts since the last call into the decayed histogram.
+  void AddCounts(const std::vector<double>& fresh);
+  // Plans and builds the next snapshot from the histogram.
+  std::shared_ptr<const TuningSnapshot> Build(uint64_t version);
+
+  size_t budget_bytes() const { return budget_; }
+
+ private:
+  std::vector<uint32_t> PlanResolution(const std::vector<double>& weight) const;
+  // The fresh plan, except where the current table is within hysteresis.
+  std::vector<uint32_t> KeepStableCells(std::vector<uint32_t> fresh) const;
+
+  const Triangulation& t_;
+  const GridGeometry grid_;
+  const TuningOptions options_;
+  size_t budget_;
+  size_t leaf_budget_;  // starts the plan may place beyond the coarse cells
+  bool seen_traffic_ = false;
+  std::vector<double> counts_;
+  std::vector<double> points_;               // vertices per coarse cell
+  std::shared_ptr<const StartTable> table_;  // the last one built
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_HOT_REGION_TUNER_H_

@@ -1,0 +1,36 @@
+// Strategy "jump-and-walk" (Mücke, Saias & Zhu): per query, sample
+// m = ceil(n^(1/3)) vertices at random, and walk from the one closest to the
+// query. No preprocessing; expected O(n^(1/3)) cost on uniform data.
+//
+// Thread-safety: stateless apart from thread-local random bits.
+
+#ifndef LOCATOR_CORE_JUMP_AND_WALK_LOCATOR_H_
+#define LOCATOR_CORE_JUMP_AND_WALK_LOCATOR_H_
+
+#include <cstdint>
+
+#include "server/core/point_locator.h"
+#include "server/core/triangulation.h"
+
+namespace locator {
+
+class JumpAndWalkLocator : public PointLocator {
+ public:
+  // `t` must outlive the locator.
+  explicit JumpAndWalkLocator(const Triangulation& t);
+
+  void Locate(const Point2& q, LocateResult* result) const override;
+  std::string_view name() const override { return "jump-and-walk"; }
+  TuningSummary Summary() const override { return TuningSummary(); }
+
+  // Number of vertices sampled per query.
+  uint32_t sample_size() const { return m_; }
+
+ private:
+  const Triangulation& t_;
+  const uint32_t m_;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_JUMP_AND_WALK_LOCATOR_H_

@@ -1,0 +1,19 @@
+#include "server/core/locate_result.h"
+
+namespace locator {
+
+std::string_view LocationTypeName(LocationType type) {
+  switch (type) {
+    case LocationType::kFace:
+      return "FACE";
+    case LocationType::kEdge:
+      return "EDGE";
+    case LocationType::kVertex:
+      return "VERTEX";
+    case LocationType::kOutsideConvexHull:
+      return "OUTSIDE_CONVEX_HULL";
+  }
+  return "UNKNOWN";
+}
+
+}  // namespace locator

@@ -1,0 +1,30 @@
+// MakePointLocator: builds a strategy by name.
+
+#ifndef LOCATOR_CORE_LOCATOR_FACTORY_H_
+#define LOCATOR_CORE_LOCATOR_FACTORY_H_
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "server/core/point_locator.h"
+#include "server/core/status.h"
+#include "server/core/triangulation.h"
+#include "server/core/tuning_options.h"
+
+namespace locator {
+
+// The strategy names, default ("self-tuning") last.
+const std::vector<std::string>& StrategyNames();
+
+// Builds the strategy `name` over `t` (which must outlive it).
+// InvalidArgument naming the valid strategies for an unknown name, or for
+// tuning options out of range.
+Status MakePointLocator(std::string_view name, const Triangulation& t,
+                        const TuningOptions& options,
+                        std::unique_ptr<PointLocator>* out);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_LOCATOR_FACTORY_H_

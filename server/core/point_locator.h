@@ -1,0 +1,66 @@
+// PointLocator: one point-location strategy over a Triangulation.
+//
+// Strategies (see locator_factory.h): walk, jump-and-walk, adaptive-paper and
+// self-tuning (the default). All of them answer exactly what CGAL's own
+// locate() answers; they differ only in where the walk starts, i.e. in cost.
+//
+// Thread-safety: Locate() may be called from any number of threads at once.
+// Strategies that learn from traffic count queries without serialising
+// readers and swap immutable tuning snapshots atomically.
+
+#ifndef LOCATOR_CORE_POINT_LOCATOR_H_
+#define LOCATOR_CORE_POINT_LOCATOR_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "server/core/geometry.h"
+#include "server/core/locate_result.h"
+
+namespace locator {
+
+// What a strategy has learned, for GetStats and the status page.
+struct TuningSummary {
+  // Monotonic version of the published snapshot (0: none published yet).
+  uint64_t snapshot_version = 0;
+  uint64_t retune_count = 0;
+  // The query histogram: grid_size x grid_size cells over grid_box, row-major
+  // from (min_x, min_y); counts are decayed for self-tuning. Empty when the
+  // strategy keeps none.
+  int grid_size = 0;
+  BoundingBox grid_box;
+  std::vector<double> histogram;
+  // Rectangles where queries concentrate.
+  std::vector<BoundingBox> hot_regions;
+  // A sample of the start points in use (at most a few thousand).
+  std::vector<Point2> start_points;
+  // Total number of start points in use.
+  uint64_t start_point_count = 0;
+  // Bytes of the tuning structures (the published snapshot).
+  size_t memory_bytes = 0;
+};
+
+class PointLocator {
+ public:
+  virtual ~PointLocator() = default;
+
+  // Locates the finite point q. Precondition: IsFinite(q) (callers validate).
+  virtual void Locate(const Point2& q, LocateResult* result) const = 0;
+
+  // The strategy's name as accepted by MakePointLocator().
+  virtual std::string_view name() const = 0;
+
+  // What it has learned so far.
+  virtual TuningSummary Summary() const = 0;
+
+  // Re-tunes now from the traffic seen so far (no-op for fixed strategies).
+  // Returns once the new snapshot is published.
+  virtual void Retune() {}
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_POINT_LOCATOR_H_

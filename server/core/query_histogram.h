@@ -1,0 +1,84 @@
+// GridGeometry maps points to the cells of a size x size grid over a box;
+// QueryHistogram counts queries per cell without serialising readers.
+//
+// QueryHistogram owns kShards arrays of relaxed-atomic counters. Each thread
+// counts into one shard (picked once per thread), so two threads locating at
+// once never write the same cache line; Drain() sums and resets the shards.
+// Counts are approximate under concurrent Drain() only in the sense that a
+// count lands either in this drain or the next; none is lost.
+//
+// Thread-safety: Add() from any number of threads; Drain() from one thread at
+// a time (the tuner), concurrently with Add().
+
+#ifndef LOCATOR_CORE_QUERY_HISTOGRAM_H_
+#define LOCATOR_CORE_QUERY_HISTOGRAM_H_
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "server/core/geometry.h"
+
+namespace locator {
+
+class GridGeometry {
+ public:
+  GridGeometry() = default;
+  // A size x size grid over `box`; a degenerate box is widened to 1 unit.
+  GridGeometry(const BoundingBox& box, int size);
+
+  int size() const { return size_; }
+  size_t cells() const { return static_cast<size_t>(size_) * size_; }
+  const BoundingBox& box() const { return box_; }
+  // Row-major cell of p; points outside the box map to the nearest cell.
+  size_t CellOf(const Point2& p) const {
+    return static_cast<size_t>(Row(p.y)) * size_ + Column(p.x);
+  }
+  // Fractional grid coordinates of p, clamped into [0, size).
+  double GridX(double x) const { return Clamp((x - box_.min_x) * inv_w_); }
+  double GridY(double y) const { return Clamp((y - box_.min_y) * inv_h_); }
+  int Column(double x) const { return static_cast<int>(GridX(x)); }
+  int Row(double y) const { return static_cast<int>(GridY(y)); }
+  // The rectangle of cell (column, row).
+  BoundingBox CellBox(int column, int row) const;
+  double cell_width() const { return 1.0 / inv_w_; }
+  double cell_height() const { return 1.0 / inv_h_; }
+
+ private:
+  // Clamps in double before any integer conversion: far-away (or 1e308)
+  // coordinates must never overflow an int.
+  double Clamp(double g) const { return g < 0 ? 0 : (g < max_ ? g : max_); }
+
+  BoundingBox box_;
+  int size_ = 1;
+  double inv_w_ = 1;
+  double inv_h_ = 1;
+  double max_ = 0;  // the largest double below size_
+};
+
+class QueryHistogram {
+ public:
+  static constexpr int kShards = 4;
+
+  explicit QueryHistogram(const GridGeometry& grid);
+
+  const GridGeometry& grid() const { return grid_; }
+  // Counts one query at p (relaxed; never blocks).
+  void Add(const Point2& p);
+  // Adds every count since the last Drain() into `into` (size cells()) and
+  // resets them.
+  void Drain(std::vector<double>* into);
+  // Bytes of the counters.
+  size_t MemoryBytes() const;
+
+ private:
+  GridGeometry grid_;
+  std::unique_ptr<std::atomic<uint32_t>[]> counts_;  // kShards * cells
+  size_t stride_;  // cells rounded up to a cache line
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_QUERY_HISTOGRAM_H_

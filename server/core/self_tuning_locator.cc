@@ -1,0 +1,119 @@
+#include "server/core/self_tuning_locator.h"
+
+#include "server/core/walk.h"
+
+namespace locator {
+
+namespace {
+
+// Check for moved traffic this often, and only after a quarter of the
+// regular re-tune interval has given the cold-hit ratio some evidence.
+constexpr uint64_t kColdCheckEvery = 256;
+// A re-tune is due early when this share of queries lands in cold cells.
+// Mixed traffic (half clustered, half uniform) stays below it.
+constexpr double kColdShareTrigger = 0.75;
+// Start points reported by Summary().
+constexpr size_t kSummaryStartPoints = 2000;
+
+}  // namespace
+
+SelfTuningLocator::SelfTuningLocator(const Triangulation& t,
+                                     const TuningOptions& options)
+    : t_(t),
+      options_(options),
+      histogram_(GridGeometry(
+          t.bounding_box(),
+          HotRegionTuner::CoarseGridSize(HotRegionTuner::Budget(t, options),
+                                         options.grid_size))),
+      tuner_(t, histogram_.grid(), options, histogram_.MemoryBytes()) {
+  snapshot_.store(tuner_.Build(1));
+  if (options_.background) {
+    tuner_thread_ = std::thread([this] { TunerLoop(); });
+  }
+}
+
+SelfTuningLocator::~SelfTuningLocator() {
+  if (tuner_thread_.joinable()) {
+    stopping_.store(true);
+    requests_.fetch_add(1);
+    requests_.notify_one();
+    tuner_thread_.join();
+  }
+}
+
+void SelfTuningLocator::Locate(const Point2& q, LocateResult* result) const {
+  const std::shared_ptr<const TuningSnapshot> snap =
+      snapshot_.load(std::memory_order_acquire);
+  histogram_.Add(q);
+  result->cost = LocateCost();
+  uint32_t lookups = 0;
+  const auto start = snap->table->Start(q, &lookups);
+  WalkAndDescribe(t_, start, q, result);
+  result->cost.table_lookups = lookups;
+
+  const uint64_t n = since_tune_.fetch_add(1, std::memory_order_relaxed) + 1;
+  if (!snap->hot[histogram_.grid().CellOf(q)]) {
+    cold_hits_.fetch_add(1, std::memory_order_relaxed);
+  }
+  if (n == options_.retune_every) {
+    RequestRetune();
+  } else if (n % kColdCheckEvery == 0 && n >= options_.retune_every / 4 &&
+             cold_hits_.load(std::memory_order_relaxed) >
+                 kColdShareTrigger * static_cast<double>(n)) {
+    RequestRetune();
+  }
+}
+
+void SelfTuningLocator::RequestRetune() const {
+  if (options_.background) {
+    requests_.fetch_add(1, std::memory_order_release);
+    requests_.notify_one();
+    return;
+  }
+  // Inline: whoever finds the tuner busy just keeps using the old snapshot.
+  std::unique_lock<std::mutex> lock(tune_mu_, std::try_to_lock);
+  if (lock.owns_lock()) RetuneLocked();
+}
+
+void SelfTuningLocator::TunerLoop() {
+  uint64_t seen = 0;
+  for (;;) {
+    requests_.wait(seen, std::memory_order_acquire);
+    seen = requests_.load(std::memory_order_acquire);
+    if (stopping_.load()) return;
+    Retune();
+  }
+}
+
+void SelfTuningLocator::Retune() {
+  std::lock_guard<std::mutex> lock(tune_mu_);
+  RetuneLocked();
+}
+
+void SelfTuningLocator::RetuneLocked() const {
+  std::fill(fresh_.begin(), fresh_.end(), 0.0);
+  histogram_.Drain(&fresh_);
+  tuner_.AddCounts(fresh_);
+  const uint64_t version = snapshot_.load()->version + 1;
+  snapshot_.store(tuner_.Build(version), std::memory_order_release);
+  since_tune_.store(0, std::memory_order_relaxed);
+  cold_hits_.store(0, std::memory_order_relaxed);
+  retunes_.fetch_add(1, std::memory_order_relaxed);
+}
+
+TuningSummary SelfTuningLocator::Summary() const {
+  const std::shared_ptr<const TuningSnapshot> snap = snapshot_.load();
+  TuningSummary s;
+  s.snapshot_version = snap->version;
+  s.retune_count = retunes_.load(std::memory_order_relaxed);
+  s.grid_size = histogram_.grid().size();
+  s.grid_box = histogram_.grid().box();
+  s.histogram = snap->histogram;
+  s.hot_regions = snap->hot_regions;
+  s.start_points = snap->table->SampleStartPoints(kSummaryStartPoints);
+  s.start_point_count = snap->table->start_count();
+  s.memory_bytes = snap->memory_bytes + histogram_.MemoryBytes();
+  return s;
+}
+
+}  // namespace locator

@@ -1,0 +1,80 @@
+// Strategy "self-tuning" (the default): the paper's adaptive idea, made
+// continuous and O(1).
+//
+// Beyond the paper: (i) it keeps learning: queries are counted into a
+// histogram that decays at every re-tune, a re-tune runs every
+// `retune_every` queries, and sooner when most queries land outside the
+// cells it tuned for (the hot spot moved); (ii) the jump is O(1): a query
+// maps to its cell of a StartTable and starts there, instead of scanning
+// every sample; (iii) starts are spent where queries land and where points
+// are dense, under a memory budget (HotRegionTuner; its coarse grid is the
+// largest <= grid_size that the budget affords); (iv) every cell keeps
+// a start, so no traffic is answered worse than by a walk inside its cell.
+//
+// Thread-safety: Locate() from any number of threads. The read path loads
+// the current TuningSnapshot (an immutable std::shared_ptr, swapped
+// atomically, like LevelDB's Version) and counts into relaxed per-thread
+// histogram shards; it never waits for the tuner. Re-tunes are serialised
+// by a mutex only the tuner holds: inline in the query that triggers one
+// (options.background == false, deterministic) or on a background thread.
+
+#ifndef LOCATOR_CORE_SELF_TUNING_LOCATOR_H_
+#define LOCATOR_CORE_SELF_TUNING_LOCATOR_H_
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "server/core/hot_region_tuner.h"
+#include "server/core/point_locator.h"
+#include "server/core/query_histogram.h"
+#include "server/core/triangulation.h"
+#include "server/core/tuning_options.h"
+
+namespace locator {
+
+class SelfTuningLocator : public PointLocator {
+ public:
+  // `t` must outlive the locator. Publishes an initial snapshot tuned for
+  // uniform traffic before returning.
+  SelfTuningLocator(const Triangulation& t, const TuningOptions& options);
+  ~SelfTuningLocator() override;
+
+  void Locate(const Point2& q, LocateResult* result) const override;
+  std::string_view name() const override { return "self-tuning"; }
+  TuningSummary Summary() const override;
+  void Retune() override;
+
+ private:
+  // Asks for a re-tune: runs it inline or wakes the background thread.
+  void RequestRetune() const;
+  // Drains the histogram and publishes a new snapshot. Requires tune_mu_.
+  void RetuneLocked() const;
+  void TunerLoop();
+
+  const Triangulation& t_;
+  const TuningOptions options_;
+  mutable QueryHistogram histogram_;
+
+  // Serialises re-tunes. Locate() only ever try-locks it (inline mode), so a
+  // query never waits for the tuner.
+  mutable std::mutex tune_mu_;
+  mutable HotRegionTuner tuner_;       // guarded by tune_mu_
+  mutable std::vector<double> fresh_;  // guarded by tune_mu_
+  mutable std::atomic<uint64_t> retunes_{0};
+
+  mutable std::atomic<std::shared_ptr<const TuningSnapshot>> snapshot_;
+  mutable std::atomic<uint64_t> since_tune_{0};
+  mutable std::atomic<uint64_t> cold_hits_{0};
+
+  // Background mode: RequestRetune() bumps requests_, the thread re-tunes.
+  mutable std::atomic<uint64_t> requests_{0};
+  std::atomic<bool> stopping_{false};
+  std::thread tuner_thread_;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_SELF_TUNING_LOCATOR_H_

@@ -1,0 +1,86 @@
+// StartTable: the self-tuning strategy's O(1) jump. An immutable two-level
+// grid of walk starts: a coarse grid (the histogram's) whose cells are each
+// refined into their own r x r sub-grid, r chosen by the tuner from traffic
+// and point density. Every (sub-)cell stores the face containing its centre,
+// so a query walks only from the centre of its own small cell.
+//
+// A lookup costs one table read for an unrefined cell (r = 1, the start is
+// stored inline) and two for a refined one.
+//
+// Thread-safety: immutable after construction; Start() from any thread.
+// Invariant: every stored face is a finite face of the triangulation it was
+// built on, which must outlive the table.
+
+#ifndef LOCATOR_CORE_START_TABLE_H_
+#define LOCATOR_CORE_START_TABLE_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "server/core/geometry.h"
+#include "server/core/query_histogram.h"
+#include "server/core/triangulation.h"
+
+namespace locator {
+
+class StartTable {
+ public:
+  using Face_handle = Triangulation::Face_handle;
+
+  // Bytes per stored start and per coarse cell, for budgeting.
+  static constexpr size_t kBytesPerStart = sizeof(Face_handle);
+  static constexpr size_t kBytesPerCell = 16;
+
+  // resolution[c] >= 1 is the sub-grid size of coarse cell c. Cells whose
+  // resolution equals that in `previous` (if given, same grid) copy its
+  // starts instead of walking for them: a re-tune pays only for what moved.
+  StartTable(const Triangulation& t, const GridGeometry& grid,
+             const std::vector<uint32_t>& resolution,
+             const StartTable* previous = nullptr);
+
+  uint32_t resolution(size_t cell) const { return cells_[cell].resolution; }
+
+  // The start face for q; adds the table reads made to *lookups.
+  Face_handle Start(const Point2& q, uint32_t* lookups) const {
+    const double gx = grid_.GridX(q.x);
+    const double gy = grid_.GridY(q.y);
+    const int cx = static_cast<int>(gx);
+    const int cy = static_cast<int>(gy);
+    const Cell& cell = cells_[static_cast<size_t>(cy) * grid_.size() + cx];
+    if (cell.resolution == 1) {
+      *lookups += 1;
+      return cell.face;
+    }
+    *lookups += 2;
+    const uint32_t r = cell.resolution;
+    uint32_t sx = static_cast<uint32_t>((gx - cx) * r);
+    uint32_t sy = static_cast<uint32_t>((gy - cy) * r);
+    if (sx >= r) sx = r - 1;
+    if (sy >= r) sy = r - 1;
+    return leaves_[cell.offset + sy * r + sx];
+  }
+
+  const GridGeometry& grid() const { return grid_; }
+  // Number of stored starts.
+  size_t start_count() const;
+  size_t MemoryBytes() const;
+  // Centres of about `max_points` stored starts, spread over the table.
+  std::vector<Point2> SampleStartPoints(size_t max_points) const;
+
+ private:
+  struct Cell {
+    Face_handle face;     // the start when resolution == 1
+    uint32_t offset = 0;  // first leaf when resolution > 1
+    uint32_t resolution = 1;
+  };
+  static_assert(sizeof(Cell) == kBytesPerCell);
+
+  GridGeometry grid_;
+  std::vector<Cell> cells_;
+  std::vector<Face_handle> leaves_;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_START_TABLE_H_

@@ -1,0 +1,252 @@
+#include "server/core/triangulation.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <utility>
+
+namespace locator {
+
+namespace {
+
+// Index of corner `i + 1` / `i + 2`, as CGAL's ccw()/cw().
+int Ccw(int i) { return i == 2 ? 0 : i + 1; }
+int Cw(int i) { return i == 0 ? 2 : i - 1; }
+
+bool Contains(const std::array<int64_t, 3>& ids, int64_t id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+// Barycentric coordinates of q in (a, b, c), computed in double; the
+// location type then pins the exact zeros and ones.
+std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
+                                  const Point2& c, const Point2& q) {
+  auto cross = [](const Point2& o, const Point2& u, const Point2& v) {
+    return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
+  };
+  const double area = cross(a, b, c);
+  const double ba = cross(q, b, c) / area;
+  const double bb = cross(q, c, a) / area;
+  return {ba, bb, 1.0 - ba - bb};
+}
+
+}  // namespace
+
+Status Triangulation::Build(const Dataset& dataset,
+                            std::unique_ptr<Triangulation>* out) {
+  const std::vector<Point2>& pts = dataset.points;
+  const size_t n = pts.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (!IsFinite(pts[i])) {
+      return Status::InvalidArgument("point " + std::to_string(i) +
+                                     " has a non-finite coordinate");
+    }
+  }
+  if (!dataset.values.empty() && dataset.values.size() != n) {
+    return Status::InvalidArgument("dataset values and points differ in size");
+  }
+
+  // Merge repeated points before CGAL sees them: CGAL's range insert would
+  // keep the info of whichever copy its spatial sort visits last, and we
+  // promise the first occurrence's id.
+  std::vector<uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&pts](uint32_t a, uint32_t b) {
+    if (pts[a].x != pts[b].x) return pts[a].x < pts[b].x;
+    if (pts[a].y != pts[b].y) return pts[a].y < pts[b].y;
+    return a < b;
+  });
+  std::vector<uint32_t> first(n);
+  std::vector<std::pair<CgalPoint, VertexInfo>> distinct;
+  for (size_t k = 0; k < n; ++k) {
+    const uint32_t i = order[k];
+    if (k > 0 && pts[order[k - 1]].x == pts[i].x &&
+        pts[order[k - 1]].y == pts[i].y) {
+      first[i] = first[order[k - 1]];
+      continue;
+    }
+    first[i] = i;
+    const double value = dataset.values.empty() ? 0.0 : dataset.values[i];
+    distinct.emplace_back(ToCgal(pts[i]), VertexInfo{int64_t{i}, value});
+  }
+  std::vector<uint32_t>().swap(order);
+
+  if (distinct.size() < 3) {
+    return Status::InvalidArgument(
+        "dataset has " + std::to_string(distinct.size()) +
+        " distinct point(s); a triangulation needs at least 3 that are not "
+        "all collinear");
+  }
+  const CgalPoint& a = distinct[0].first;
+  const CgalPoint& b = distinct[1].first;
+  const bool all_collinear =
+      std::all_of(distinct.begin() + 2, distinct.end(), [&](const auto& p) {
+        return CGAL::orientation(a, b, p.first) == CGAL::COLLINEAR;
+      });
+  if (all_collinear) {
+    return Status::InvalidArgument(
+        "all " + std::to_string(distinct.size()) +
+        " distinct points are collinear; no triangle can be formed");
+  }
+
+  std::unique_ptr<Triangulation> t(new Triangulation());
+  t->has_values_ = !dataset.values.empty();
+  for (const Point2& p : pts) t->box_.Extend(p);
+  t->dt_.insert(distinct.begin(), distinct.end());
+  std::vector<std::pair<CgalPoint, VertexInfo>>().swap(distinct);
+
+  t->by_input_.assign(n, Vertex_handle());
+  for (auto v = t->dt_.finite_vertices_begin();
+       v != t->dt_.finite_vertices_end(); ++v) {
+    t->by_input_[v->info().id] = v;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (first[i] != i) t->by_input_[i] = t->by_input_[first[i]];
+  }
+  for (auto f = t->dt_.all_faces_begin(); f != t->dt_.all_faces_end(); ++f) {
+    f->info() = -1;
+  }
+  int64_t next_id = 0;
+  for (auto f = t->dt_.finite_faces_begin(); f != t->dt_.finite_faces_end();
+       ++f) {
+    f->info() = next_id++;
+  }
+  *out = std::move(t);
+  return Status::OK();
+}
+
+size_t Triangulation::MemoryBytes() const {
+  return dt_.tds().vertices().capacity() * sizeof(Tds::Vertex) +
+         dt_.tds().faces().capacity() * sizeof(Tds::Face) +
+         by_input_.capacity() * sizeof(Vertex_handle);
+}
+
+bool Triangulation::VertexPoint(int64_t id, Point2* p) const {
+  if (id < 0 || static_cast<size_t>(id) >= by_input_.size()) return false;
+  const Vertex_handle v = by_input_[id];
+  if (v->info().id != id) return false;  // merged into an earlier point
+  *p = FromCgal(v->point());
+  return true;
+}
+
+Triangulation::Face_handle Triangulation::FiniteFaceAt(Vertex_handle v) const {
+  auto fc = dt_.incident_faces(v);
+  while (dt_.is_infinite(fc)) ++fc;
+  return fc;
+}
+
+Triangulation::Face_handle Triangulation::DefaultStart() const {
+  const Face_handle inf = dt_.infinite_face();
+  return inf->neighbor(inf->index(dt_.infinite_vertex()));
+}
+
+void Triangulation::Describe(Face_handle f, LocationType type, int feature,
+                             const Point2& q, LocateResult* out) const {
+  out->type = type;
+  out->triangle_id = f->info();
+  for (int i = 0; i < 3; ++i) {
+    out->vertex_ids[i] = f->vertex(i)->info().id;
+    out->vertices[i] = FromCgal(f->vertex(i)->point());
+  }
+  out->feature_index =
+      static_cast<int8_t>(type == LocationType::kFace ? -1 : feature);
+  out->hull_edge_ids = {-1, -1};
+  out->has_value = false;
+  out->value = 0;
+  switch (type) {
+    case LocationType::kOutsideConvexHull:
+      out->barycentric = {0, 0, 0};
+      out->hull_edge_ids = {out->vertex_ids[Ccw(feature)],
+                            out->vertex_ids[Cw(feature)]};
+      return;
+    case LocationType::kVertex:
+      out->barycentric = {0, 0, 0};
+      out->barycentric[feature] = 1;
+      break;
+    case LocationType::kEdge: {
+      auto b =
+          Barycentric(out->vertices[0], out->vertices[1], out->vertices[2], q);
+      b[feature] = 0;
+      const double sum = b[Ccw(feature)] + b[Cw(feature)];
+      b[Ccw(feature)] /= sum;
+      b[Cw(feature)] /= sum;
+      out->barycentric = b;
+      break;
+    }
+    case LocationType::kFace:
+      out->barycentric =
+          Barycentric(out->vertices[0], out->vertices[1], out->vertices[2], q);
+      break;
+  }
+  if (has_values_) {
+    out->has_value = true;
+    out->value = 0;
+    for (int i = 0; i < 3; ++i) {
+      out->value += out->barycentric[i] * f->vertex(i)->info().value;
+    }
+  }
+}
+
+LocateResult Triangulation::ReferenceLocate(const Point2& q) const {
+  Delaunay::Locate_type lt;
+  int li = -1;
+  Face_handle f = dt_.locate(ToCgal(q), lt, li);
+  LocateResult r;
+  switch (lt) {
+    case Delaunay::FACE:
+      Describe(f, LocationType::kFace, -1, q, &r);
+      break;
+    case Delaunay::EDGE:
+      if (dt_.is_infinite(f)) {
+        const int mirror = dt_.mirror_index(f, li);
+        f = f->neighbor(li);
+        li = mirror;
+      }
+      Describe(f, LocationType::kEdge, li, q, &r);
+      break;
+    case Delaunay::VERTEX: {
+      const Vertex_handle v = f->vertex(li);
+      f = FiniteFaceAt(v);
+      Describe(f, LocationType::kVertex, f->index(v), q, &r);
+      break;
+    }
+    default: {  // OUTSIDE_CONVEX_HULL; dimension 2 excludes the affine case.
+      const int k = f->index(dt_.infinite_vertex());
+      const int mirror = dt_.mirror_index(f, k);
+      Describe(f->neighbor(k), LocationType::kOutsideConvexHull, mirror, q, &r);
+      break;
+    }
+  }
+  return r;
+}
+
+bool Triangulation::Agrees(const Point2& q, const LocateResult& got,
+                           const LocateResult& reference) const {
+  if (got.type != reference.type) return false;
+  const int fi = reference.feature_index;
+  switch (reference.type) {
+    case LocationType::kFace:
+      return std::is_permutation(got.vertex_ids.begin(), got.vertex_ids.end(),
+                                 reference.vertex_ids.begin());
+    case LocationType::kEdge:
+      return Contains(got.vertex_ids, reference.vertex_ids[Ccw(fi)]) &&
+             Contains(got.vertex_ids, reference.vertex_ids[Cw(fi)]);
+    case LocationType::kVertex:
+      return Contains(got.vertex_ids, reference.vertex_ids[fi]);
+    case LocationType::kOutsideConvexHull:
+      break;
+  }
+  const int64_t a = got.hull_edge_ids[0];
+  const int64_t b = got.hull_edge_ids[1];
+  Point2 pa, pb;
+  if (!VertexPoint(a, &pa) || !VertexPoint(b, &pb)) return false;
+  Face_handle f;
+  int i = -1;
+  if (!dt_.is_edge(by_input_[a], by_input_[b], f, i)) return false;
+  const bool on_hull = dt_.is_infinite(f) || dt_.is_infinite(f->neighbor(i));
+  return on_hull && CGAL::orientation(ToCgal(pa), ToCgal(pb), ToCgal(q)) ==
+                        CGAL::RIGHT_TURN;
+}
+
+}  // namespace locator
