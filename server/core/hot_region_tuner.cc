@@ -4,8 +4,6 @@
 #include <cmath>
 #include <numeric>
 
-#include "server/core/hot_regions.h"
-
 namespace locator {
 
 namespace {
@@ -21,7 +19,8 @@ HotRegionTuner::HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
       grid_(grid),
       options_(options),
       counts_(grid.cells(), 0.0),
-      points_(grid.cells(), 0.0) {
+      points_(grid.cells(), 0.0),
+      planned_share_(grid.cells(), 1.0 / grid.cells()) {
   budget_ = Budget(t, options);
   // The owner's histogram, our per-cell arrays, the snapshot's histogram
   // copy and hot flags, and the coarse table are paid first; what is left
@@ -102,44 +101,76 @@ std::vector<uint32_t> HotRegionTuner::PlanResolution(
   return resolution;
 }
 
+std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
+  std::vector<char> significant(counts_.size(), 1);
+  if (!table_) return significant;
+  for (size_t c = 0; c < counts_.size(); ++c) {
+    const double expected = planned_share_[c] * total;
+    significant[c] = std::abs(counts_[c] - expected) >
+                     kSignificance * std::sqrt(expected + 1);
+  }
+  return significant;
+}
+
 std::vector<uint32_t> HotRegionTuner::KeepStableCells(
-    std::vector<uint32_t> fresh) const {
+    std::vector<uint32_t> fresh, const std::vector<char>& significant) const {
   if (!table_) return fresh;
   std::vector<uint32_t> mixed(fresh.size());
   double leaves = 0;
   for (size_t c = 0; c < fresh.size(); ++c) {
     const double old_r = table_->resolution(c);
-    const bool stable =
-        fresh[c] <= kHysteresis * old_r && fresh[c] * kHysteresis >= old_r;
+    const bool stable = !significant[c] || (fresh[c] <= kHysteresis * old_r &&
+                                            fresh[c] * kHysteresis >= old_r);
     mixed[c] = stable ? table_->resolution(c) : fresh[c];
     leaves += mixed[c] > 1 ? static_cast<double>(mixed[c]) * mixed[c] : 0;
   }
   return leaves <= static_cast<double>(leaf_budget_) ? mixed : fresh;
 }
 
+template <class Resolution>
+double HotRegionTuner::ExpectedWalk(const std::vector<double>& weight,
+                                    Resolution resolution) const {
+  double walk = 0;
+  for (size_t c = 0; c < weight.size(); ++c) {
+    const double r = resolution(c);
+    walk += weight[c] * std::sqrt(points_[c] / (r * r));
+  }
+  return walk;
+}
+
 std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
   const size_t cells = grid_.cells();
   const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
   const double prior = total > 0 ? kPriorShare : 1.0;
-  std::vector<double> weight(cells);
+  std::vector<double> weight(cells), share(cells, 1.0 / cells);
   auto snapshot = std::make_shared<TuningSnapshot>();
   snapshot->version = version;
   snapshot->hot.assign(cells, 1);
   for (size_t c = 0; c < cells; ++c) {
-    const double share = total > 0 ? counts_[c] / total : 0.0;
-    weight[c] = prior / cells + (1 - prior) * share;
-    if (total > 0) snapshot->hot[c] = share * cells >= 0.5;
+    if (total > 0) share[c] = counts_[c] / total;
+    weight[c] = prior / cells + (1 - prior) * (total > 0 ? share[c] : 0.0);
+    if (total > 0) snapshot->hot[c] = share[c] * cells >= 0.5;
   }
-  const std::vector<uint32_t> plan = KeepStableCells(PlanResolution(weight));
-  bool unchanged = table_ != nullptr;
-  for (size_t c = 0; unchanged && c < cells; ++c) {
-    unchanged = table_->resolution(c) == plan[c];
+  // Traffic that moved within noise keeps the table without planning.
+  const std::vector<char> significant = SignificantChanges(total);
+  bool keep =
+      table_ != nullptr && std::none_of(significant.begin(), significant.end(),
+                                        [](char s) { return s; });
+  const std::vector<uint32_t> plan =
+      keep ? std::vector<uint32_t>()
+           : KeepStableCells(PlanResolution(weight), significant);
+  if (!keep && table_) {
+    const double now =
+        ExpectedWalk(weight, [&](size_t c) { return table_->resolution(c); });
+    const double planned =
+        ExpectedWalk(weight, [&](size_t c) { return plan[c]; });
+    keep = planned > (1 - kMinGain) * now;
   }
-  if (!unchanged) {
+  if (!keep) {
     table_ = std::make_shared<StartTable>(t_, grid_, plan, table_.get());
+    planned_share_ = share;
   }
   snapshot->table = table_;
-  snapshot->hot_regions = FindHotRegions(grid_, counts_);
   snapshot->histogram = counts_;
   snapshot->memory_bytes = snapshot->table->MemoryBytes() +
                            snapshot->hot.capacity() +

@@ -13,12 +13,15 @@
 // traffic the plan is a coarse uniform grid and no traffic is ever answered
 // worse than by a start in its own cell.
 //
-// Re-tunes are incremental: a cell keeps its resolution unless the new plan
-// differs by more than kHysteresis (noise in the histogram must not cost a
-// rebuild), an unchanged plan reuses the current table outright, and a
-// changed one copies every unchanged cell. The plan fills kPlanFill of the
-// budget so that kept cells have headroom; a mix that would still exceed
-// the budget falls back to the fresh plan.
+// Re-tunes are incremental: a cell keeps its resolution unless its count
+// departs from the share the current table was planned for by more than
+// kSignificance standard deviations (Poisson) and the new plan differs by
+// more than kHysteresis (noise in the histogram must not cost a rebuild);
+// the table is rebuilt only if the cost model predicts at least
+// kMinGain fewer faces per query than the current table, otherwise it is
+// reused outright; and a rebuild copies every unchanged cell. The plan fills
+// kPlanFill of the budget so that kept cells have headroom; a mix that would
+// still exceed the budget falls back to the fresh plan.
 //
 // Thread-safety: not thread-safe; the owner serialises calls.
 
@@ -45,7 +48,6 @@ struct TuningSnapshot {
   // this snapshot was tuned for. Queries elsewhere count as "cold hits"; a
   // burst of them means the traffic moved.
   std::vector<char> hot;
-  std::vector<BoundingBox> hot_regions;
   std::vector<double> histogram;  // decayed counts it was tuned from
   size_t memory_bytes = 0;
 };
@@ -56,6 +58,8 @@ class HotRegionTuner {
   static constexpr double kPriorShare = 0.1;
   static constexpr double kHysteresis = 1.5;
   static constexpr double kPlanFill = 0.9;
+  static constexpr double kMinGain = 0.05;
+  static constexpr double kSignificance = 3.0;
   // Bookkeeping per coarse cell: histogram shards, our counts and point
   // counts, the snapshot's histogram copy and hot flag, the table's cell.
   static constexpr size_t kBytesPerCoarseCell =
@@ -82,8 +86,18 @@ class HotRegionTuner {
 
  private:
   std::vector<uint32_t> PlanResolution(const std::vector<double>& weight) const;
-  // The fresh plan, except where the current table is within hysteresis.
-  std::vector<uint32_t> KeepStableCells(std::vector<uint32_t> fresh) const;
+  // significant[c]: cell c's count departs from the share the current
+  // table was planned for by more than Poisson noise (all, without a table).
+  std::vector<char> SignificantChanges(double total) const;
+  // The fresh plan, except for cells without a significant change or whose
+  // new resolution is within hysteresis of the current one.
+  std::vector<uint32_t> KeepStableCells(
+      std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
+  // The model's expected walk length (up to a constant) under `weight` for
+  // per-cell resolutions given by resolution(c).
+  template <class Resolution>
+  double ExpectedWalk(const std::vector<double>& weight,
+                      Resolution resolution) const;
 
   const Triangulation& t_;
   const GridGeometry grid_;
@@ -94,6 +108,7 @@ class HotRegionTuner {
   std::vector<double> counts_;
   std::vector<double> points_;               // vertices per coarse cell
   std::shared_ptr<const StartTable> table_;  // the last one built
+  std::vector<double> planned_share_;  // traffic shares table_ was planned for
 };
 
 }  // namespace locator

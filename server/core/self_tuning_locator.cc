@@ -1,5 +1,6 @@
 #include "server/core/self_tuning_locator.h"
 
+#include "server/core/hot_regions.h"
 #include "server/core/walk.h"
 
 namespace locator {
@@ -109,7 +110,7 @@ TuningSummary SelfTuningLocator::Summary() const {
   s.grid_size = histogram_.grid().size();
   s.grid_box = histogram_.grid().box();
   s.histogram = snap->histogram;
-  s.hot_regions = snap->hot_regions;
+  s.hot_regions = FindHotRegions(histogram_.grid(), snap->histogram);
   s.start_points = snap->table->SampleStartPoints(kSummaryStartPoints);
   s.start_point_count = snap->table->start_count();
   s.memory_bytes = snap->memory_bytes + histogram_.MemoryBytes();

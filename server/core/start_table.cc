@@ -20,15 +20,10 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
                        const std::vector<uint32_t>& resolution,
                        const StartTable* previous)
     : grid_(grid), cells_(grid.cells()) {
-  size_t leaves = 0;
-  for (uint32_t r : resolution) leaves += r > 1 ? size_t{r} * r : 0;
-  leaves_.resize(leaves);
-
   // Visit cells and sub-cells in serpentine order so that each centre is
   // located by a short walk from the previous one.
   Face_handle hint = t.DefaultStart();
   const int g = grid_.size();
-  uint32_t offset = 0;
   for (int row = 0; row < g; ++row) {
     for (int k = 0; k < g; ++k) {
       const int col = (row % 2 == 0) ? k : g - 1 - k;
@@ -37,30 +32,25 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
       const BoundingBox box = grid_.CellBox(col, row);
       const uint32_t r = std::max<uint32_t>(1, resolution[index]);
       cell.resolution = r;
+      if (r > 1) leaf_count_ += size_t{r} * r;
       if (previous && previous->cells_[index].resolution == r) {
-        const Cell& old = previous->cells_[index];
-        cell.face = old.face;
-        if (r > 1) {
-          cell.offset = offset;
-          std::copy_n(previous->leaves_.begin() + old.offset, r * r,
-                      leaves_.begin() + offset);
-          offset += r * r;
-        }
+        cell = previous->cells_[index];
+        hint = r == 1 ? cell.face : cell.leaves[0];
         continue;
       }
       if (r == 1) {
         hint = cell.face = FaceNear(t, hint, SubCellCentre(box, 1, 0, 0));
         continue;
       }
-      cell.offset = offset;
+      auto leaves = std::make_shared_for_overwrite<Face_handle[]>(r * r);
       for (uint32_t sy = 0; sy < r; ++sy) {
         for (uint32_t j = 0; j < r; ++j) {
           const uint32_t sx = (sy % 2 == 0) ? j : r - 1 - j;
           hint = FaceNear(t, hint, SubCellCentre(box, r, sx, sy));
-          leaves_[offset + sy * r + sx] = hint;
+          leaves[sy * r + sx] = hint;
         }
       }
-      offset += r * r;
+      cell.leaves = std::move(leaves);
     }
   }
 }
@@ -68,12 +58,11 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
 size_t StartTable::start_count() const {
   size_t direct = 0;
   for (const Cell& c : cells_) direct += c.resolution == 1;
-  return direct + leaves_.size();
+  return direct + leaf_count_;
 }
 
 size_t StartTable::MemoryBytes() const {
-  return cells_.capacity() * sizeof(Cell) +
-         leaves_.capacity() * sizeof(Face_handle);
+  return cells_.size() * kBytesPerCell + leaf_count_ * kBytesPerStart;
 }
 
 std::vector<Point2> StartTable::SampleStartPoints(size_t max_points) const {

@@ -5,7 +5,9 @@
 // so a query walks only from the centre of its own small cell.
 //
 // A lookup costs one table read for an unrefined cell (r = 1, the start is
-// stored inline) and two for a refined one.
+// stored inline) and two for a refined one. A refined cell's starts live in
+// their own immutable chunk, shared with the previous table when the cell's
+// resolution did not change: a re-tune copies pointers, not starts.
 //
 // Thread-safety: immutable after construction; Start() from any thread.
 // Invariant: every stored face is a finite face of the triangulation it was
@@ -16,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "server/core/geometry.h"
@@ -28,9 +31,10 @@ class StartTable {
  public:
   using Face_handle = Triangulation::Face_handle;
 
-  // Bytes per stored start and per coarse cell, for budgeting.
+  // Bytes per stored start and per coarse cell (the cell, and the chunk's
+  // control block and allocation header when refined), for budgeting.
   static constexpr size_t kBytesPerStart = sizeof(Face_handle);
-  static constexpr size_t kBytesPerCell = 16;
+  static constexpr size_t kBytesPerCell = 64;
 
   // resolution[c] >= 1 is the sub-grid size of coarse cell c. Cells whose
   // resolution equals that in `previous` (if given, same grid) copy its
@@ -58,7 +62,7 @@ class StartTable {
     uint32_t sy = static_cast<uint32_t>((gy - cy) * r);
     if (sx >= r) sx = r - 1;
     if (sy >= r) sy = r - 1;
-    return leaves_[cell.offset + sy * r + sx];
+    return cell.leaves[sy * r + sx];
   }
 
   const GridGeometry& grid() const { return grid_; }
@@ -70,15 +74,14 @@ class StartTable {
 
  private:
   struct Cell {
-    Face_handle face;     // the start when resolution == 1
-    uint32_t offset = 0;  // first leaf when resolution > 1
+    Face_handle face;  // the start when resolution == 1
+    std::shared_ptr<const Face_handle[]> leaves;  // r x r when r > 1
     uint32_t resolution = 1;
   };
-  static_assert(sizeof(Cell) == kBytesPerCell);
 
   GridGeometry grid_;
   std::vector<Cell> cells_;
-  std::vector<Face_handle> leaves_;
+  size_t leaf_count_ = 0;
 };
 
 }  // namespace locator
