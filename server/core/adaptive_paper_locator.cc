@@ -39,8 +39,7 @@ AdaptivePaperLocator::AdaptivePaperLocator(const Triangulation& t,
       histogram_(GridGeometry(t.bounding_box(), options.grid_size)) {}
 
 void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
-  const std::shared_ptr<const Samples> s =
-      samples_.load(std::memory_order_acquire);
+  const Samples* s = samples_.Get();
   if (!s) {
     histogram_.Add(q);
     fallback_.Locate(q, result);
@@ -77,7 +76,7 @@ void AdaptivePaperLocator::Tune() const {
   std::lock_guard<std::mutex> lock(tune_mu_);
   histogram_.Drain(&counts_);
   auto s = std::make_shared<Samples>();
-  const std::shared_ptr<const Samples> old = samples_.load();
+  const std::shared_ptr<const Samples> old = samples_.Current();
   s->version = old ? old->version + 1 : 1;
   s->histogram = counts_;
   s->regions = FindHotRegions(histogram_.grid(), counts_);
@@ -87,7 +86,7 @@ void AdaptivePaperLocator::Tune() const {
   }
   // A region whose sampling found nothing cannot serve queries.
   if (s->points.empty()) s->regions.clear();
-  samples_.store(std::move(s), std::memory_order_release);
+  samples_.Publish(std::move(s));
 }
 
 void AdaptivePaperLocator::SampleRegion(const BoundingBox& fat,
@@ -142,7 +141,7 @@ TuningSummary AdaptivePaperLocator::Summary() const {
   TuningSummary sum;
   sum.grid_size = histogram_.grid().size();
   sum.grid_box = histogram_.grid().box();
-  const std::shared_ptr<const Samples> s = samples_.load();
+  const std::shared_ptr<const Samples> s = samples_.Current();
   if (!s) return sum;
   sum.snapshot_version = s->version;
   sum.retune_count = s->version;

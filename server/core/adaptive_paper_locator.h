@@ -10,7 +10,7 @@
 // once; so does this strategy (Retune() re-samples from the histogram).
 //
 // Thread-safety: Locate() from any thread. The samples are an immutable
-// snapshot published through an atomic shared_ptr; the warm-up histogram
+// snapshot published through a SnapshotSlot; the warm-up histogram
 // uses relaxed per-thread counters.
 
 #ifndef LOCATOR_CORE_ADAPTIVE_PAPER_LOCATOR_H_
@@ -24,6 +24,7 @@
 #include "server/core/jump_and_walk_locator.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
+#include "server/core/snapshot_slot.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 
@@ -59,8 +60,8 @@ class AdaptivePaperLocator : public PointLocator {
   mutable QueryHistogram histogram_;
   mutable std::atomic<uint64_t> warmup_seen_{0};
   mutable std::mutex tune_mu_;  // serialises Tune(); never held by Locate()
-  mutable std::vector<double> counts_;  // guarded by tune_mu_
-  mutable std::atomic<std::shared_ptr<const Samples>> samples_;
+  mutable std::vector<double> counts_;     // guarded by tune_mu_
+  mutable SnapshotSlot<Samples> samples_;  // published by Tune()
 };
 
 }  // namespace locator

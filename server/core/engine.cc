@@ -53,17 +53,18 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   return Status::OK();
 }
 
-void Engine::Record(uint64_t cost) const {
-  queries_.fetch_add(1, std::memory_order_relaxed);
+void Engine::Record(uint64_t queries, uint64_t cost) const {
+  queries_.fetch_add(queries, std::memory_order_relaxed);
   cost_sum_.fetch_add(cost, std::memory_order_relaxed);
   window_cost_.fetch_add(cost, std::memory_order_relaxed);
-  // The query that completes a window publishes its mean; costs that race
+  // The call that completes a window publishes its mean; costs that race
   // with the reset land in the next window, which is fine for a statistic.
-  if (window_count_.fetch_add(1, std::memory_order_relaxed) + 1 ==
-      kStatsWindow) {
+  const uint64_t before =
+      window_count_.fetch_add(queries, std::memory_order_relaxed);
+  if (before < kStatsWindow && before + queries >= kStatsWindow) {
     const uint64_t sum = window_cost_.exchange(0, std::memory_order_relaxed);
-    window_count_.store(0, std::memory_order_relaxed);
-    last_window_mean_.store(static_cast<double>(sum) / kStatsWindow,
+    const uint64_t count = window_count_.exchange(0, std::memory_order_relaxed);
+    last_window_mean_.store(static_cast<double>(sum) / count,
                             std::memory_order_relaxed);
   }
 }
@@ -72,7 +73,7 @@ Status Engine::Locate(const Point2& q, LocateResult* result) const {
   Status s = CheckFinite(q, "query point");
   if (!s.ok()) return s;
   locator_->Locate(q, result);
-  Record(result->cost.total());
+  Record(1, result->cost.total());
   return Status::OK();
 }
 
@@ -80,17 +81,19 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
                            std::vector<LocateResult>* results,
                            const std::function<bool()>& keep_going) const {
   for (size_t i = 0; i < queries.size(); ++i) {
-    Status s = CheckFinite(queries[i], "point " + std::to_string(i));
-    if (!s.ok()) return s;
+    if (!IsFinite(queries[i])) {
+      return CheckFinite(queries[i], "point " + std::to_string(i));
+    }
   }
   results->resize(queries.size());
   for (size_t begin = 0; begin < queries.size(); begin += kBatchChunk) {
     if (keep_going && !keep_going()) return Status::Unavailable("cancelled");
     const size_t end = std::min(queries.size(), begin + kBatchChunk);
-    for (size_t i = begin; i < end; ++i) {
-      locator_->Locate(queries[i], &(*results)[i]);
-      Record((*results)[i].cost.total());
-    }
+    locator_->LocateMany(queries.subspan(begin, end - begin),
+                         results->data() + begin);
+    uint64_t cost = 0;
+    for (size_t i = begin; i < end; ++i) cost += (*results)[i].cost.total();
+    Record(end - begin, cost);
   }
   return Status::OK();
 }

@@ -90,7 +90,8 @@ class Engine {
 
  private:
   Engine();
-  void Record(uint64_t cost) const;
+  // Counts `queries` answered at total `cost` in the serving statistics.
+  void Record(uint64_t queries, uint64_t cost) const;
 
   DatasetInfo info_;
   std::unique_ptr<Triangulation> triangulation_;

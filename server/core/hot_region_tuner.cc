@@ -9,7 +9,7 @@ namespace locator {
 namespace {
 
 // Beyond about this many starts per vertex a cell's walk is already one face.
-constexpr double kStartsPerPointCap = 4.0;
+constexpr double kStartsPerPointCap = 1.5;
 
 }  // namespace
 
@@ -115,16 +115,27 @@ std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
 std::vector<uint32_t> HotRegionTuner::KeepStableCells(
     std::vector<uint32_t> fresh, const std::vector<char>& significant) const {
   if (!table_) return fresh;
+  const auto leaves = [](const std::vector<uint32_t>& plan) {
+    double sum = 0;
+    for (uint32_t r : plan) sum += r > 1 ? static_cast<double>(r) * r : 0;
+    return sum;
+  };
+  // Keep cells whose traffic did not change, or whose new resolution is
+  // within hysteresis; and, while the budget allows, cells that would only
+  // shrink: their starts are already paid for, and traffic may come back.
   std::vector<uint32_t> mixed(fresh.size());
-  double leaves = 0;
-  for (size_t c = 0; c < fresh.size(); ++c) {
-    const double old_r = table_->resolution(c);
-    const bool stable = !significant[c] || (fresh[c] <= kHysteresis * old_r &&
-                                            fresh[c] * kHysteresis >= old_r);
-    mixed[c] = stable ? table_->resolution(c) : fresh[c];
-    leaves += mixed[c] > 1 ? static_cast<double>(mixed[c]) * mixed[c] : 0;
+  for (bool keep_shrinking : {true, false}) {
+    for (size_t c = 0; c < fresh.size(); ++c) {
+      const uint32_t old_r = table_->resolution(c);
+      const bool stable = !significant[c] ||
+                          (fresh[c] <= kHysteresis * old_r &&
+                           fresh[c] * kHysteresis >= old_r) ||
+                          (keep_shrinking && fresh[c] < old_r);
+      mixed[c] = stable ? old_r : fresh[c];
+    }
+    if (leaves(mixed) <= static_cast<double>(leaf_budget_)) return mixed;
   }
-  return leaves <= static_cast<double>(leaf_budget_) ? mixed : fresh;
+  return fresh;
 }
 
 template <class Resolution>

@@ -19,7 +19,8 @@
 // more than kHysteresis (noise in the histogram must not cost a rebuild);
 // the table is rebuilt only if the cost model predicts at least
 // kMinGain fewer faces per query than the current table, otherwise it is
-// reused outright; and a rebuild copies every unchanged cell. The plan fills
+// reused outright; cells shrink only when the budget needs their starts; and
+// a rebuild shares every unchanged cell. The plan fills
 // kPlanFill of the budget so that kept cells have headroom; a mix that would
 // still exceed the budget falls back to the fresh plan.
 //
@@ -89,8 +90,9 @@ class HotRegionTuner {
   // significant[c]: cell c's count departs from the share the current
   // table was planned for by more than Poisson noise (all, without a table).
   std::vector<char> SignificantChanges(double total) const;
-  // The fresh plan, except for cells without a significant change or whose
-  // new resolution is within hysteresis of the current one.
+  // The fresh plan, except for cells without a significant change, whose
+  // new resolution is within hysteresis of the current one, or (while the
+  // budget allows) that would only shrink.
   std::vector<uint32_t> KeepStableCells(
       std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
   // The model's expected walk length (up to a constant) under `weight` for

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,13 @@ class PointLocator {
 
   // Locates the finite point q. Precondition: IsFinite(q) (callers validate).
   virtual void Locate(const Point2& q, LocateResult* result) const = 0;
+
+  // Locates queries[i] into results[i] for every i; same preconditions.
+  // Strategies override it to amortise per-call work over the batch.
+  virtual void LocateMany(std::span<const Point2> queries,
+                          LocateResult* results) const {
+    for (size_t i = 0; i < queries.size(); ++i) Locate(queries[i], &results[i]);
+  }
 
   // The strategy's name as accepted by MakePointLocator().
   virtual std::string_view name() const = 0;

@@ -27,7 +27,7 @@ SelfTuningLocator::SelfTuningLocator(const Triangulation& t,
           HotRegionTuner::CoarseGridSize(HotRegionTuner::Budget(t, options),
                                          options.grid_size))),
       tuner_(t, histogram_.grid(), options, histogram_.MemoryBytes()) {
-  snapshot_.store(tuner_.Build(1));
+  snapshot_.Publish(tuner_.Build(1));
   if (options_.background) {
     tuner_thread_ = std::thread([this] { TunerLoop(); });
   }
@@ -42,27 +42,45 @@ SelfTuningLocator::~SelfTuningLocator() {
   }
 }
 
-void SelfTuningLocator::Locate(const Point2& q, LocateResult* result) const {
-  const std::shared_ptr<const TuningSnapshot> snap =
-      snapshot_.load(std::memory_order_acquire);
+bool SelfTuningLocator::LocateIn(const TuningSnapshot& snap, const Point2& q,
+                                 LocateResult* result) const {
   histogram_.Add(q);
   result->cost = LocateCost();
   uint32_t lookups = 0;
-  const auto start = snap->table->Start(q, &lookups);
+  const auto start = snap.table->Start(q, &lookups);
   WalkAndDescribe(t_, start, q, result);
   result->cost.table_lookups = lookups;
+  return !snap.hot[histogram_.grid().CellOf(q)];
+}
 
-  const uint64_t n = since_tune_.fetch_add(1, std::memory_order_relaxed) + 1;
-  if (!snap->hot[histogram_.grid().CellOf(q)]) {
-    cold_hits_.fetch_add(1, std::memory_order_relaxed);
-  }
-  if (n == options_.retune_every) {
+void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
+  const uint64_t before =
+      since_tune_.fetch_add(queries, std::memory_order_relaxed);
+  const uint64_t now = before + queries;
+  if (cold > 0) cold_hits_.fetch_add(cold, std::memory_order_relaxed);
+  const uint64_t every = options_.retune_every;
+  if (before < every && now >= every) {
     RequestRetune();
-  } else if (n % kColdCheckEvery == 0 && n >= options_.retune_every / 4 &&
+  } else if (before / kColdCheckEvery != now / kColdCheckEvery &&
+             now >= every / 4 &&
              cold_hits_.load(std::memory_order_relaxed) >
-                 kColdShareTrigger * static_cast<double>(n)) {
+                 kColdShareTrigger * static_cast<double>(now)) {
     RequestRetune();
   }
+}
+
+void SelfTuningLocator::Locate(const Point2& q, LocateResult* result) const {
+  Account(1, LocateIn(*snapshot_.Get(), q, result) ? 1 : 0);
+}
+
+void SelfTuningLocator::LocateMany(std::span<const Point2> queries,
+                                   LocateResult* results) const {
+  const TuningSnapshot& snap = *snapshot_.Get();
+  uint64_t cold = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    cold += LocateIn(snap, queries[i], &results[i]);
+  }
+  Account(queries.size(), cold);
 }
 
 void SelfTuningLocator::RequestRetune() const {
@@ -95,15 +113,14 @@ void SelfTuningLocator::RetuneLocked() const {
   std::fill(fresh_.begin(), fresh_.end(), 0.0);
   histogram_.Drain(&fresh_);
   tuner_.AddCounts(fresh_);
-  const uint64_t version = snapshot_.load()->version + 1;
-  snapshot_.store(tuner_.Build(version), std::memory_order_release);
+  snapshot_.Publish(tuner_.Build(snapshot_.Current()->version + 1));
   since_tune_.store(0, std::memory_order_relaxed);
   cold_hits_.store(0, std::memory_order_relaxed);
   retunes_.fetch_add(1, std::memory_order_relaxed);
 }
 
 TuningSummary SelfTuningLocator::Summary() const {
-  const std::shared_ptr<const TuningSnapshot> snap = snapshot_.load();
+  const std::shared_ptr<const TuningSnapshot> snap = snapshot_.Current();
   TuningSummary s;
   s.snapshot_version = snap->version;
   s.retune_count = retunes_.load(std::memory_order_relaxed);

@@ -12,8 +12,8 @@
 // a start, so no traffic is answered worse than by a walk inside its cell.
 //
 // Thread-safety: Locate() from any number of threads. The read path loads
-// the current TuningSnapshot (an immutable std::shared_ptr, swapped
-// atomically, like LevelDB's Version) and counts into relaxed per-thread
+// the current TuningSnapshot (immutable, published through a SnapshotSlot,
+// like LevelDB's Version) and counts into relaxed per-thread
 // histogram shards; it never waits for the tuner. Re-tunes are serialised
 // by a mutex only the tuner holds: inline in the query that triggers one
 // (options.background == false, deterministic) or on a background thread.
@@ -30,6 +30,7 @@
 #include "server/core/hot_region_tuner.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
+#include "server/core/snapshot_slot.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 
@@ -43,11 +44,21 @@ class SelfTuningLocator : public PointLocator {
   ~SelfTuningLocator() override;
 
   void Locate(const Point2& q, LocateResult* result) const override;
+  // One snapshot load and one update of the shared counters per call.
+  void LocateMany(std::span<const Point2> queries,
+                  LocateResult* results) const override;
   std::string_view name() const override { return "self-tuning"; }
   TuningSummary Summary() const override;
   void Retune() override;
 
  private:
+  // Locates q with `snap` and counts it in the histogram; true if q fell in
+  // a cold cell.
+  bool LocateIn(const TuningSnapshot& snap, const Point2& q,
+                LocateResult* result) const;
+  // Counts `queries` located (`cold` of them in cold cells) since the last
+  // re-tune, and asks for one when due.
+  void Account(uint64_t queries, uint64_t cold) const;
   // Asks for a re-tune: runs it inline or wakes the background thread.
   void RequestRetune() const;
   // Drains the histogram and publishes a new snapshot. Requires tune_mu_.
@@ -65,7 +76,7 @@ class SelfTuningLocator : public PointLocator {
   mutable std::vector<double> fresh_;  // guarded by tune_mu_
   mutable std::atomic<uint64_t> retunes_{0};
 
-  mutable std::atomic<std::shared_ptr<const TuningSnapshot>> snapshot_;
+  mutable SnapshotSlot<TuningSnapshot> snapshot_;  // published by re-tunes
   mutable std::atomic<uint64_t> since_tune_{0};
   mutable std::atomic<uint64_t> cold_hits_{0};
 

@@ -18,17 +18,22 @@ bool Contains(const std::array<int64_t, 3>& ids, int64_t id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
-// Barycentric coordinates of q in (a, b, c), computed in double; the
-// location type then pins the exact zeros and ones.
+// Barycentric coordinates of q in (a, b, c); the location type then pins
+// the exact zeros and ones. In long double, because the cross products
+// square coordinate differences: in double they overflow beyond ~1e154 and
+// underflow below ~1e-154, and inf/inf or 0/0 would answer NaN.
 std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
                                   const Point2& c, const Point2& q) {
+  using Real = long double;
   auto cross = [](const Point2& o, const Point2& u, const Point2& v) {
-    return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
+    return (Real{u.x} - o.x) * (Real{v.y} - o.y) -
+           (Real{u.y} - o.y) * (Real{v.x} - o.x);
   };
-  const double area = cross(a, b, c);
-  const double ba = cross(q, b, c) / area;
-  const double bb = cross(q, c, a) / area;
-  return {ba, bb, 1.0 - ba - bb};
+  const Real area = cross(a, b, c);
+  const Real ba = cross(q, b, c) / area;
+  const Real bb = cross(q, c, a) / area;
+  return {static_cast<double>(ba), static_cast<double>(bb),
+          static_cast<double>(1 - ba - bb)};
 }
 
 }  // namespace

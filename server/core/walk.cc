@@ -1,6 +1,8 @@
 #include "server/core/walk.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 
 #include "server/core/fast_random.h"
 
@@ -20,55 +22,70 @@ CGAL::Orientation SideOf(Face_handle f, int i,
 }
 
 // Squared distance from q to segment ab, in long double so that coordinates
-// near 1e308 do not overflow.
+// near 1e308 do not overflow. An endpoint is measured directly (not as a
+// clamped projection), so two hull edges that are nearest at their shared
+// vertex tie exactly.
 long double SegmentDistance2(const Point2& a, const Point2& b,
                              const Point2& q) {
-  const long double abx = b.x - static_cast<long double>(a.x);
-  const long double aby = b.y - static_cast<long double>(a.y);
-  const long double aqx = q.x - static_cast<long double>(a.x);
-  const long double aqy = q.y - static_cast<long double>(a.y);
-  const long double len2 = abx * abx + aby * aby;
-  long double t = len2 > 0 ? (aqx * abx + aqy * aby) / len2 : 0;
-  t = t < 0 ? 0 : (t > 1 ? 1 : t);
-  const long double dx = aqx - t * abx;
-  const long double dy = aqy - t * aby;
-  return dx * dx + dy * dy;
+  using Real = long double;
+  const auto d2 = [&q](const Point2& p) {
+    const Real dx = Real{q.x} - p.x;
+    const Real dy = Real{q.y} - p.y;
+    return dx * dx + dy * dy;
+  };
+  const Real abx = Real{b.x} - a.x;
+  const Real aby = Real{b.y} - a.y;
+  const Real aqx = Real{q.x} - a.x;
+  const Real aqy = Real{q.y} - a.y;
+  const Real dot = aqx * abx + aqy * aby;
+  const Real len2 = abx * abx + aby * aby;
+  if (dot <= 0) return d2(a);
+  if (dot >= len2) return d2(b);
+  const Real cross = aqx * aby - aqy * abx;
+  return cross * cross / len2;
 }
 
 // Among the hull edges that see q (a contiguous chain containing the exit
-// edge), finds the nearest one. Walks the chain both ways around the
-// infinite vertex. Returns the finite face and edge index of that edge.
+// edge), finds the nearest one; ties go to the edge with the smaller vertex
+// ids, so the answer does not depend on where the walk left the hull. Walks
+// the chain both ways around the infinite vertex. Returns the finite face and
+// edge index of that edge.
 void NearestVisibleHullEdge(const Triangulation& t, Face_handle* face,
                             int* edge, const Point2& q) {
   const auto& dt = t.cgal();
   const auto cq = Triangulation::ToCgal(q);
-  auto edge_of = [&](Face_handle inf_face, Face_handle* f, int* i) {
-    const int k = inf_face->index(dt.infinite_vertex());
-    *f = inf_face->neighbor(k);
-    *i = dt.mirror_index(inf_face, k);
+  struct Candidate {
+    long double distance;
+    std::pair<int64_t, int64_t> ids;  // (smaller, larger) vertex id
+    bool operator<(const Candidate& o) const {
+      return distance < o.distance || (distance == o.distance && ids < o.ids);
+    }
   };
-  auto distance = [&](Face_handle f, int i) {
-    return SegmentDistance2(Triangulation::FromCgal(f->vertex(Ccw(i))->point()),
-                            Triangulation::FromCgal(f->vertex(Cw(i))->point()),
-                            q);
+  const auto candidate = [&](Face_handle f, int i) {
+    const auto a = f->vertex(Ccw(i));
+    const auto b = f->vertex(Cw(i));
+    return Candidate{SegmentDistance2(Triangulation::FromCgal(a->point()),
+                                      Triangulation::FromCgal(b->point()), q),
+                     std::minmax(a->info().id, b->info().id)};
   };
   const Face_handle exit_inf = (*face)->neighbor(*edge);
-  long double best = distance(*face, *edge);
+  Candidate best = candidate(*face, *edge);
   for (int direction = 0; direction < 2; ++direction) {
     auto fc = dt.incident_faces(dt.infinite_vertex(), exit_inf);
     for (;;) {
-      if (direction == 0)
+      if (direction == 0) {
         ++fc;
-      else
+      } else {
         --fc;
+      }
       if (fc == exit_inf) break;  // the whole hull sees q
-      Face_handle f;
-      int i;
-      edge_of(fc, &f, &i);
+      const int k = fc->index(dt.infinite_vertex());
+      const Face_handle f = fc->neighbor(k);
+      const int i = dt.mirror_index(fc, k);
       if (SideOf(f, i, cq) != CGAL::RIGHT_TURN) break;
-      const long double d = distance(f, i);
-      if (d < best) {
-        best = d;
+      const Candidate c = candidate(f, i);
+      if (c < best) {
+        best = c;
         *face = f;
         *edge = i;
       }

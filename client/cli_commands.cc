@@ -1,0 +1,101 @@
+#include "client/cli_commands.h"
+
+#include <iostream>
+
+#include "client/cli_format.h"
+#include "client/health_check.h"
+#include "client/points_reader.h"
+
+namespace locator {
+namespace {
+
+// Usage check shared by the commands that take no arguments.
+bool TakesNoArguments(const CliSettings& settings, std::string_view command,
+                      const CliArgs& args) {
+  if (args.empty()) return true;
+  ReportUsageError(settings, std::string(command) + " takes no arguments");
+  return false;
+}
+
+// Makes `call` and prints its answer: as JSON with --json, else as
+// format_text(answer).
+template <typename Response, typename Call, typename FormatText>
+int CallAndPrint(const CliSettings& settings, Call call,
+                 FormatText format_text) {
+  Response response;
+  const grpc::Status status = call(&response);
+  if (!status.ok()) return ReportRpcError(status);
+  std::cout << (settings.json ? MessageToJson(response)
+                              : format_text(response));
+  return kExitOk;
+}
+
+}  // namespace
+
+int ReportRpcError(const grpc::Status& status) {
+  std::cerr << "error: " << DescribeRpcError(status) << "\n";
+  return kExitRpcError;
+}
+
+int ReportUsageError(const CliSettings& settings, std::string_view what) {
+  std::cerr << "error: " << what << "\n\n" << settings.usage;
+  return kExitUsage;
+}
+
+int ReportInputError(std::string_view what) {
+  std::cerr << "error: " << what << "\n";
+  return kExitUsage;
+}
+
+int RunLocate(LocatorClient& client, const CliSettings& settings,
+              const CliArgs& args) {
+  if (args.size() != 2) return ReportUsageError(settings, "locate takes X Y");
+  Point2 point;
+  if (!ParseDouble(args[0], &point.x) || !ParseDouble(args[1], &point.y)) {
+    return ReportUsageError(settings, "locate: '" + args[0] + " " + args[1] +
+                                          "' are not two numbers");
+  }
+  return CallAndPrint<v1::LocateResponse>(
+      settings,
+      [&](v1::LocateResponse* response) {
+        return client.Locate(point, response);
+      },
+      FormatLocate);
+}
+
+int RunStats(LocatorClient& client, const CliSettings& settings,
+             const CliArgs& args) {
+  if (!TakesNoArguments(settings, "stats", args)) return kExitUsage;
+  return CallAndPrint<v1::GetStatsResponse>(
+      settings,
+      [&](v1::GetStatsResponse* response) { return client.GetStats(response); },
+      FormatStats);
+}
+
+int RunRetune(LocatorClient& client, const CliSettings& settings,
+              const CliArgs& args) {
+  if (!TakesNoArguments(settings, "retune", args)) return kExitUsage;
+  return CallAndPrint<v1::RetuneResponse>(
+      settings,
+      [&](v1::RetuneResponse* response) { return client.Retune(response); },
+      [](const v1::RetuneResponse& response) {
+        return FormatTuning(response.tuning());
+      });
+}
+
+int RunHealth(LocatorClient& client, const CliSettings& settings,
+              const CliArgs& args) {
+  if (!TakesNoArguments(settings, "health", args)) return kExitUsage;
+  HealthStatus health = HealthStatus::kUnknown;
+  const grpc::Status status = client.CheckHealth(&health);
+  if (!status.ok()) return ReportRpcError(status);
+  const std::string_view name = HealthStatusName(health);
+  if (settings.json) {
+    std::cout << "{\"status\":\"" << name << "\"}\n";
+  } else {
+    std::cout << name << "\n";
+  }
+  return health == HealthStatus::kServing ? kExitOk : kExitRpcError;
+}
+
+}  // namespace locator

@@ -1,0 +1,199 @@
+#include "client/cli_format.h"
+
+#include <google/protobuf/util/json_util.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+#include "client/str_cat.h"
+
+namespace locator {
+namespace {
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+// Lines are "label" padded to one column, then the value.
+void AppendLine(std::string_view label, const std::string& value,
+                std::string* out) {
+  constexpr size_t kLabelWidth = 13;
+  out->append(label);
+  out->append(label.size() < kLabelWidth ? kLabelWidth - label.size() : 1, ' ');
+  out->append(value);
+  out->push_back('\n');
+}
+
+std::string FormatPoint(const v1::Point& point) {
+  return StrCat(
+      {"(", FormatDouble(point.x()), ", ", FormatDouble(point.y()), ")"});
+}
+
+std::string FormatBox(const v1::BoundingBox& box) {
+  return StrCat({"[", FormatDouble(box.min_x()), ", ",
+                 FormatDouble(box.max_x()), "] x [", FormatDouble(box.min_y()),
+                 ", ", FormatDouble(box.max_y()), "]"});
+}
+
+std::string FormatMiB(uint64_t bytes) {
+  std::array<char, 32> text;
+  const auto [end, error] =
+      std::to_chars(text.begin(), text.end(), bytes / kMiB,
+                    std::chars_format::fixed, /*precision=*/1);
+  return StrCat({std::string_view(text.begin(), end), " MiB"});
+}
+
+// The values, formatted by `format`, separated by spaces.
+template <typename Values, typename Format>
+std::string Join(const Values& values, Format format) {
+  std::string joined;
+  for (const auto& value : values) {
+    if (!joined.empty()) joined.push_back(' ');
+    joined.append(format(value));
+  }
+  return joined;
+}
+
+}  // namespace
+
+std::string FormatDouble(double value) {
+  std::array<char, 32> text;
+  const auto [end, error] = std::to_chars(text.begin(), text.end(), value);
+  return std::string(text.begin(), end);
+}
+
+std::string LocationTypeName(v1::LocationType type) {
+  constexpr std::string_view kPrefix = "LOCATION_TYPE_";
+  std::string name = v1::LocationType_Name(type);
+  if (name.starts_with(kPrefix)) name.erase(0, kPrefix.size());
+  // An enum value newer than this client has no name: show its number.
+  return name.empty() ? std::to_string(static_cast<int>(type)) : name;
+}
+
+std::string MessageToJson(const google::protobuf::Message& message) {
+  google::protobuf::util::JsonPrintOptions options;
+  options.always_print_primitive_fields = true;
+  options.preserve_proto_field_names = true;
+  std::string json;
+  // Printing a valid message into a string cannot fail.
+  (void)google::protobuf::util::MessageToJsonString(message, &json, options);
+  return json + "\n";
+}
+
+std::string FormatLocate(const v1::LocateResponse& response) {
+  std::string out;
+  AppendLine("type", LocationTypeName(response.type()), &out);
+  AppendLine("triangle", std::to_string(response.triangle_id()), &out);
+  for (int i = 0; i < response.vertex_ids_size(); ++i) {
+    std::string vertex = std::to_string(response.vertex_ids(i));
+    if (i < response.vertices_size()) {
+      vertex.push_back(' ');
+      vertex.append(FormatPoint(response.vertices(i)));
+    }
+    AppendLine(i == 0 ? "vertices" : "", vertex, &out);
+  }
+  if (response.hull_edge_vertex_ids_size() > 0) {
+    AppendLine("hull edge",
+               Join(response.hull_edge_vertex_ids(),
+                    [](int64_t id) { return std::to_string(id); }),
+               &out);
+  }
+  AppendLine("barycentric",
+             response.barycentric().empty()
+                 ? "none (outside the convex hull)"
+                 : Join(response.barycentric(), FormatDouble),
+             &out);
+  AppendLine("value",
+             response.has_value() ? FormatDouble(response.value()) : "none",
+             &out);
+  const v1::Cost& cost = response.cost();
+  AppendLine("cost",
+             StrCat({std::to_string(cost.total()), " (",
+                     std::to_string(cost.faces_visited()), " faces visited, ",
+                     std::to_string(cost.comparisons()), " comparisons, ",
+                     std::to_string(cost.table_lookups()), " table lookups)"}),
+             &out);
+  return out;
+}
+
+std::string FormatStats(const v1::GetStatsResponse& stats) {
+  const v1::DatasetStats& dataset = stats.dataset();
+  std::string out;
+  AppendLine("dataset",
+             dataset.source().empty() ? "(redacted)" : dataset.source(), &out);
+  AppendLine("points",
+             StrCat({std::to_string(dataset.input_points()), " read, ",
+                     std::to_string(dataset.vertices()), " vertices, ",
+                     std::to_string(dataset.duplicates_merged()),
+                     " duplicates merged, ",
+                     std::to_string(dataset.triangles()), " triangles"}),
+             &out);
+  AppendLine("bounds", FormatBox(dataset.bounding_box()), &out);
+  AppendLine("values", dataset.has_values() ? "yes" : "no", &out);
+  AppendLine("build", StrCat({FormatDouble(dataset.build_seconds()), " s"}),
+             &out);
+  AppendLine("strategy", stats.strategy(), &out);
+  AppendLine(
+      "serving",
+      StrCat({std::to_string(stats.queries_served()), " queries; mean cost ",
+              FormatDouble(stats.mean_cost_lifetime()), " lifetime, ",
+              FormatDouble(stats.mean_cost_recent()), " over the last ",
+              std::to_string(stats.recent_window())}),
+      &out);
+  AppendLine("memory",
+             StrCat({FormatMiB(stats.memory().triangulation_bytes()),
+                     " triangulation, ",
+                     FormatMiB(stats.memory().tuning_bytes()), " tuning"}),
+             &out);
+  return out + FormatTuning(stats.tuning());
+}
+
+std::string FormatTuning(const v1::TuningStats& tuning) {
+  std::string out;
+  const std::string grid = std::to_string(tuning.grid_size());
+  AppendLine("tuning",
+             StrCat({"snapshot ", std::to_string(tuning.snapshot_version()),
+                     " after ", std::to_string(tuning.retune_count()),
+                     " re-tunes; ", std::to_string(tuning.start_point_count()),
+                     " start points; histogram ", grid, "x", grid}),
+             &out);
+  for (int i = 0; i < tuning.hot_regions_size(); ++i) {
+    AppendLine(i == 0 ? "hot regions" : "", FormatBox(tuning.hot_regions(i)),
+               &out);
+  }
+  return out;
+}
+
+std::string BatchCsvHeader() {
+  return "x,y,type,triangle_id,v0,v1,v2,b0,b1,b2,value,cost\n";
+}
+
+void AppendBatchCsvRows(std::span<const double> xs, std::span<const double> ys,
+                        const v1::LocateBatchResponse& response,
+                        std::string* out) {
+  for (size_t i = 0; i < xs.size(); ++i) {
+    const auto type = static_cast<v1::LocationType>(response.types(i));
+    // Barycentric coordinates mean nothing outside the hull (the server
+    // sends zeros); leave those cells empty, like a missing value.
+    const bool inside = type != v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL;
+    out->append(StrCat({FormatDouble(xs[i]), ",", FormatDouble(ys[i]), ",",
+                        LocationTypeName(type), ",",
+                        std::to_string(response.triangle_ids(i))}));
+    for (size_t k = 0; k < 3; ++k) {
+      out->push_back(',');
+      out->append(std::to_string(response.vertex_ids(3 * i + k)));
+    }
+    for (size_t k = 0; k < 3; ++k) {
+      out->push_back(',');
+      if (inside) out->append(FormatDouble(response.barycentric(3 * i + k)));
+    }
+    out->push_back(',');
+    const double value = response.values(i);
+    if (!std::isnan(value)) out->append(FormatDouble(value));
+    out->push_back(',');
+    out->append(std::to_string(response.costs(i)));
+    out->push_back('\n');
+  }
+}
+
+}  // namespace locator

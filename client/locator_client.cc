@@ -1,0 +1,172 @@
+#include "client/locator_client.h"
+
+#include <utility>
+
+namespace locator {
+namespace {
+
+// Retries UNAVAILABLE only: it means the call never reached a live server
+// (connection refused or reset while it restarts), so even Retune is safe to
+// send again. Backoff 50 ms doubling to 1 s covers a typical restart.
+constexpr char kRetryServiceConfig[] = R"json({
+  "methodConfig": [{
+    "name": [{"service": "locator.v1.Locator"},
+             {"service": "grpc.health.v1.Health"}],
+    "retryPolicy": {
+      "maxAttempts": 5,
+      "initialBackoff": "0.05s",
+      "maxBackoff": "1s",
+      "backoffMultiplier": 2,
+      "retryableStatusCodes": ["UNAVAILABLE"]
+    }
+  }]
+})json";
+
+}  // namespace
+
+std::shared_ptr<grpc::Channel> CreateLocatorChannel(
+    const ChannelOptions& options) {
+  grpc::ChannelArguments args;
+  args.SetMaxReceiveMessageSize(options.max_message_bytes);
+  args.SetMaxSendMessageSize(options.max_message_bytes);
+  if (options.retry_unavailable) {
+    args.SetServiceConfigJSON(kRetryServiceConfig);
+  }
+  if (options.own_connection) {
+    // Channels with equal arguments share subchannels (and so one TCP
+    // connection) through the global pool; a local pool gives each its own.
+    args.SetInt(GRPC_ARG_USE_LOCAL_SUBCHANNEL_POOL, 1);
+  }
+  return grpc::CreateCustomChannel(options.target,
+                                   grpc::InsecureChannelCredentials(), args);
+}
+
+void SetDeadlineFromNow(grpc::ClientContext* context,
+                        std::chrono::milliseconds timeout) {
+  context->set_deadline(std::chrono::system_clock::now() + timeout);
+}
+
+std::string_view GrpcCodeName(grpc::StatusCode code) {
+  switch (code) {
+    case grpc::StatusCode::OK:
+      return "OK";
+    case grpc::StatusCode::CANCELLED:
+      return "CANCELLED";
+    case grpc::StatusCode::UNKNOWN:
+      return "UNKNOWN";
+    case grpc::StatusCode::INVALID_ARGUMENT:
+      return "INVALID_ARGUMENT";
+    case grpc::StatusCode::DEADLINE_EXCEEDED:
+      return "DEADLINE_EXCEEDED";
+    case grpc::StatusCode::NOT_FOUND:
+      return "NOT_FOUND";
+    case grpc::StatusCode::ALREADY_EXISTS:
+      return "ALREADY_EXISTS";
+    case grpc::StatusCode::PERMISSION_DENIED:
+      return "PERMISSION_DENIED";
+    case grpc::StatusCode::RESOURCE_EXHAUSTED:
+      return "RESOURCE_EXHAUSTED";
+    case grpc::StatusCode::FAILED_PRECONDITION:
+      return "FAILED_PRECONDITION";
+    case grpc::StatusCode::ABORTED:
+      return "ABORTED";
+    case grpc::StatusCode::OUT_OF_RANGE:
+      return "OUT_OF_RANGE";
+    case grpc::StatusCode::UNIMPLEMENTED:
+      return "UNIMPLEMENTED";
+    case grpc::StatusCode::INTERNAL:
+      return "INTERNAL";
+    case grpc::StatusCode::UNAVAILABLE:
+      return "UNAVAILABLE";
+    case grpc::StatusCode::DATA_LOSS:
+      return "DATA_LOSS";
+    case grpc::StatusCode::UNAUTHENTICATED:
+      return "UNAUTHENTICATED";
+    default:
+      return "UNKNOWN";
+  }
+}
+
+std::string DescribeRpcError(const grpc::Status& status) {
+  return std::string(GrpcCodeName(status.error_code())) + ": " +
+         status.error_message();
+}
+
+void RequestColumns(const BatchColumns& columns,
+                    v1::LocateBatchRequest* request) {
+  request->set_include_vertex_ids(columns.vertex_ids);
+  request->set_include_barycentric(columns.barycentric);
+  request->set_include_values(columns.values);
+}
+
+LocatorClient::LocatorClient(std::shared_ptr<grpc::Channel> channel,
+                             std::chrono::milliseconds deadline)
+    : stub_(v1::Locator::NewStub(channel)),
+      health_(channel),
+      deadline_(deadline) {}
+
+grpc::Status LocatorClient::Locate(const Point2& point,
+                                   v1::LocateResponse* response) {
+  v1::LocateRequest request;
+  request.mutable_point()->set_x(point.x);
+  request.mutable_point()->set_y(point.y);
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->Locate(&context, request, response);
+}
+
+grpc::Status LocatorClient::LocateBatch(std::span<const double> xs,
+                                        std::span<const double> ys,
+                                        const BatchColumns& columns,
+                                        v1::LocateBatchResponse* response) {
+  v1::LocateBatchRequest request;
+  request.mutable_xs()->Add(xs.begin(), xs.end());
+  request.mutable_ys()->Add(ys.begin(), ys.end());
+  RequestColumns(columns, &request);
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->LocateBatch(&context, request, response);
+}
+
+grpc::Status LocatorClient::GetStats(v1::GetStatsResponse* response) {
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->GetStats(&context, v1::GetStatsRequest(), response);
+}
+
+grpc::Status LocatorClient::Retune(v1::RetuneResponse* response) {
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->Retune(&context, v1::RetuneRequest(), response);
+}
+
+grpc::Status LocatorClient::CheckHealth(HealthStatus* status) {
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return health_.Check(&context, /*service=*/"", status);
+}
+
+void LocatorClient::StartLocate(grpc::ClientContext* context,
+                                const v1::LocateRequest* request,
+                                v1::LocateResponse* response, Completion done) {
+  SetDeadlineFromNow(context, deadline_);
+  stub_->async()->Locate(context, request, response, std::move(done));
+}
+
+void LocatorClient::StartLocateBatch(grpc::ClientContext* context,
+                                     const v1::LocateBatchRequest* request,
+                                     v1::LocateBatchResponse* response,
+                                     Completion done) {
+  SetDeadlineFromNow(context, deadline_);
+  stub_->async()->LocateBatch(context, request, response, std::move(done));
+}
+
+void LocatorClient::StartLocateStream(
+    grpc::ClientContext* context,
+    std::chrono::system_clock::time_point stream_deadline,
+    StreamReactor* reactor) {
+  context->set_deadline(stream_deadline);
+  stub_->async()->LocateStream(context, reactor);
+}
+
+}  // namespace locator

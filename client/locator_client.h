@@ -1,0 +1,119 @@
+// LocatorClient: the one client of locator.v1.Locator that the `locator` CLI
+// and the `locator-load` driver share, and the channel it talks over.
+//
+// Owns a Locator stub and a health checker on a shared channel, and the
+// per-call deadline. Every call it starts, blocking or callback, gets a
+// deadline before it is sent: a stalled server can never hang a client.
+//
+// Thread-safety: a LocatorClient is thread-safe (gRPC stubs are). For the
+// callback calls the caller owns the context and messages and keeps them
+// alive until the completion runs.
+
+#ifndef LOCATOR_CLIENT_LOCATOR_CLIENT_H_
+#define LOCATOR_CLIENT_LOCATOR_CLIENT_H_
+
+#include <grpcpp/grpcpp.h>
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "client/health_check.h"
+#include "locator/v1/locator.grpc.pb.h"
+#include "server/core/geometry.h"
+
+namespace locator {
+
+struct ChannelOptions {
+  std::string target = "127.0.0.1:50051";
+  // Limit on messages in both directions; large batches need more than
+  // gRPC's default of 4 MiB.
+  int max_message_bytes = 64 << 20;
+  // Retry calls that fail with UNAVAILABLE (a restarting server), with
+  // exponential backoff, through a gRPC service config.
+  bool retry_unavailable = false;
+  // Open a TCP connection of this channel's own instead of sharing one with
+  // other channels to the same target.
+  bool own_connection = false;
+};
+
+// A plaintext channel to options.target (the servers speak no TLS).
+std::shared_ptr<grpc::Channel> CreateLocatorChannel(
+    const ChannelOptions& options);
+
+// Sets `context`'s deadline to `timeout` from now.
+void SetDeadlineFromNow(grpc::ClientContext* context,
+                        std::chrono::milliseconds timeout);
+
+// The canonical upper-case name of `code` ("UNAVAILABLE", ...).
+std::string_view GrpcCodeName(grpc::StatusCode code);
+// "<CODE>: <message>", as the CLI and the load driver print a failed call.
+std::string DescribeRpcError(const grpc::Status& status);
+
+// Which optional columns LocateBatch asks the server to fill.
+struct BatchColumns {
+  bool vertex_ids = false;
+  bool barycentric = false;
+  bool values = false;
+};
+
+// Sets the include_* flags of `request` that ask for `columns`.
+void RequestColumns(const BatchColumns& columns,
+                    v1::LocateBatchRequest* request);
+
+class LocatorClient {
+ public:
+  using Completion = std::function<void(grpc::Status)>;
+  using StreamReactor =
+      grpc::ClientBidiReactor<v1::LocateRequest, v1::LocateResponse>;
+
+  // A client on `channel` whose calls each get `deadline` to complete.
+  LocatorClient(std::shared_ptr<grpc::Channel> channel,
+                std::chrono::milliseconds deadline);
+
+  std::chrono::milliseconds deadline() const { return deadline_; }
+
+  // Blocking calls.
+  // Locates one point.
+  grpc::Status Locate(const Point2& point, v1::LocateResponse* response);
+  // Locates points (xs[i], ys[i]); xs and ys must have the same size.
+  grpc::Status LocateBatch(std::span<const double> xs,
+                           std::span<const double> ys,
+                           const BatchColumns& columns,
+                           v1::LocateBatchResponse* response);
+  // Reads the server's statistics.
+  grpc::Status GetStats(v1::GetStatsResponse* response);
+  // Re-tunes the server now.
+  grpc::Status Retune(v1::RetuneResponse* response);
+  // Asks the standard health service about the server as a whole.
+  grpc::Status CheckHealth(HealthStatus* status);
+
+  // Callback calls: start and return at once; `done` runs on a gRPC thread.
+  // Starts a Locate.
+  void StartLocate(grpc::ClientContext* context,
+                   const v1::LocateRequest* request,
+                   v1::LocateResponse* response, Completion done);
+  // Starts a LocateBatch.
+  void StartLocateBatch(grpc::ClientContext* context,
+                        const v1::LocateBatchRequest* request,
+                        v1::LocateBatchResponse* response, Completion done);
+  // Starts a LocateStream driven by `reactor`, which must still call
+  // StartCall(). A stream is one call, so it gets one deadline for its whole
+  // life: `stream_deadline`, not the per-call deadline.
+  void StartLocateStream(grpc::ClientContext* context,
+                         std::chrono::system_clock::time_point stream_deadline,
+                         StreamReactor* reactor);
+
+ private:
+  std::unique_ptr<v1::Locator::Stub> stub_;
+  HealthChecker health_;
+  const std::chrono::milliseconds deadline_;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_CLIENT_LOCATOR_CLIENT_H_

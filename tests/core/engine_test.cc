@@ -1,0 +1,265 @@
+#include "server/core/engine.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "server/core/locator_factory.h"
+#include "server/core/triangulation.h"
+#include "tests/core/test_datasets.h"
+
+namespace locator {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// 3000 points on the plane z = 2x + 3y + 1, plus 5 repeats of earlier ones.
+Dataset TestDataset() {
+  Dataset ds = test::PlaneDataset(3000, 4);
+  for (size_t i = 0; i < 5; ++i) {
+    ds.points.push_back(ds.points[i * 10]);
+    ds.values.push_back(ds.values[i * 10]);
+  }
+  ds.source = "engine-test";
+  return ds;
+}
+
+Status CreateEngine(Dataset ds, const std::string& strategy,
+                    std::unique_ptr<Engine>* engine) {
+  EngineOptions options;
+  options.strategy = strategy;
+  return Engine::Create(std::move(ds), options, engine);
+}
+
+class EngineTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const Status s = CreateEngine(TestDataset(), "self-tuning", &engine_);
+    ASSERT_TRUE(s.ok()) << s.ToString();
+    t_ = test::BuildTriangulation(TestDataset());
+    ASSERT_NE(t_, nullptr);
+  }
+
+  // Queries of every kind: inside, on vertices, outside the hull.
+  std::vector<Point2> MixedQueries(size_t n) const {
+    std::vector<Point2> q =
+        test::UniformQueries(t_->bounding_box().Inflated(0.2), n, /*seed=*/8);
+    const Dataset ds = TestDataset();
+    for (size_t i = 0; i < n; i += 10) q[i] = ds.points[i % 3000];
+    return q;
+  }
+
+  std::unique_ptr<Engine> engine_;
+  // The same triangulation the engine built, to check its answers.
+  std::unique_ptr<Triangulation> t_;
+};
+
+TEST(EngineCreateTest, UnknownStrategyListsTheValidNames) {
+  std::unique_ptr<Engine> engine;
+  const Status s = CreateEngine(GenerateUniform(100, 1), "fastest", &engine);
+  ASSERT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+  EXPECT_NE(s.message().find("fastest"), std::string::npos) << s.message();
+  for (const std::string& name : StrategyNames()) {
+    EXPECT_NE(s.message().find(name), std::string::npos) << s.message();
+  }
+  EXPECT_EQ(engine, nullptr);
+}
+
+TEST(EngineCreateTest, CollinearOrTooFewPointsFail) {
+  std::unique_ptr<Engine> engine;
+  const Status collinear = CreateEngine(
+      test::PointsDataset({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), "walk", &engine);
+  ASSERT_EQ(collinear.code(), Status::Code::kInvalidArgument);
+  EXPECT_NE(collinear.message().find("collinear"), std::string::npos)
+      << collinear.message();
+  const Status few =
+      CreateEngine(test::PointsDataset({{0, 0}, {1, 1}}), "walk", &engine);
+  EXPECT_EQ(few.code(), Status::Code::kInvalidArgument);
+  EXPECT_EQ(engine, nullptr);
+}
+
+TEST(EngineCreateTest, TuningOptionsOutOfRangeFail) {
+  EngineOptions options;
+  options.tuning.grid_size = 0;
+  std::unique_ptr<Engine> engine;
+  const Status s = Engine::Create(GenerateUniform(100, 1), options, &engine);
+  EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+  EXPECT_EQ(engine, nullptr);
+}
+
+TEST(EngineCreateTest, EveryStrategyIsAvailable) {
+  for (const std::string& name : StrategyNames()) {
+    std::unique_ptr<Engine> engine;
+    ASSERT_TRUE(CreateEngine(GenerateUniform(500, 2), name, &engine).ok());
+    EXPECT_EQ(engine->Stats().strategy, name);
+    LocateResult r;
+    ASSERT_TRUE(engine->Locate({0.5, 0.5}, &r).ok());
+    EXPECT_GE(r.triangle_id, 0);
+  }
+}
+
+TEST_F(EngineTest, LocateRejectsNonFiniteCoordinates) {
+  LocateResult r;
+  for (const Point2& q : {Point2{kNaN, 0.5}, Point2{0.5, kNaN},
+                          Point2{kInf, 0.5}, Point2{0.5, -kInf}}) {
+    const Status s = engine_->Locate(q, &r);
+    EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+    EXPECT_NE(s.message().find("non-finite"), std::string::npos);
+  }
+  EXPECT_EQ(engine_->Stats().queries, 0u);
+  EXPECT_TRUE(engine_->Locate({1e308, -1e308}, &r).ok());  // huge is fine
+  EXPECT_EQ(r.type, LocationType::kOutsideConvexHull);
+}
+
+TEST_F(EngineTest, EmptyBatchIsOk) {
+  std::vector<LocateResult> results(3);
+  const Status s = engine_->LocateBatch({}, &results);
+  EXPECT_TRUE(s.ok()) << s.ToString();
+  EXPECT_TRUE(results.empty());
+  EXPECT_EQ(engine_->Stats().queries, 0u);
+}
+
+TEST_F(EngineTest, NonFinitePointFailsTheWholeBatch) {
+  std::vector<LocateResult> results;
+  ASSERT_TRUE(engine_->LocateBatch(MixedQueries(10), &results).ok());
+  const uint64_t before = engine_->Stats().queries;
+  ASSERT_EQ(before, 10u);
+  for (size_t bad : {size_t{0}, size_t{7}, size_t{299}}) {
+    std::vector<Point2> queries = MixedQueries(300);
+    queries[bad].y = bad == 7 ? kNaN : -kInf;
+    if (bad == 7) queries[200].x = kNaN;  // only the first is named
+    const Status s = engine_->LocateBatch(queries, &results);
+    ASSERT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+    EXPECT_NE(s.message().find("point " + std::to_string(bad) + " "),
+              std::string::npos)
+        << s.message();
+    EXPECT_EQ(engine_->Stats().queries, before) << "located before failing";
+  }
+}
+
+TEST_F(EngineTest, CancelledBatchIsUnavailable) {
+  const std::vector<Point2> queries = MixedQueries(5000);
+  std::vector<LocateResult> results;
+  int polls = 0;
+  Status s = engine_->LocateBatch(queries, &results, [&polls] {
+    return ++polls < 3;  // cancel at the third poll
+  });
+  EXPECT_EQ(s.code(), Status::Code::kUnavailable) << s.ToString();
+  EXPECT_EQ(polls, 3);
+  const uint64_t located = engine_->Stats().queries;
+  EXPECT_GT(located, 0u);
+  EXPECT_LT(located, queries.size());
+
+  polls = 0;
+  s = engine_->LocateBatch(queries, &results, [&polls] {
+    ++polls;
+    return false;
+  });
+  EXPECT_EQ(s.code(), Status::Code::kUnavailable);
+  EXPECT_EQ(polls, 1);
+  EXPECT_EQ(engine_->Stats().queries, located) << "located after cancel";
+
+  polls = 0;
+  s = engine_->LocateBatch(queries, &results, [&polls] {
+    ++polls;
+    return true;
+  });
+  EXPECT_TRUE(s.ok()) << s.ToString();
+  EXPECT_GT(polls, 1);
+  EXPECT_EQ(results.size(), queries.size());
+}
+
+TEST_F(EngineTest, BatchAnswersMatchUnaryLocateInInputOrder) {
+  const std::vector<Point2> queries = MixedQueries(4000);
+  std::vector<LocateResult> batch;
+  ASSERT_TRUE(engine_->LocateBatch(queries, &batch).ok());
+  ASSERT_EQ(batch.size(), queries.size());
+  int faces = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    LocateResult unary;
+    ASSERT_TRUE(engine_->Locate(queries[i], &unary).ok());
+    ASSERT_EQ(batch[i].type, unary.type) << "query " << i;
+    if (unary.type == LocationType::kFace) {
+      ++faces;
+      EXPECT_EQ(batch[i].triangle_id, unary.triangle_id) << "query " << i;
+      EXPECT_EQ(batch[i].vertex_ids, unary.vertex_ids) << "query " << i;
+      EXPECT_EQ(batch[i].value, unary.value) << "query " << i;
+    }
+    EXPECT_TRUE(t_->Agrees(queries[i], batch[i], unary)) << "query " << i;
+    EXPECT_TRUE(
+        t_->Agrees(queries[i], batch[i], t_->ReferenceLocate(queries[i])))
+        << "query " << i;
+  }
+  EXPECT_GT(faces, 1500);
+}
+
+TEST_F(EngineTest, StatsCountQueriesAndCosts) {
+  EngineStats s = engine_->Stats();
+  EXPECT_EQ(s.queries, 0u);
+  EXPECT_EQ(s.mean_cost_lifetime, 0);
+  EXPECT_EQ(s.strategy, "self-tuning");
+  EXPECT_EQ(s.tuning.snapshot_version, 1u);
+
+  const std::vector<Point2> queries = MixedQueries(1500);
+  std::vector<double> costs;
+  LocateResult r;
+  for (const Point2& q : queries) {
+    ASSERT_TRUE(engine_->Locate(q, &r).ok());
+    costs.push_back(r.cost.total());
+    if (costs.size() == 500) {
+      // Before the first window completes, recent is the lifetime mean.
+      s = engine_->Stats();
+      EXPECT_DOUBLE_EQ(s.mean_cost_recent, s.mean_cost_lifetime);
+    }
+  }
+  s = engine_->Stats();
+  EXPECT_EQ(s.queries, queries.size());
+  const double total = std::accumulate(costs.begin(), costs.end(), 0.0);
+  EXPECT_GT(s.mean_cost_lifetime, 0);
+  EXPECT_DOUBLE_EQ(s.mean_cost_lifetime, total / queries.size());
+  const double first_window =
+      std::accumulate(costs.begin(), costs.begin() + Engine::kStatsWindow,
+                      0.0) /
+      Engine::kStatsWindow;
+  EXPECT_DOUBLE_EQ(s.mean_cost_recent, first_window);
+}
+
+TEST_F(EngineTest, StatsDescribeTheDataset) {
+  const DatasetInfo& info = engine_->Stats().dataset;
+  EXPECT_EQ(info.source, "engine-test");
+  EXPECT_EQ(info.input_points, 3005u);
+  EXPECT_EQ(info.vertices, 3000u);
+  EXPECT_EQ(info.duplicates_merged, 5u);
+  EXPECT_EQ(info.triangles, t_->num_triangles());
+  EXPECT_TRUE(info.has_values);
+  EXPECT_EQ(info.triangulation_bytes, t_->MemoryBytes());
+  EXPECT_GE(info.build_seconds, 0);
+  const BoundingBox& box = t_->bounding_box();
+  EXPECT_EQ(info.bounding_box.min_x, box.min_x);
+  EXPECT_EQ(info.bounding_box.min_y, box.min_y);
+  EXPECT_EQ(info.bounding_box.max_x, box.max_x);
+  EXPECT_EQ(info.bounding_box.max_y, box.max_y);
+  EXPECT_GT(box.width(), 0.99);
+  EXPECT_EQ(engine_->dataset_info().triangles, info.triangles);
+
+  std::unique_ptr<Engine> plain;
+  ASSERT_TRUE(CreateEngine(GenerateUniform(100, 1), "walk", &plain).ok());
+  EXPECT_FALSE(plain->Stats().dataset.has_values);
+  EXPECT_EQ(plain->Stats().dataset.duplicates_merged, 0u);
+}
+
+TEST_F(EngineTest, ValuesAreInterpolated) {
+  LocateResult r;
+  ASSERT_TRUE(engine_->Locate({0.4, 0.7}, &r).ok());
+  ASSERT_TRUE(r.has_value);
+  EXPECT_NEAR(r.value, test::Plane({0.4, 0.7}), 1e-9);
+}
+
+}  // namespace
+}  // namespace locator

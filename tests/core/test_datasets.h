@@ -1,0 +1,87 @@
+// Shared fixtures for the core tests: dataset builders, query streams and
+// the triangulation / locator factories the tests build on.
+//
+// Factories that can fail record a non-fatal gtest failure and return
+// nullptr, so callers write `ASSERT_NE(t, nullptr)`.
+
+#ifndef LOCATOR_TESTS_CORE_TEST_DATASETS_H_
+#define LOCATOR_TESTS_CORE_TEST_DATASETS_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "server/core/dataset.h"
+#include "server/core/geometry.h"
+#include "server/core/locate_result.h"
+#include "server/core/point_locator.h"
+#include "server/core/triangulation.h"
+#include "server/core/tuning_options.h"
+#include "server/core/workload.h"
+
+namespace locator::test {
+
+// The k x k integer grid {0..k-1}^2, row by row (id = y * k + x). Every
+// square of four points is co-circular, so the Delaunay triangulation is
+// not unique: a stress test for exact predicates.
+Dataset GridDataset(int k);
+
+// The plane every PlaneDataset value lies on: z = 2x + 3y + 1.
+double Plane(const Point2& p);
+// `n` uniform points in the unit square with value Plane(p).
+Dataset PlaneDataset(size_t n, uint64_t seed);
+
+// `sparse` uniform points in the unit square plus `dense` uniform points in
+// the tiny square [0.5, 0.5 + side]^2.
+Dataset DenseClusterDataset(size_t sparse, size_t dense, double side,
+                            uint64_t seed);
+
+// A dataset from raw points (no values).
+Dataset PointsDataset(std::vector<Point2> points);
+
+// Triangulates `dataset`; nullptr (and a test failure) if that fails.
+std::unique_ptr<Triangulation> BuildTriangulation(const Dataset& dataset);
+
+// Builds strategy `name` over `t`; nullptr (and a test failure) on error.
+std::unique_ptr<PointLocator> MakeLocator(
+    std::string_view name, const Triangulation& t,
+    const TuningOptions& options = TuningOptions());
+
+// `n` queries of workload `kind` mapped into `box`.
+std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
+                                    size_t n, uint64_t seed);
+
+// `n` points uniform in `box`.
+std::vector<Point2> UniformQueries(const BoundingBox& box, size_t n,
+                                   uint64_t seed);
+
+// The square [x0, x0 + side] x [y0, y0 + side] of the unit square, mapped
+// into `box` the way Workload maps its queries.
+BoundingBox MapUnitSquare(const BoundingBox& box, double x0, double y0,
+                          double side);
+
+// The 1-cluster workload's square, mapped into `box`.
+inline BoundingBox OneClusterSquare(const BoundingBox& box) {
+  return MapUnitSquare(box, 0.48, 0.48, 0.04);
+}
+
+// Whether `outer` contains all of `inner`, up to rounding: a region built
+// from grid cells may miss a square on the same lines by an ulp.
+bool Covers(const BoundingBox& outer, const BoundingBox& inner);
+// Whether one of `regions` Covers() `inner`.
+bool SomeRegionCovers(const std::vector<BoundingBox>& regions,
+                      const BoundingBox& inner);
+
+// Triangulation::ReferenceLocate for every query.
+std::vector<LocateResult> ReferenceAnswers(const Triangulation& t,
+                                           std::span<const Point2> queries);
+
+// Mean LocateResult::cost.total() of `locator` over `queries`.
+double MeanCost(const PointLocator& locator, std::span<const Point2> queries);
+
+}  // namespace locator::test
+
+#endif  // LOCATOR_TESTS_CORE_TEST_DATASETS_H_
