@@ -7,8 +7,8 @@ namespace locator {
 
 namespace {
 
-// Check for moved traffic this often, and only after a quarter of the
-// regular re-tune interval has given the cold-hit ratio some evidence.
+// Judge blocks of this many queries for moved traffic, once a quarter of the
+// regular re-tune interval has given the histogram some evidence.
 constexpr uint64_t kColdCheckEvery = 256;
 // A re-tune is due early when this share of queries lands in cold cells.
 // Mixed traffic (half clustered, half uniform) stays below it.
@@ -61,10 +61,15 @@ void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
   const uint64_t every = options_.retune_every;
   if (before < every && now >= every) {
     RequestRetune();
-  } else if (before / kColdCheckEvery != now / kColdCheckEvery &&
-             now >= every / 4 &&
-             cold_hits_.load(std::memory_order_relaxed) >
-                 kColdShareTrigger * static_cast<double>(now)) {
+    return;
+  }
+  if (before / kColdCheckEvery == now / kColdCheckEvery) return;
+  // The call that completes a block judges it: most of its queries in cold
+  // cells means the traffic moved, and waiting for the regular re-tune
+  // would serve it badly for up to `every` queries.
+  const uint64_t block_cold = cold_hits_.exchange(0, std::memory_order_relaxed);
+  if (now >= every / 4 &&
+      block_cold > kColdShareTrigger * static_cast<double>(kColdCheckEvery)) {
     RequestRetune();
   }
 }
