@@ -15,12 +15,9 @@
 
 namespace locator {
 
-// The strategy names, default ("self-tuning") last.
-const std::vector<std::string>& StrategyNames();
-
-// Builds the strategy `name` over `t` (which must outlive it).
-// InvalidArgument naming the valid strategies for an unknown name, or for
-// tuning options out of range.
+// Builds the strategy `name` (see StrategyNames()) over `t`, which must
+// outlive it. InvalidArgument naming the valid strategies for an unknown
+// name, or for tuning options out of range.
 Status MakePointLocator(std::string_view name, const Triangulation& t,
                         const TuningOptions& options,
                         std::unique_ptr<PointLocator>* out);

@@ -1,11 +1,17 @@
 // TuningOptions: the knobs of the learning strategies, with the defaults the
-// paper (and the issue tracker) fixes.
+// paper (and the issue tracker) fixes, and the strategy names. No CGAL here:
+// the server validates its flags with these before building anything.
 
 #ifndef LOCATOR_CORE_TUNING_OPTIONS_H_
 #define LOCATOR_CORE_TUNING_OPTIONS_H_
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "server/core/status.h"
 
 namespace locator {
 
@@ -31,6 +37,18 @@ struct TuningOptions {
   // Seed for the strategies' sampling.
   uint64_t seed = 1;
 };
+
+// Grids above this make the per-cell arrays outgrow any sane budget.
+inline constexpr int kMaxGridSize = 1024;
+
+// The strategy names, default ("self-tuning") last.
+const std::vector<std::string>& StrategyNames();
+
+// InvalidArgument naming the valid strategies unless `name` is one.
+Status ValidateStrategy(std::string_view name);
+
+// InvalidArgument naming the first option out of range.
+Status ValidateTuningOptions(const TuningOptions& options);
 
 }  // namespace locator
 

@@ -1,0 +1,180 @@
+#include "server/batch_locator.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "server/proto_convert.h"
+#include "server/status_mapping.h"
+
+namespace locator {
+namespace {
+
+bool DeadlinePassed(const grpc::CallbackServerContext& context) {
+  return std::chrono::system_clock::now() >= context.deadline();
+}
+
+// Once false it stays false: cancellation and a passed deadline are final.
+bool ShouldKeepGoing(const grpc::CallbackServerContext& context) {
+  return !context.IsCancelled() && !DeadlinePassed(context);
+}
+
+grpc::Status InterruptedStatus(const grpc::CallbackServerContext& context) {
+  if (DeadlinePassed(context)) {
+    return grpc::Status(grpc::StatusCode::DEADLINE_EXCEEDED,
+                        "deadline passed while locating the batch");
+  }
+  return grpc::Status(grpc::StatusCode::CANCELLED,
+                      "call cancelled while locating the batch");
+}
+
+}  // namespace
+
+// Everything the shards of one call share. The last shard to finish reads
+// the others' results, hence the acquire-release countdown.
+struct BatchLocator::Call {
+  grpc::CallbackServerContext* context = nullptr;
+  grpc::ServerUnaryReactor* reactor = nullptr;
+  const v1::LocateBatchRequest* request = nullptr;
+  v1::LocateBatchResponse* response = nullptr;
+  BatchColumns columns;
+  LocateBatchFn locate_batch;
+  std::function<bool()> keep_going;
+  std::atomic<size_t> shards_left{0};
+  std::atomic<uint64_t> total_cost{0};
+  std::mutex failure_mu;
+  Status failure;  // the first failing shard's status; guarded by failure_mu
+
+  void Fail(const Status& status) {
+    std::lock_guard<std::mutex> lock(failure_mu);
+    if (failure.ok()) failure = status;
+  }
+};
+
+BatchLocator::BatchLocator(size_t threads, size_t max_batch_points)
+    : max_batch_points_(max_batch_points),
+      pool_(threads > 1 ? threads - 1 : 0) {}
+
+Status BatchLocator::Validate(const v1::LocateBatchRequest& request) const {
+  const int xs = request.xs_size();
+  const int ys = request.ys_size();
+  if (xs != ys) {
+    std::ostringstream msg;
+    msg << "xs has " << xs << " values but ys has " << ys
+        << "; they must have the same length";
+    return Status::InvalidArgument(msg.str());
+  }
+  if (static_cast<size_t>(xs) > max_batch_points_) {
+    std::ostringstream msg;
+    msg << "batch of " << xs << " points exceeds this server's limit of "
+        << max_batch_points_ << " points per batch";
+    return Status::ResourceExhausted(msg.str());
+  }
+  // Checked here for the whole batch, not per block by the engine, so that
+  // the index in the message is the point's index in the request. Worded as
+  // the engine words it.
+  for (int i = 0; i < xs; ++i) {
+    const double x = request.xs(i);
+    const double y = request.ys(i);
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+      return Status::InvalidArgument(
+          "point " + std::to_string(i) + " has a non-finite coordinate (x=" +
+          std::to_string(x) + ", y=" + std::to_string(y) + ")");
+    }
+  }
+  return Status::OK();
+}
+
+size_t BatchLocator::ShardCount(size_t points) const {
+  const size_t threads = pool_.size() + 1;
+  return std::clamp<size_t>(points / kMinShardPoints, 1, threads);
+}
+
+grpc::ServerUnaryReactor* BatchLocator::Serve(
+    grpc::CallbackServerContext* context, const v1::LocateBatchRequest& request,
+    LocateBatchFn locate_batch, v1::LocateBatchResponse* response) {
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  if (Status invalid = Validate(request); !invalid.ok()) {
+    reactor->Finish(ToGrpcStatus(invalid));
+    return reactor;
+  }
+  const size_t points = static_cast<size_t>(request.xs_size());
+  const size_t shards = ShardCount(points);
+  auto call = std::make_shared<Call>();
+  call->context = context;
+  call->reactor = reactor;
+  call->request = &request;
+  call->response = response;
+  call->columns = SizeBatchColumns(request, points, response);
+  call->locate_batch = std::move(locate_batch);
+  call->keep_going = [context] { return ShouldKeepGoing(*context); };
+  call->shards_left.store(shards, std::memory_order_relaxed);
+
+  // Shard s covers [s * points / shards, (s + 1) * points / shards).
+  auto shard_begin = [&](size_t shard) { return shard * points / shards; };
+  for (size_t shard = 1; shard < shards; ++shard) {
+    pool_.Submit(
+        [call, begin = shard_begin(shard), end = shard_begin(shard + 1)] {
+          RunShard(call, begin, end);
+        });
+  }
+  RunShard(call, 0, shard_begin(1));
+  return reactor;
+}
+
+void BatchLocator::RunShard(const std::shared_ptr<Call>& call, size_t begin,
+                            size_t end) {
+  // Reused across calls on this thread: a block's worth, never a batch's.
+  thread_local std::vector<Point2> points;
+  thread_local std::vector<LocateResult> results;
+
+  const v1::LocateBatchRequest& request = *call->request;
+  uint64_t shard_cost = 0;
+  for (size_t block = begin; block < end; block += kBlockPoints) {
+    if (!call->keep_going()) {
+      call->Fail(Status::Unavailable("interrupted"));
+      break;
+    }
+    const size_t block_end = std::min(end, block + kBlockPoints);
+    points.clear();
+    for (size_t i = block; i < block_end; ++i) {
+      points.push_back(Point2{request.xs(static_cast<int>(i)),
+                              request.ys(static_cast<int>(i))});
+    }
+    Status status = call->locate_batch(points, &results, call->keep_going);
+    if (!status.ok()) {
+      call->Fail(status);
+      break;
+    }
+    shard_cost += WriteBatchAnswers(results, block, call->columns);
+  }
+  call->total_cost.fetch_add(shard_cost, std::memory_order_relaxed);
+  if (call->shards_left.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+    Complete(call.get());
+  }
+}
+
+void BatchLocator::Complete(Call* call) {
+  Status failure;
+  {
+    std::lock_guard<std::mutex> lock(call->failure_mu);
+    failure = call->failure;
+  }
+  if (failure.ok()) {
+    call->response->set_total_cost(
+        call->total_cost.load(std::memory_order_relaxed));
+    call->reactor->Finish(grpc::Status::OK);
+  } else if (!call->keep_going()) {
+    // Whatever failed, the client has gone or stopped waiting.
+    call->reactor->Finish(InterruptedStatus(*call->context));
+  } else {
+    call->reactor->Finish(ToGrpcStatus(failure));
+  }
+}
+
+}  // namespace locator

@@ -1,0 +1,76 @@
+// BatchLocator: runs one columnar LocateBatch request across the calling
+// thread and a small worker pool, and fills the response's columns.
+//
+// A batch of n points is cut into min(threads, n / kMinShardPoints) contiguous
+// shards (at least one). Shard 0 runs on the calling thread (the gRPC callback
+// thread), the others on the pool; whichever shard finishes last finishes the
+// RPC, so no thread ever waits for another. Each shard locates its points in
+// blocks of kBlockPoints, so its buffers stay small and cache-resident however
+// large the batch, and checks between blocks whether to keep going.
+//
+// Owns the pool (threads - 1 workers). Thread-safety: Serve() may be called
+// from any number of threads at once.
+
+#ifndef LOCATOR_SERVER_BATCH_LOCATOR_H_
+#define LOCATOR_SERVER_BATCH_LOCATOR_H_
+
+#include <grpcpp/grpcpp.h>
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "locator/v1/locator.pb.h"
+#include "server/core/geometry.h"
+#include "server/core/locate_result.h"
+#include "server/core/status.h"
+#include "server/worker_pool.h"
+
+namespace locator {
+
+class BatchLocator {
+ public:
+  static constexpr size_t kMinShardPoints = 4096;
+  static constexpr size_t kBlockPoints = 4096;
+
+  // Locates `points` into `results` (resized), polling `keep_going` between
+  // chunks: Engine::LocateBatch, or the no-op server's canned answers.
+  using LocateBatchFn = std::function<Status(
+      std::span<const Point2> points, std::vector<LocateResult>* results,
+      const std::function<bool()>& keep_going)>;
+
+  // Splits large batches across `threads` threads (the caller plus
+  // threads - 1 pool workers) and rejects batches above `max_batch_points`.
+  BatchLocator(size_t threads, size_t max_batch_points);
+
+  BatchLocator(const BatchLocator&) = delete;
+  BatchLocator& operator=(const BatchLocator&) = delete;
+
+  // Serves one LocateBatch call: validates `request` (xs/ys lengths, the
+  // point limit, finite coordinates), locates its points with `locate_batch`
+  // into `response` while the call is neither cancelled nor past its
+  // deadline, and finishes the returned reactor with the outcome (CANCELLED
+  // or DEADLINE_EXCEEDED when interrupted).
+  grpc::ServerUnaryReactor* Serve(grpc::CallbackServerContext* context,
+                                  const v1::LocateBatchRequest& request,
+                                  LocateBatchFn locate_batch,
+                                  v1::LocateBatchResponse* response);
+
+ private:
+  struct Call;
+
+  Status Validate(const v1::LocateBatchRequest& request) const;
+  size_t ShardCount(size_t points) const;
+  static void RunShard(const std::shared_ptr<Call>& call, size_t begin,
+                       size_t end);
+  static void Complete(Call* call);
+
+  const size_t max_batch_points_;
+  WorkerPool pool_;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_BATCH_LOCATOR_H_

@@ -1,0 +1,174 @@
+#include "server/proto_convert.h"
+
+#include <limits>
+
+namespace locator {
+namespace {
+
+v1::LocationType ToProtoLocationType(LocationType type) {
+  switch (type) {
+    case LocationType::kFace:
+      return v1::LOCATION_TYPE_FACE;
+    case LocationType::kEdge:
+      return v1::LOCATION_TYPE_EDGE;
+    case LocationType::kVertex:
+      return v1::LOCATION_TYPE_VERTEX;
+    case LocationType::kOutsideConvexHull:
+      return v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL;
+  }
+  return v1::LOCATION_TYPE_UNSPECIFIED;
+}
+
+bool IsInsideHull(const LocateResult& result) {
+  return result.type != LocationType::kOutsideConvexHull;
+}
+
+void ToProtoPoint(const Point2& point, v1::Point* out) {
+  out->set_x(point.x);
+  out->set_y(point.y);
+}
+
+void ToProtoBox(const BoundingBox& box, v1::BoundingBox* out) {
+  out->set_min_x(box.min_x);
+  out->set_min_y(box.min_y);
+  out->set_max_x(box.max_x);
+  out->set_max_y(box.max_y);
+}
+
+// Packed columns are sized once and then written through raw pointers, so
+// filling a batch allocates nothing per point.
+template <typename T>
+T* ResizedColumn(google::protobuf::RepeatedField<T>* column, size_t size) {
+  column->Resize(static_cast<int>(size), T());
+  return column->mutable_data();
+}
+
+}  // namespace
+
+void ToLocateResponse(const LocateResult& result,
+                      v1::LocateResponse* response) {
+  response->set_type(ToProtoLocationType(result.type));
+  response->set_triangle_id(result.triangle_id);
+  response->mutable_vertex_ids()->Reserve(3);
+  response->mutable_vertices()->Reserve(3);
+  for (int corner = 0; corner < 3; ++corner) {
+    response->add_vertex_ids(result.vertex_ids[corner]);
+    ToProtoPoint(result.vertices[corner], response->add_vertices());
+  }
+  if (IsInsideHull(result)) {
+    response->mutable_barycentric()->Add(result.barycentric.begin(),
+                                         result.barycentric.end());
+  } else {
+    response->mutable_hull_edge_vertex_ids()->Add(result.hull_edge_ids.begin(),
+                                                  result.hull_edge_ids.end());
+  }
+  if (result.has_value) response->set_value(result.value);
+  v1::Cost* cost = response->mutable_cost();
+  cost->set_faces_visited(result.cost.faces_visited);
+  cost->set_comparisons(result.cost.comparisons);
+  cost->set_table_lookups(result.cost.table_lookups);
+  cost->set_total(result.cost.total());
+}
+
+BatchColumns SizeBatchColumns(const v1::LocateBatchRequest& request,
+                              size_t points,
+                              v1::LocateBatchResponse* response) {
+  BatchColumns columns;
+  columns.types = ResizedColumn(response->mutable_types(), points);
+  columns.triangle_ids =
+      ResizedColumn(response->mutable_triangle_ids(), points);
+  columns.costs = ResizedColumn(response->mutable_costs(), points);
+  if (request.include_vertex_ids()) {
+    columns.vertex_ids =
+        ResizedColumn(response->mutable_vertex_ids(), 3 * points);
+  }
+  if (request.include_barycentric()) {
+    columns.barycentric =
+        ResizedColumn(response->mutable_barycentric(), 3 * points);
+  }
+  if (request.include_values()) {
+    columns.values = ResizedColumn(response->mutable_values(), points);
+  }
+  return columns;
+}
+
+uint64_t WriteBatchAnswers(std::span<const LocateResult> results, size_t offset,
+                           const BatchColumns& columns) {
+  constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+  uint64_t cost_sum = 0;
+  for (size_t i = 0; i < results.size(); ++i) {
+    const LocateResult& result = results[i];
+    const size_t row = offset + i;
+    const uint32_t cost = result.cost.total();
+    columns.types[row] = ToProtoLocationType(result.type);
+    columns.triangle_ids[row] = result.triangle_id;
+    columns.costs[row] = cost;
+    cost_sum += cost;
+    const bool inside = IsInsideHull(result);
+    for (int corner = 0; corner < 3; ++corner) {
+      if (columns.vertex_ids != nullptr) {
+        columns.vertex_ids[3 * row + corner] = result.vertex_ids[corner];
+      }
+      if (columns.barycentric != nullptr) {
+        columns.barycentric[3 * row + corner] =
+            inside ? result.barycentric[corner] : 0.0;
+      }
+    }
+    if (columns.values != nullptr) {
+      columns.values[row] = result.has_value ? result.value : kNoValue;
+    }
+  }
+  return cost_sum;
+}
+
+void ToTuningStats(const TuningSummary& summary, bool include_histogram,
+                   v1::TuningStats* tuning) {
+  tuning->set_snapshot_version(summary.snapshot_version);
+  tuning->set_retune_count(summary.retune_count);
+  tuning->set_grid_size(static_cast<uint32_t>(summary.grid_size));
+  // A strategy without a histogram has no grid box either (it would be the
+  // empty box, all infinities).
+  if (summary.grid_size > 0)
+    ToProtoBox(summary.grid_box, tuning->mutable_grid_box());
+  if (include_histogram) {
+    tuning->mutable_histogram()->Add(summary.histogram.begin(),
+                                     summary.histogram.end());
+  }
+  for (const BoundingBox& region : summary.hot_regions) {
+    ToProtoBox(region, tuning->add_hot_regions());
+  }
+  tuning->mutable_start_points()->Reserve(
+      static_cast<int>(summary.start_points.size()));
+  for (const Point2& start : summary.start_points) {
+    ToProtoPoint(start, tuning->add_start_points());
+  }
+  tuning->set_start_point_count(summary.start_point_count);
+}
+
+void ToGetStatsResponse(const EngineStats& stats,
+                        v1::GetStatsResponse* response) {
+  const DatasetInfo& info = stats.dataset;
+  v1::DatasetStats* dataset = response->mutable_dataset();
+  dataset->set_source(info.source);
+  dataset->set_input_points(info.input_points);
+  dataset->set_vertices(info.vertices);
+  dataset->set_duplicates_merged(info.duplicates_merged);
+  dataset->set_triangles(info.triangles);
+  ToProtoBox(info.bounding_box, dataset->mutable_bounding_box());
+  dataset->set_has_values(info.has_values);
+  dataset->set_build_seconds(info.build_seconds);
+
+  response->set_strategy(stats.strategy);
+  response->set_queries_served(stats.queries);
+  response->set_mean_cost_lifetime(stats.mean_cost_lifetime);
+  response->set_mean_cost_recent(stats.mean_cost_recent);
+  response->set_recent_window(Engine::kStatsWindow);
+  ToTuningStats(stats.tuning, /*include_histogram=*/true,
+                response->mutable_tuning());
+
+  v1::MemoryStats* memory = response->mutable_memory();
+  memory->set_triangulation_bytes(info.triangulation_bytes);
+  memory->set_tuning_bytes(stats.tuning.memory_bytes);
+}
+
+}  // namespace locator

@@ -1,0 +1,59 @@
+// Conversions from the core's plain result and statistics types to the
+// locator.v1 messages. The service and the no-op server answer through these
+// functions only, so both put the same fields on the wire.
+//
+// Thread-safety: free functions. WriteBatchAnswers may run concurrently on
+// disjoint slices of the same columns.
+
+#ifndef LOCATOR_SERVER_PROTO_CONVERT_H_
+#define LOCATOR_SERVER_PROTO_CONVERT_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "locator/v1/locator.pb.h"
+#include "server/core/engine.h"
+#include "server/core/locate_result.h"
+#include "server/core/point_locator.h"
+
+namespace locator {
+
+// Fills `response` with every field of `result`, as locator.proto documents
+// them (barycentric empty and hull_edge_vertex_ids set outside the hull; value
+// only when the result has one).
+void ToLocateResponse(const LocateResult& result, v1::LocateResponse* response);
+
+// The columns of a LocateBatchResponse, sized for a whole batch, as raw
+// arrays so that several threads can each fill their own slice.
+struct BatchColumns {
+  int* types = nullptr;
+  int64_t* triangle_ids = nullptr;
+  uint32_t* costs = nullptr;
+  // The optional columns are null unless the request asked for them.
+  int64_t* vertex_ids = nullptr;
+  double* barycentric = nullptr;
+  double* values = nullptr;
+};
+
+// Sizes `response`'s columns for `points` answers, including the optional
+// columns `request` asks for, and returns them.
+BatchColumns SizeBatchColumns(const v1::LocateBatchRequest& request,
+                              size_t points, v1::LocateBatchResponse* response);
+
+// Writes `results` as answers [offset, offset + results.size()) of `columns`;
+// returns the sum of their costs.
+uint64_t WriteBatchAnswers(std::span<const LocateResult> results, size_t offset,
+                           const BatchColumns& columns);
+
+// Fills `tuning` from `summary`; the histogram only if `include_histogram`.
+void ToTuningStats(const TuningSummary& summary, bool include_histogram,
+                   v1::TuningStats* tuning);
+
+// Fills `response` with everything GetStats reports.
+void ToGetStatsResponse(const EngineStats& stats,
+                        v1::GetStatsResponse* response);
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_PROTO_CONVERT_H_

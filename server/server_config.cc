@@ -1,0 +1,315 @@
+#include "server/server_config.h"
+
+#include <algorithm>
+#include <array>
+#include <boost/program_options.hpp>
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+#include "server/core/byte_size.h"
+
+namespace locator {
+namespace {
+
+namespace po = boost::program_options;
+
+// Flag values as typed. Everything is read as text and validated here, not
+// by Boost: its lexical_cast would accept "-1" for an unsigned flag.
+struct ServingFlags {
+  std::string listen;
+  std::string max_message_bytes;
+  std::string threads;
+  std::string max_batch_points;
+};
+
+struct EngineFlags {
+  std::string strategy;
+  std::string grid;
+  std::string warmup;
+  std::string retune_every;
+  std::string budget;
+  std::string stats_interval_s;
+  std::string retune_interval_s;
+};
+
+Status FlagError(std::string_view flag, std::string_view text,
+                 std::string_view problem) {
+  std::ostringstream msg;
+  msg << "--" << flag << " '" << text << "': " << problem;
+  return Status::InvalidArgument(msg.str());
+}
+
+Status ParseCount(std::string_view flag, std::string_view text, uint64_t min,
+                  uint64_t max, uint64_t* out) {
+  uint64_t value = 0;
+  const auto [end, error] =
+      std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() ||
+      text.empty()) {
+    return FlagError(flag, text, "not a whole number");
+  }
+  if (value < min || value > max) {
+    std::ostringstream range;
+    range << "must be between " << min << " and " << max;
+    return FlagError(flag, text, range.str());
+  }
+  *out = value;
+  return Status::OK();
+}
+
+template <typename T>
+Status ParseCountAs(std::string_view flag, std::string_view text, uint64_t min,
+                    uint64_t max, T* out) {
+  uint64_t value = 0;
+  Status status = ParseCount(flag, text, min, max, &value);
+  if (status.ok()) *out = static_cast<T>(value);
+  return status;
+}
+
+Status ParseSeconds(std::string_view flag, std::string_view text, double* out) {
+  double value = 0;
+  const auto [end, error] =
+      std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() ||
+      !std::isfinite(value) || value < 0) {
+    return FlagError(flag, text, "not a number of seconds >= 0");
+  }
+  *out = value;
+  return Status::OK();
+}
+
+Status ParseByteFlag(std::string_view flag, std::string_view text, uint64_t min,
+                     uint64_t max, size_t* out) {
+  size_t bytes = 0;
+  if (Status status = ParseByteSize(text, &bytes); !status.ok()) {
+    // The message already quotes the text.
+    return Status::InvalidArgument("--" + std::string(flag) + ": " +
+                                   status.message());
+  }
+  if (bytes < min || bytes > max) {
+    std::ostringstream range;
+    range << "must be between " << min << " and " << max << " bytes";
+    return FlagError(flag, text, range.str());
+  }
+  *out = bytes;
+  return Status::OK();
+}
+
+void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
+                     po::options_description* description) {
+  description->add_options()(
+      "listen",
+      po::value(&flags->listen)->default_value(defaults.ListenAddress()),
+      "HOST:PORT to serve on; port 0 lets the OS pick (the chosen port is "
+      "printed)")(
+      "max-message-bytes",
+      po::value(&flags->max_message_bytes)
+          ->default_value(std::to_string(defaults.max_message_bytes >> 20) +
+                          "MiB"),
+      "gRPC message size limit (bytes; B, KiB, MiB, GiB suffix)")(
+      "threads",
+      po::value(&flags->threads)
+          ->default_value(std::to_string(defaults.threads)),
+      "threads that locate one large batch together")(
+      "max-batch-points",
+      po::value(&flags->max_batch_points)
+          ->default_value(std::to_string(defaults.max_batch_points)),
+      "larger LocateBatch requests fail with RESOURCE_EXHAUSTED");
+}
+
+Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
+  if (Status status = ParseListenAddress(flags.listen, &config->listen_host,
+                                         &config->listen_port);
+      !status.ok()) {
+    return FlagError("listen", flags.listen, status.message());
+  }
+  // gRPC takes the limit as an int.
+  if (Status status = ParseByteFlag(
+          "max-message-bytes", flags.max_message_bytes, 4096,
+          std::numeric_limits<int>::max(), &config->max_message_bytes);
+      !status.ok()) {
+    return status;
+  }
+  if (Status status =
+          ParseCountAs("threads", flags.threads, 1, 256, &config->threads);
+      !status.ok()) {
+    return status;
+  }
+  // A protobuf repeated field holds at most INT_MAX elements.
+  return ParseCountAs("max-batch-points", flags.max_batch_points, 1,
+                      std::numeric_limits<int>::max(),
+                      &config->max_batch_points);
+}
+
+void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
+                    po::options_description* description) {
+  const TuningOptions& tuning = defaults.engine.tuning;
+  description->add_options()(
+      "strategy",
+      po::value(&flags->strategy)->default_value(defaults.engine.strategy),
+      "walk | jump-and-walk | adaptive-paper | self-tuning")(
+      "grid",
+      po::value(&flags->grid)->default_value(std::to_string(tuning.grid_size)),
+      "query histogram cells per side")(
+      "warmup",
+      po::value(&flags->warmup)
+          ->default_value(std::to_string(tuning.warmup_queries)),
+      "adaptive-paper: queries counted before the hot regions are chosen")(
+      "retune-every",
+      po::value(&flags->retune_every)
+          ->default_value(std::to_string(tuning.retune_every)),
+      "self-tuning: re-tune after this many queries")(
+      "budget",
+      po::value(&flags->budget)
+          ->default_value(std::to_string(tuning.budget_bytes)),
+      "self-tuning: start table memory budget (bytes; B, KiB, MiB, GiB "
+      "suffix); 0 = 3% of the triangulation")(
+      "stats-interval-s",
+      po::value(&flags->stats_interval_s)->default_value("0"),
+      "log a stats line this often; 0 = never")(
+      "retune-interval-s",
+      po::value(&flags->retune_interval_s)->default_value("0"),
+      "also re-tune this often; 0 = only by query count");
+}
+
+Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
+  if (Status s = ValidateStrategy(flags.strategy); !s.ok()) {
+    return FlagError("strategy", flags.strategy, s.message());
+  }
+  EngineOptions& engine = config->engine;
+  engine.strategy = flags.strategy;
+  engine.tuning.background = true;
+  Status status = ParseCountAs("grid", flags.grid, 1, kMaxGridSize,
+                               &engine.tuning.grid_size);
+  if (status.ok()) {
+    status = ParseCountAs("warmup", flags.warmup, 1,
+                          std::numeric_limits<int64_t>::max(),
+                          &engine.tuning.warmup_queries);
+  }
+  if (status.ok()) {
+    status = ParseCountAs("retune-every", flags.retune_every, 1,
+                          std::numeric_limits<int64_t>::max(),
+                          &engine.tuning.retune_every);
+  }
+  if (status.ok()) {
+    status = ParseByteFlag("budget", flags.budget, 0,
+                           std::numeric_limits<int64_t>::max(),
+                           &engine.tuning.budget_bytes);
+  }
+  if (status.ok()) {
+    status = ParseSeconds("stats-interval-s", flags.stats_interval_s,
+                          &config->stats_interval_s);
+  }
+  if (status.ok()) {
+    status = ParseSeconds("retune-interval-s", flags.retune_interval_s,
+                          &config->retune_interval_s);
+  }
+  return status;
+}
+
+// Runs Boost over `description` (plus --help); fills `help` if asked for.
+Status ParseCommandLine(int argc, const char* const argv[],
+                        std::string_view program,
+                        po::options_description description,
+                        std::string* help) {
+  help->clear();
+  description.add_options()("help", "print this help and exit");
+  po::variables_map values;
+  try {
+    // An empty positional description makes stray arguments an error
+    // instead of silently ignored.
+    po::store(po::command_line_parser(argc, argv)
+                  .options(description)
+                  .positional(po::positional_options_description())
+                  .run(),
+              values);
+    po::notify(values);
+  } catch (const po::error& error) {
+    return Status::InvalidArgument(error.what());
+  }
+  if (values.count("help") > 0) {
+    std::ostringstream text;
+    text << "Usage: " << program << " [flags]\n\n" << description << "\n";
+    *help = text.str();
+  }
+  return Status::OK();
+}
+
+}  // namespace
+
+std::string ServingConfig::ListenAddress() const {
+  return listen_host + ":" + std::to_string(listen_port);
+}
+
+std::optional<int> ExitCodeForFlags(std::string_view program,
+                                    const Status& parsed,
+                                    const std::string& help) {
+  if (!parsed.ok()) {
+    std::cerr << program << ": " << parsed.message() << "\n(see " << program
+              << " --help)" << std::endl;
+    return 2;
+  }
+  if (!help.empty()) {
+    std::cout << help;
+    return 0;
+  }
+  return std::nullopt;
+}
+
+Status ParseListenAddress(std::string_view text, std::string* host, int* port) {
+  const size_t colon = text.rfind(':');
+  if (colon == std::string_view::npos || colon == 0) {
+    return Status::InvalidArgument("expected HOST:PORT");
+  }
+  const std::string_view port_text = text.substr(colon + 1);
+  int value = 0;
+  const auto [end, error] = std::from_chars(
+      port_text.data(), port_text.data() + port_text.size(), value);
+  if (port_text.empty() || error != std::errc() ||
+      end != port_text.data() + port_text.size() || value < 0 ||
+      value > 65535) {
+    return Status::InvalidArgument("the port must be a number in 0..65535");
+  }
+  *host = std::string(text.substr(0, colon));
+  *port = value;
+  return Status::OK();
+}
+
+Status ParseServerConfig(int argc, const char* const argv[],
+                         ServerConfig* config, std::string* help) {
+  const ServerConfig defaults;
+  std::string dataset;
+  ServingFlags serving;
+  EngineFlags engine;
+  po::options_description description("locatord flags");
+  description.add_options()(
+      "dataset", po::value(&dataset)->default_value(defaults.dataset),
+      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED]");
+  AddServingFlags(defaults.serving, &serving, &description);
+  AddEngineFlags(defaults, &engine, &description);
+
+  Status status = ParseCommandLine(argc, argv, "locatord", description, help);
+  if (!status.ok() || !help->empty()) return status;
+  if (dataset.empty())
+    return FlagError("dataset", dataset, "must not be empty");
+  config->dataset = dataset;
+  status = ReadServingFlags(serving, &config->serving);
+  if (!status.ok()) return status;
+  return ReadEngineFlags(engine, config);
+}
+
+Status ParseNoopServerConfig(int argc, const char* const argv[],
+                             ServingConfig* config, std::string* help) {
+  ServingFlags serving;
+  po::options_description description("locator-noop-server flags");
+  AddServingFlags(ServingConfig(), &serving, &description);
+  Status status =
+      ParseCommandLine(argc, argv, "locator-noop-server", description, help);
+  if (!status.ok() || !help->empty()) return status;
+  return ReadServingFlags(serving, config);
+}
+
+}  // namespace locator

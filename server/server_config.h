@@ -1,0 +1,74 @@
+// Command-line configuration of locatord and locator-noop-server, parsed with
+// Boost.Program_options. Every flag value is validated here, so a bad value
+// fails at startup with a message naming the flag (the binaries then exit 2).
+//
+// Thread-safety: free functions over plain values.
+
+#ifndef LOCATOR_SERVER_SERVER_CONFIG_H_
+#define LOCATOR_SERVER_SERVER_CONFIG_H_
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <thread>
+
+#include "server/core/engine.h"
+#include "server/core/status.h"
+
+namespace locator {
+
+// Flags both binaries share: where and how the gRPC server serves.
+struct ServingConfig {
+  // --listen HOST:PORT; port 0 lets the OS pick one.
+  std::string listen_host = "127.0.0.1";
+  int listen_port = 50051;
+  // --max-message-bytes: the gRPC send and receive limit.
+  size_t max_message_bytes = size_t{64} << 20;
+  // --threads: threads that locate one large batch together.
+  size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  // --max-batch-points: larger LocateBatch requests get RESOURCE_EXHAUSTED.
+  size_t max_batch_points = 1'000'000;
+
+  // "HOST:PORT" as given to --listen.
+  std::string ListenAddress() const;
+};
+
+// locatord's flags.
+struct ServerConfig {
+  ServingConfig serving;
+  // --dataset: a file path or generator spec (see LoadDataset).
+  std::string dataset = "uniform:1000000:1";
+  // --strategy, --grid, --warmup, --retune-every, --budget; the server always
+  // re-tunes in the background.
+  EngineOptions engine;
+  // --stats-interval-s: period of the stats log line; 0 = off.
+  double stats_interval_s = 0;
+  // --retune-interval-s: period of time-based re-tunes; 0 = off.
+  double retune_interval_s = 0;
+};
+
+// Parses locatord's command line into `config`. With --help, sets `help` to
+// the usage text instead. InvalidArgument naming the flag otherwise.
+Status ParseServerConfig(int argc, const char* const argv[],
+                         ServerConfig* config, std::string* help);
+
+// The same for locator-noop-server, which takes the serving flags only.
+Status ParseNoopServerConfig(int argc, const char* const argv[],
+                             ServingConfig* config, std::string* help);
+
+// What main() does with a parse's outcome: prints the error and returns 2,
+// prints the help and returns 0, or returns nullopt when the program should
+// run.
+std::optional<int> ExitCodeForFlags(std::string_view program,
+                                    const Status& parsed,
+                                    const std::string& help);
+
+// Parses "HOST:PORT" (the port after the last ':', 0..65535).
+Status ParseListenAddress(std::string_view text, std::string* host, int* port);
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_SERVER_CONFIG_H_

@@ -1,0 +1,98 @@
+#include "server/server_runner.h"
+
+#include <grpcpp/ext/proto_server_reflection_plugin.h>
+#include <grpcpp/health_check_service_interface.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <utility>
+
+#include "locator/v1/locator.grpc.pb.h"
+
+namespace locator {
+
+ServerRunner::ServerRunner(std::string_view program)
+    : program_(program), signals_(io_context_, SIGINT, SIGTERM) {}
+
+std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
+    std::string_view program, const ServingConfig& config,
+    const std::vector<grpc::Service*>& services) {
+  // The signal handlers are installed (by the constructor) before the
+  // listening line goes out: whoever reads that line may signal at once.
+  std::unique_ptr<ServerRunner> created(new ServerRunner(program));
+
+  grpc::EnableDefaultHealthCheckService(true);
+  grpc::reflection::InitProtoReflectionServerBuilderPlugin();
+  grpc::ServerBuilder builder;
+  int port = 0;
+  builder.AddListeningPort(config.ListenAddress(),
+                           grpc::InsecureServerCredentials(), &port);
+  builder.SetMaxReceiveMessageSize(static_cast<int>(config.max_message_bytes));
+  builder.SetMaxSendMessageSize(static_cast<int>(config.max_message_bytes));
+  for (grpc::Service* service : services) builder.RegisterService(service);
+  created->server_ = builder.BuildAndStart();
+  if (created->server_ == nullptr || port == 0) {
+    std::cerr << program << ": cannot listen on " << config.ListenAddress()
+              << std::endl;
+    std::exit(1);
+  }
+  created->SetServing(false);
+  std::cout << program << " listening on " << config.listen_host << ":" << port
+            << std::endl;
+  return created;
+}
+
+void ServerRunner::SetServing(bool serving) {
+  grpc::HealthCheckServiceInterface* health = server_->GetHealthCheckService();
+  health->SetServingStatus("", serving);
+  health->SetServingStatus(v1::Locator::service_full_name(), serving);
+}
+
+void ServerRunner::RunEvery(double seconds, std::function<void()> tick) {
+  const auto period =
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(seconds));
+  ScheduleTick(&timers_.emplace_back(io_context_), period, std::move(tick));
+}
+
+void ServerRunner::ScheduleTick(boost::asio::steady_timer* timer,
+                                std::chrono::steady_clock::duration period,
+                                std::function<void()> tick) {
+  timer->expires_after(period);
+  timer->async_wait([this, timer, period, tick = std::move(tick)](
+                        const boost::system::error_code& error) mutable {
+    if (error) return;  // cancelled: the loop is stopping
+    tick();
+    ScheduleTick(timer, period, std::move(tick));
+  });
+}
+
+void ServerRunner::Stop(int exit_code) {
+  exit_code_ = exit_code;
+  SetServing(false);
+  // Blocks the loop until the in-flight calls are done (or cut off at the
+  // deadline); nothing else is left for the loop to do by then.
+  server_->Shutdown(std::chrono::system_clock::now() + kDrainDeadline);
+  io_context_.stop();
+}
+
+void ServerRunner::RunAndExit() {
+  signals_.async_wait(
+      [this](const boost::system::error_code& error, int signal_number) {
+        if (error) return;
+        std::cerr << program_ << " received signal " << signal_number
+                  << ", draining in-flight calls" << std::endl;
+        Stop(0);
+      });
+  io_context_.run();
+  // Every call has been answered and the server is shut down; what is left
+  // holds no state worth saving. Tearing it down would cost time: gRPC's
+  // global shutdown can idle for up to 10 s on an executor thread's poll,
+  // and a triangulation build cannot be interrupted.
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(exit_code_);
+}
+
+}  // namespace locator

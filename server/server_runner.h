@@ -1,0 +1,85 @@
+// ServerRunner: a started gRPC server plus the Boost.Asio loop that runs the
+// process around it (signals, periodic work, shutdown).
+//
+// StartOrExit() builds the server with the default health service and
+// reflection, marks it NOT_SERVING, starts it and prints "<program>
+// listening on HOST:PORT" (the port actually bound) on stdout. RunAndExit()
+// then drives the loop on the calling thread until SIGINT or SIGTERM, or
+// until Stop(): the server goes NOT_SERVING, new calls are refused,
+// in-flight calls get kDrainDeadline to complete, and the process exits with
+// the exit code.
+//
+// Owns the server, the io_context, its signal set and timers. Thread-safety:
+// SetServing() may be called from any thread; RunEvery() and Stop() only on
+// the loop thread (post to io_context() from elsewhere); the rest from the
+// thread that called StartOrExit().
+
+#ifndef LOCATOR_SERVER_SERVER_RUNNER_H_
+#define LOCATOR_SERVER_SERVER_RUNNER_H_
+
+#include <grpcpp/grpcpp.h>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <chrono>
+#include <functional>
+#include <list>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "server/server_config.h"
+
+namespace locator {
+
+class ServerRunner {
+ public:
+  static constexpr std::chrono::seconds kDrainDeadline{10};
+
+  // Starts `services` on config's address as described above. If the
+  // address cannot be bound, says so on stderr and exits with code 1.
+  static std::unique_ptr<ServerRunner> StartOrExit(
+      std::string_view program, const ServingConfig& config,
+      const std::vector<grpc::Service*>& services);
+
+  ServerRunner(const ServerRunner&) = delete;
+  ServerRunner& operator=(const ServerRunner&) = delete;
+
+  boost::asio::io_context& io_context() { return io_context_; }
+
+  // Reports SERVING or NOT_SERVING for the whole server ("") and for
+  // locator.v1.Locator.
+  void SetServing(bool serving);
+
+  // Calls `tick` on the loop thread every `seconds` until the loop stops.
+  void RunEvery(double seconds, std::function<void()> tick);
+
+  // Shuts the server down (draining in-flight calls) and makes RunAndExit()
+  // exit with `exit_code`.
+  void Stop(int exit_code);
+
+  // Runs the loop until a signal (exit code 0) or Stop(), then ends the
+  // process at once: objects still alive, including threads other code
+  // started, are not torn down.
+  [[noreturn]] void RunAndExit();
+
+ private:
+  explicit ServerRunner(std::string_view program);
+
+  void ScheduleTick(boost::asio::steady_timer* timer,
+                    std::chrono::steady_clock::duration period,
+                    std::function<void()> tick);
+
+  const std::string program_;
+  boost::asio::io_context io_context_;
+  boost::asio::signal_set signals_;
+  std::list<boost::asio::steady_timer> timers_;  // stable addresses
+  std::unique_ptr<grpc::Server> server_;
+  int exit_code_ = 0;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_SERVER_RUNNER_H_

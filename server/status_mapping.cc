@@ -1,0 +1,39 @@
+#include "server/status_mapping.h"
+
+namespace locator {
+namespace {
+
+grpc::StatusCode ToGrpcCode(Status::Code code) {
+  switch (code) {
+    case Status::Code::kOk:
+      return grpc::StatusCode::OK;
+    case Status::Code::kInvalidArgument:
+      return grpc::StatusCode::INVALID_ARGUMENT;
+    case Status::Code::kNotFound:
+      return grpc::StatusCode::NOT_FOUND;
+    case Status::Code::kFailedPrecondition:
+      return grpc::StatusCode::FAILED_PRECONDITION;
+    case Status::Code::kResourceExhausted:
+      return grpc::StatusCode::RESOURCE_EXHAUSTED;
+    case Status::Code::kUnavailable:
+      return grpc::StatusCode::UNAVAILABLE;
+    case Status::Code::kInternal:
+      return grpc::StatusCode::INTERNAL;
+    case Status::Code::kIOError:
+      // The only I/O the core does is reading the dataset at startup. If it
+      // ever failed while serving, that is the server's own failure, and
+      // retrying against the same server would not help: UNAVAILABLE would
+      // invite exactly that retry, so report INTERNAL.
+      return grpc::StatusCode::INTERNAL;
+  }
+  return grpc::StatusCode::UNKNOWN;
+}
+
+}  // namespace
+
+grpc::Status ToGrpcStatus(const Status& status) {
+  if (status.ok()) return grpc::Status::OK;
+  return grpc::Status(ToGrpcCode(status.code()), status.message());
+}
+
+}  // namespace locator

@@ -1,0 +1,109 @@
+// Shared pieces of the locatord end-to-end tests: the dataset file they
+// serve, the query points they send, the in-process CGAL reference, and the
+// conversion of answers received over the wire back into LocateResults.
+//
+// The dataset mixes an exact integer grid (so that vertices and edge
+// midpoints are exactly representable queries), an exactly collinear run,
+// a jittered grid and repeated points; every point carries the value
+// z = 2x + 3y + 1, so interpolated values are checkable anywhere in the hull.
+//
+// Thread-safety: Reference is immutable after Build(); its const methods may
+// be called from any number of threads.
+
+#ifndef LOCATOR_TESTS_SERVER_E2E_SUPPORT_H_
+#define LOCATOR_TESTS_SERVER_E2E_SUPPORT_H_
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "locator/v1/locator.grpc.pb.h"
+#include "server/core/dataset.h"
+#include "server/core/geometry.h"
+#include "server/core/locate_result.h"
+#include "server/core/triangulation.h"
+#include "tests/testing/server_process.h"
+
+namespace locator::e2e {
+
+// The value every dataset point carries, hence the exact interpolant.
+inline double TestValue(const Point2& p) { return 2 * p.x + 3 * p.y + 1; }
+
+// The dataset described above, written as CSV to a fresh file in the test
+// temp dir, which is removed again on destruction.
+class TestDatasetFile {
+ public:
+  TestDatasetFile();
+  ~TestDatasetFile();
+  TestDatasetFile(const TestDatasetFile&) = delete;
+  TestDatasetFile& operator=(const TestDatasetFile&) = delete;
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// >= 10^4 queries: uniform points in and around the hull, every kind of
+// vertex, edge midpoints, points beyond the hull (some collinear with hull
+// edges) and points 1e300 away.
+std::vector<Point2> TestQueries();
+
+// Starts the locatord under test on 127.0.0.1:0 serving `dataset`, with
+// `flags` added; waits until it is SERVING.
+Status StartLocatord(const std::string& dataset,
+                     const std::vector<std::string>& flags,
+                     std::unique_ptr<testing::ServerProcess>* server);
+std::unique_ptr<v1::Locator::Stub> NewStub(
+    const testing::ServerProcess& server);
+
+// `q` as a Locate or LocateStream request.
+v1::LocateRequest LocateRequestFor(const Point2& q);
+// Calls Locate for `q`.
+grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
+                       v1::LocateResponse* response);
+// Calls GetStats; a failed call is a test failure (and an empty answer).
+v1::GetStatsResponse GetStats(v1::Locator::Stub& stub);
+
+// An answer that came over the wire, as the core would have returned it.
+LocateResult FromLocateResponse(const v1::LocateResponse& response);
+// Row `row` of a batch answer sent with include_vertex_ids (and optionally
+// the other columns). hull_edge_ids are not part of a batch answer.
+LocateResult FromBatchRow(const v1::LocateBatchResponse& response, size_t row);
+// Packs `points` into a columnar request with every optional column on.
+v1::LocateBatchRequest BatchRequestFor(std::span<const Point2> points);
+
+// CGAL's own answers for the same dataset file, built in-process.
+class Reference {
+ public:
+  static Status Build(const std::string& dataset_path,
+                      std::unique_ptr<Reference>* reference);
+
+  const Dataset& dataset() const { return dataset_; }
+  const Triangulation& triangulation() const { return *triangulation_; }
+  LocateResult Locate(const Point2& q) const {
+    return triangulation_->ReferenceLocate(q);
+  }
+
+  // Checks answers[i] for queries[i]: same type, Triangulation::Agrees, the
+  // same triangle id for FACE, and (inside the hull) barycentric weights and
+  // values consistent with the dataset. A batch answer has no hull edge; for
+  // it (`hull_edge_known` false) some edge of the reported hull triangle
+  // must see q. Returns the first few disagreements, "" if there are none.
+  std::string Disagreements(std::span<const Point2> queries,
+                            std::span<const LocateResult> answers,
+                            bool hull_edge_known) const;
+
+ private:
+  std::string Disagreement(const Point2& q, const LocateResult& got,
+                           bool hull_edge_known) const;
+
+  Dataset dataset_;
+  std::unique_ptr<Triangulation> triangulation_;
+};
+
+}  // namespace locator::e2e
+
+#endif  // LOCATOR_TESTS_SERVER_E2E_SUPPORT_H_

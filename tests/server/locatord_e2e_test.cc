@@ -1,0 +1,339 @@
+// locatord end to end: the real binary on a dataset file, answers checked
+// against CGAL's own locate() in-process, and every bad input's status code.
+
+#include <gmock/gmock.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "server/core/engine.h"
+#include "tests/server/e2e_support.h"
+
+namespace locator::e2e {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr size_t kBatchSize = 2500;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+class LocatordTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dataset_ = new TestDatasetFile();
+    ASSERT_TRUE(Reference::Build(dataset_->path(), &reference_).ok());
+    queries_ = new std::vector<Point2>(TestQueries());
+    Status started = StartLocatord(dataset_->path(), {}, &server_);
+    ASSERT_TRUE(started.ok()) << started.ToString();
+  }
+  static void TearDownTestSuite() {
+    server_.reset();
+    reference_.reset();
+    delete queries_;
+    delete dataset_;
+  }
+
+  void SetUp() override {
+    ASSERT_NE(server_, nullptr);
+    stub_ = NewStub(*server_);
+  }
+
+  grpc::Status LocateBatch(const v1::LocateBatchRequest& request,
+                           v1::LocateBatchResponse* response) {
+    grpc::ClientContext context;
+    return stub_->LocateBatch(&context, request, response);
+  }
+
+  static TestDatasetFile* dataset_;
+  static std::unique_ptr<Reference> reference_;
+  static std::vector<Point2>* queries_;
+  static std::unique_ptr<testing::ServerProcess> server_;
+  std::unique_ptr<v1::Locator::Stub> stub_;
+};
+
+TestDatasetFile* LocatordTest::dataset_ = nullptr;
+std::unique_ptr<Reference> LocatordTest::reference_;
+std::vector<Point2>* LocatordTest::queries_ = nullptr;
+std::unique_ptr<testing::ServerProcess> LocatordTest::server_;
+
+TEST_F(LocatordTest, QuerySetCoversEveryLocationType) {
+  ASSERT_GE(queries_->size(), 10'000u);
+  size_t by_type[4] = {};
+  for (const Point2& q : *queries_) {
+    ++by_type[static_cast<int>(reference_->Locate(q).type)];
+  }
+  for (size_t count : by_type) EXPECT_GE(count, 100u);
+}
+
+TEST_F(LocatordTest, ReferenceCheckCatchesWrongAnswers) {
+  auto first_of = [&](LocationType type) {
+    for (const Point2& q : *queries_) {
+      if (reference_->Locate(q).type == type) return q;
+    }
+    return Point2{};
+  };
+  auto rejects = [&](const Point2& q, const LocateResult& wrong) {
+    return !reference_
+                ->Disagreements(std::span(&q, 1), std::span(&wrong, 1),
+                                /*hull_edge_known=*/true)
+                .empty();
+  };
+  const Point2 face = first_of(LocationType::kFace);
+  LocateResult wrong = reference_->Locate(face);
+  EXPECT_FALSE(rejects(face, wrong));
+  wrong.triangle_id += 1;
+  EXPECT_TRUE(rejects(face, wrong));
+  wrong = reference_->Locate(face);
+  wrong.value += 1e-3;
+  EXPECT_TRUE(rejects(face, wrong));
+
+  const Point2 edge = first_of(LocationType::kEdge);
+  wrong = reference_->Locate(edge);
+  wrong.vertex_ids = reference_->Locate(face).vertex_ids;
+  EXPECT_TRUE(rejects(edge, wrong));
+
+  const Point2 outside = first_of(LocationType::kOutsideConvexHull);
+  wrong = reference_->Locate(outside);
+  EXPECT_FALSE(rejects(outside, wrong));
+  std::swap(wrong.hull_edge_ids[0], wrong.hull_edge_ids[1]);
+  EXPECT_TRUE(rejects(outside, wrong));
+}
+
+TEST_F(LocatordTest, UnaryAnswersMatchReference) {
+  std::vector<LocateResult> answers;
+  for (const Point2& q : *queries_) {
+    v1::LocateResponse response;
+    const grpc::Status status = LocateOne(*stub_, q, &response);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    answers.push_back(FromLocateResponse(response));
+    // Unary answers carry the corners' coordinates; they are dataset points.
+    for (int corner = 0; corner < 3; ++corner) {
+      const Point2& p = reference_->dataset().points.at(
+          static_cast<size_t>(response.vertex_ids(corner)));
+      ASSERT_EQ(response.vertices(corner).x(), p.x);
+      ASSERT_EQ(response.vertices(corner).y(), p.y);
+    }
+    ASSERT_EQ(response.cost().total(), response.cost().faces_visited() +
+                                           response.cost().comparisons() +
+                                           response.cost().table_lookups());
+  }
+  EXPECT_EQ(reference_->Disagreements(*queries_, answers,
+                                      /*hull_edge_known=*/true),
+            "");
+}
+
+TEST_F(LocatordTest, BatchAnswersMatchReference) {
+  std::vector<LocateResult> answers;
+  for (size_t begin = 0; begin < queries_->size(); begin += kBatchSize) {
+    const std::span<const Point2> batch =
+        std::span<const Point2>(*queries_).subspan(
+            begin, std::min(kBatchSize, queries_->size() - begin));
+    v1::LocateBatchResponse response;
+    const grpc::Status status = LocateBatch(BatchRequestFor(batch), &response);
+    ASSERT_TRUE(status.ok()) << status.error_message();
+    ASSERT_EQ(response.types_size(), static_cast<int>(batch.size()));
+    ASSERT_EQ(response.vertex_ids_size(), static_cast<int>(3 * batch.size()));
+    uint64_t cost_sum = 0;
+    for (size_t row = 0; row < batch.size(); ++row) {
+      answers.push_back(FromBatchRow(response, row));
+      cost_sum += response.costs(static_cast<int>(row));
+    }
+    EXPECT_EQ(response.total_cost(), cost_sum);
+  }
+  EXPECT_EQ(reference_->Disagreements(*queries_, answers,
+                                      /*hull_edge_known=*/false),
+            "");
+}
+
+TEST_F(LocatordTest, LargeBatchSplitAcrossThreadsMatchesReference) {
+  // Every query, four times over: large enough for several shards.
+  std::vector<Point2> points;
+  for (int copy = 0; copy < 4; ++copy) {
+    points.insert(points.end(), queries_->begin(), queries_->end());
+  }
+  v1::LocateBatchRequest request = BatchRequestFor(points);
+  request.set_include_barycentric(false);
+  request.set_include_values(false);
+  v1::LocateBatchResponse response;
+  const grpc::Status status = LocateBatch(request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.barycentric_size(), 0);
+  EXPECT_EQ(response.values_size(), 0);
+  std::vector<LocateResult> answers;
+  for (size_t row = 0; row < points.size(); ++row) {
+    LocateResult answer = FromBatchRow(response, row);
+    // Not requested, so not checkable: take the reference's.
+    const LocateResult want = reference_->Locate(points[row]);
+    answer.barycentric = want.barycentric;
+    answer.has_value = want.has_value;
+    answer.value = want.value;
+    answers.push_back(answer);
+  }
+  EXPECT_EQ(reference_->Disagreements(points, answers,
+                                      /*hull_edge_known=*/false),
+            "");
+}
+
+TEST_F(LocatordTest, StreamAnswersMatchReferenceInOrder) {
+  grpc::ClientContext context;
+  auto stream = stub_->LocateStream(&context);
+  // Write from a second thread: the server stops reading while its answers
+  // wait unread, so one thread doing both would deadlock.
+  std::thread writer([&] {
+    for (const Point2& q : *queries_) {
+      if (!stream->Write(LocateRequestFor(q))) return;
+    }
+    stream->WritesDone();
+  });
+  std::vector<LocateResult> answers;
+  v1::LocateResponse response;
+  while (stream->Read(&response))
+    answers.push_back(FromLocateResponse(response));
+  writer.join();
+  const grpc::Status status = stream->Finish();
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(reference_->Disagreements(*queries_, answers,
+                                      /*hull_edge_known=*/true),
+            "");
+}
+
+TEST_F(LocatordTest, NonFiniteUnaryPointIsInvalidArgument) {
+  for (const Point2& q : {Point2{kNaN, 1}, Point2{1, kInf}, Point2{-kInf, 0}}) {
+    v1::LocateResponse response;
+    const grpc::Status status = LocateOne(*stub_, q, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+    EXPECT_THAT(status.error_message(), HasSubstr("non-finite"));
+  }
+}
+
+TEST_F(LocatordTest, NonFiniteBatchPointIsInvalidArgumentNamingItsIndex) {
+  std::vector<Point2> points(queries_->begin(), queries_->begin() + 10'000);
+  points[9'876].y = kNaN;
+  v1::LocateBatchResponse response;
+  const grpc::Status status = LocateBatch(BatchRequestFor(points), &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(status.error_message(), HasSubstr("point 9876 "));
+}
+
+TEST_F(LocatordTest, MismatchedColumnsAreInvalidArgumentGivingBothLengths) {
+  v1::LocateBatchRequest request =
+      BatchRequestFor(std::span<const Point2>(*queries_).subspan(0, 5));
+  request.add_xs(1.0);
+  v1::LocateBatchResponse response;
+  const grpc::Status status = LocateBatch(request, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(status.error_message(), HasSubstr("6"));
+  EXPECT_THAT(status.error_message(), HasSubstr("5"));
+}
+
+TEST_F(LocatordTest, EmptyBatchIsOkAndEmpty) {
+  v1::LocateBatchRequest request;
+  request.set_include_vertex_ids(true);
+  v1::LocateBatchResponse response;
+  const grpc::Status status = LocateBatch(request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.types_size(), 0);
+  EXPECT_EQ(response.vertex_ids_size(), 0);
+  EXPECT_EQ(response.total_cost(), 0u);
+}
+
+TEST_F(LocatordTest, NonFiniteStreamPointEndsStreamAfterEarlierAnswers) {
+  grpc::ClientContext context;
+  auto stream = stub_->LocateStream(&context);
+  const std::vector<Point2> points = {{1.25, 2.5}, {3, 4}, {kInf, 1}, {5, 5}};
+  for (const Point2& q : points) stream->Write(LocateRequestFor(q));
+  stream->WritesDone();
+  int answers = 0;
+  v1::LocateResponse response;
+  while (stream->Read(&response)) ++answers;
+  const grpc::Status status = stream->Finish();
+  EXPECT_EQ(answers, 2);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+}
+
+TEST_F(LocatordTest, GetStatsDescribesDatasetAndCountsQueries) {
+  std::unique_ptr<Engine> engine;
+  Dataset dataset = reference_->dataset();
+  ASSERT_TRUE(
+      Engine::Create(std::move(dataset), EngineOptions(), &engine).ok());
+  const DatasetInfo& want = engine->dataset_info();
+
+  const v1::GetStatsResponse before = GetStats(*stub_);
+  v1::LocateResponse unary;
+  ASSERT_TRUE(LocateOne(*stub_, {10.25, 20.5}, &unary).ok());
+  v1::LocateBatchResponse batch;
+  ASSERT_TRUE(
+      LocateBatch(
+          BatchRequestFor(std::span<const Point2>(*queries_).subspan(0, 100)),
+          &batch)
+          .ok());
+  const v1::GetStatsResponse stats = GetStats(*stub_);
+
+  EXPECT_EQ(stats.dataset().source(), dataset_->path());
+  EXPECT_EQ(stats.dataset().input_points(), want.input_points);
+  EXPECT_EQ(stats.dataset().vertices(), want.vertices);
+  EXPECT_EQ(stats.dataset().duplicates_merged(), 60u);
+  EXPECT_EQ(stats.dataset().triangles(), want.triangles);
+  EXPECT_TRUE(stats.dataset().has_values());
+  EXPECT_GT(stats.dataset().build_seconds(), 0);
+  EXPECT_EQ(stats.dataset().bounding_box().min_x(), 0);
+  EXPECT_EQ(stats.dataset().bounding_box().min_y(), want.bounding_box.min_y);
+  EXPECT_EQ(stats.dataset().bounding_box().max_x(), want.bounding_box.max_x);
+  EXPECT_EQ(stats.dataset().bounding_box().max_y(), want.bounding_box.max_y);
+  EXPECT_EQ(stats.strategy(), "self-tuning");
+  EXPECT_EQ(stats.queries_served(), before.queries_served() + 101);
+  EXPECT_GT(stats.mean_cost_lifetime(), 0);
+  EXPECT_GT(stats.recent_window(), 0u);
+  EXPECT_GT(stats.tuning().grid_size(), 0u);
+  EXPECT_EQ(stats.tuning().histogram_size(),
+            static_cast<int>(stats.tuning().grid_size() *
+                             stats.tuning().grid_size()));
+  EXPECT_GT(stats.memory().triangulation_bytes(), 0u);
+}
+
+TEST_F(LocatordTest, BatchCancelledMidwayStopsEarly) {
+  std::vector<Point2> points;
+  while (points.size() < 1'000'000) {
+    points.insert(points.end(), queries_->begin(), queries_->end());
+  }
+  points.resize(1'000'000);
+  const v1::LocateBatchRequest request = BatchRequestFor(points);
+  const uint64_t served_before = GetStats(*stub_).queries_served();
+  grpc::ClientContext context;
+  grpc::Status status;
+  std::thread call([&] {
+    v1::LocateBatchResponse response;
+    status = stub_->LocateBatch(&context, request, &response);
+  });
+  // Cancel once the server is locating the batch, i.e. counting queries.
+  while (GetStats(*stub_).queries_served() == served_before) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  context.TryCancel();
+  call.join();
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
+  // The server checks between blocks of points and gives up; give it a
+  // moment to get there: it must have located only part of the batch.
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_LT(GetStats(*stub_).queries_served() - served_before, points.size());
+}
+
+TEST_F(LocatordTest, RetuneReturnsTuningWithoutHistogram) {
+  grpc::ClientContext context;
+  v1::RetuneResponse response;
+  ASSERT_TRUE(stub_->Retune(&context, {}, &response).ok());
+  EXPECT_GE(response.tuning().retune_count(), 1u);
+  EXPECT_EQ(response.tuning().histogram_size(), 0);
+}
+
+}  // namespace
+}  // namespace locator::e2e

@@ -1,0 +1,272 @@
+// locatord's life as a process, end to end: startup failures and exit codes,
+// the health transition while loading, the batch limit, re-tunes under
+// concurrent load, and the drain on SIGTERM.
+
+#include <gmock/gmock.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/server/e2e_support.h"
+
+namespace locator::e2e {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::ServerProcess;
+
+constexpr auto kExitTimeout = std::chrono::seconds(30);
+
+TEST(LocatordStartupTest, BadDatasetFileExitsOneNamingFileAndLine) {
+  const std::string path = ::testing::TempDir() + "locatord_bad_" +
+                           std::to_string(getpid()) + ".csv";
+  std::ofstream(path) << "x,y\n1,2\n3,oops\n4,5\n";
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(ServerProcess::Spawn(
+                  LOCATORD_PATH, {"--dataset", path, "--listen", "127.0.0.1:0"},
+                  &server)
+                  .ok());
+  // It listens first, then fails to load.
+  ASSERT_TRUE(server->WaitForListening().ok());
+  EXPECT_EQ(server->WaitForExit(kExitTimeout), 1);
+  EXPECT_THAT(server->StderrText(), HasSubstr(path + ":3"));
+  std::remove(path.c_str());
+}
+
+TEST(LocatordStartupTest, BadFlagExitsTwoWithoutListening) {
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(
+      ServerProcess::Spawn(LOCATORD_PATH, {"--threads", "0"}, &server).ok());
+  EXPECT_FALSE(server->WaitForListening().ok());
+  EXPECT_EQ(server->WaitForExit(kExitTimeout), 2);
+  EXPECT_THAT(server->StderrText(), HasSubstr("--threads"));
+}
+
+TEST(LocatordStartupTest, HealthGoesFromNotServingToServing) {
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(ServerProcess::Spawn(
+                  LOCATORD_PATH,
+                  {"--dataset", "uniform:1000000:3", "--listen", "127.0.0.1:0"},
+                  &server)
+                  .ok());
+  ASSERT_TRUE(server->WaitForListening().ok());
+  // Loading a million points takes far longer than these two probes, but
+  // either one observing the loading state is enough.
+  HealthStatus health = HealthStatus::kUnknown;
+  const grpc::Status probe = server->CheckHealth(&health);
+  auto stub = NewStub(*server);
+  v1::LocateResponse response;
+  const grpc::Status early = LocateOne(*stub, {0.5, 0.5}, &response);
+  const bool saw_not_serving =
+      probe.ok() && health == HealthStatus::kNotServing;
+  const bool saw_loading =
+      early.error_code() == grpc::StatusCode::UNAVAILABLE &&
+      early.error_message() == "dataset is still loading";
+  EXPECT_TRUE(saw_not_serving || saw_loading);
+  EXPECT_TRUE(early.ok() || saw_loading) << early.error_message();
+
+  const Status serving = server->WaitUntilServing();
+  ASSERT_TRUE(serving.ok()) << serving.ToString();
+  EXPECT_TRUE(LocateOne(*stub, {0.5, 0.5}, &response).ok());
+  EXPECT_THAT(server->StderrText(), HasSubstr("locatord serving "));
+}
+
+TEST(LocatordLimitsTest, BatchOverMaxPointsIsResourceExhausted) {
+  std::unique_ptr<ServerProcess> server;
+  const TestDatasetFile dataset;
+  const Status started =
+      StartLocatord(dataset.path(), {"--max-batch-points", "1000"}, &server);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  auto stub = NewStub(*server);
+  const std::vector<Point2> queries = TestQueries();
+  for (const size_t size : {size_t{1000}, size_t{1001}}) {
+    grpc::ClientContext context;
+    v1::LocateBatchResponse response;
+    const grpc::Status status = stub->LocateBatch(
+        &context,
+        BatchRequestFor(std::span<const Point2>(queries).subspan(0, size)),
+        &response);
+    if (size == 1000) {
+      EXPECT_TRUE(status.ok()) << status.error_message();
+    } else {
+      EXPECT_EQ(status.error_code(), grpc::StatusCode::RESOURCE_EXHAUSTED);
+      EXPECT_THAT(status.error_message(), HasSubstr("1000"));
+    }
+  }
+}
+
+TEST(LocatordRetuneTest, ConcurrentClientsStayExactThroughRetunes) {
+  const TestDatasetFile dataset;
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(dataset.path(), &reference).ok());
+  std::unique_ptr<ServerProcess> server;
+  const Status started =
+      StartLocatord(dataset.path(), {"--retune-every", "500"}, &server);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  auto stats_stub = NewStub(*server);
+  const uint64_t retunes_before = GetStats(*stats_stub).tuning().retune_count();
+
+  const std::vector<Point2> queries = TestQueries();
+  constexpr int kClients = 8;
+  constexpr int kRounds = 25;
+  constexpr size_t kBatch = 200;
+  std::vector<std::string> problems(kClients);
+  std::vector<std::thread> clients;
+  for (int client = 0; client < kClients; ++client) {
+    clients.emplace_back([&, client] {
+      auto stub = NewStub(*server);
+      std::mt19937_64 rng(client);
+      std::uniform_int_distribution<size_t> pick(0, queries.size() - kBatch);
+      for (int round = 0; round < kRounds && problems[client].empty();
+           ++round) {
+        const std::span<const Point2> batch =
+            std::span<const Point2>(queries).subspan(pick(rng), kBatch);
+        grpc::ClientContext context;
+        v1::LocateBatchResponse response;
+        const grpc::Status status =
+            stub->LocateBatch(&context, BatchRequestFor(batch), &response);
+        std::vector<LocateResult> answers;
+        for (size_t row = 0; status.ok() && row < kBatch; ++row) {
+          answers.push_back(FromBatchRow(response, row));
+        }
+        // A few unary calls between batches, answered by the same tuning.
+        for (size_t k = 0; status.ok() && k < 10; ++k) {
+          v1::LocateResponse unary;
+          if (!LocateOne(*stub, batch[k], &unary).ok()) break;
+          const LocateResult answer = FromLocateResponse(unary);
+          problems[client] += reference->Disagreements(
+              batch.subspan(k, 1), std::span(&answer, 1), true);
+        }
+        problems[client] +=
+            status.ok() ? reference->Disagreements(batch, answers, false)
+                        : status.error_message();
+      }
+    });
+  }
+  for (std::thread& client : clients) client.join();
+  for (const std::string& problem : problems) EXPECT_EQ(problem, "");
+
+  // Re-tunes run in the background; give the last ones a moment to land.
+  uint64_t retunes_after = retunes_before;
+  for (int attempt = 0; attempt < 100 && retunes_after < retunes_before + 2;
+       ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    retunes_after = GetStats(*stats_stub).tuning().retune_count();
+  }
+  EXPECT_GE(retunes_after, retunes_before + 2);
+}
+
+TEST(LocatordRetuneTest, PeriodicRetunesAndStatsLines) {
+  std::unique_ptr<ServerProcess> server;
+  const TestDatasetFile dataset;
+  const Status started = StartLocatord(
+      dataset.path(),
+      {"--retune-interval-s", "0.1", "--stats-interval-s", "0.1"}, &server);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  auto stub = NewStub(*server);
+  uint64_t retunes = 0;
+  for (int attempt = 0; attempt < 100 && retunes < 2; ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    retunes = GetStats(*stub).tuning().retune_count();
+  }
+  EXPECT_GE(retunes, 2u);
+  EXPECT_THAT(server->StderrText(), HasSubstr("stats: queries="));
+}
+
+TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
+  std::unique_ptr<ServerProcess> server;
+  const TestDatasetFile dataset;
+  const Status started = StartLocatord(dataset.path(), {}, &server);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  const std::vector<Point2> queries = TestQueries();
+  auto stub = NewStub(*server);
+
+  // A stream opened before the signal is in flight by construction: it
+  // must keep being answered during the drain and finish OK.
+  grpc::ClientContext stream_context;
+  auto stream = stub->LocateStream(&stream_context);
+  auto round_trip = [&](const Point2& q) {
+    v1::LocateResponse response;
+    return stream->Write(LocateRequestFor(q)) && stream->Read(&response);
+  };
+  for (int k = 0; k < 10; ++k) ASSERT_TRUE(round_trip(queries[k]));
+
+  // A batch large enough to take a while; once the server counts queries
+  // beyond the stream's, it is being located, so it is in flight too.
+  std::vector<Point2> big;
+  while (big.size() < 500'000) {
+    big.insert(big.end(), queries.begin(), queries.end());
+  }
+  const uint64_t served_before = GetStats(*stub).queries_served();
+  grpc::Status big_status;
+  v1::LocateBatchResponse big_response;
+  std::thread big_call([&] {
+    grpc::ClientContext context;
+    big_status =
+        stub->LocateBatch(&context, BatchRequestFor(big), &big_response);
+  });
+  while (GetStats(*stub).queries_served() == served_before) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+
+  // Small batches keep arriving around the signal. Those that race the
+  // shutdown are refused by gRPC (UNAVAILABLE, or CANCELLED when the server
+  // had received but not yet dispatched them); none may fail otherwise.
+  std::atomic<int> small_ok{0};
+  std::vector<grpc::Status> refusals(4);
+  std::vector<std::thread> clients;
+  for (size_t client = 0; client < refusals.size(); ++client) {
+    clients.emplace_back([&, client] {
+      auto client_stub = NewStub(*server);
+      const v1::LocateBatchRequest request =
+          BatchRequestFor(std::span<const Point2>(queries).subspan(0, 1000));
+      for (;;) {
+        grpc::ClientContext context;
+        v1::LocateBatchResponse response;
+        const grpc::Status status =
+            client_stub->LocateBatch(&context, request, &response);
+        if (!status.ok()) {
+          refusals[client] = status;
+          return;
+        }
+        ++small_ok;
+      }
+    });
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  server->SendSignal(SIGTERM);
+
+  for (int k = 10; k < 20; ++k) EXPECT_TRUE(round_trip(queries[k]));
+  stream->WritesDone();
+  const grpc::Status stream_status = stream->Finish();
+  EXPECT_TRUE(stream_status.ok()) << stream_status.error_message();
+  big_call.join();
+  EXPECT_TRUE(big_status.ok()) << big_status.error_message();
+  EXPECT_EQ(big_response.types_size(), static_cast<int>(big.size()));
+
+  for (std::thread& client : clients) client.join();
+  EXPECT_GT(small_ok.load(), 0);
+  for (const grpc::Status& refusal : refusals) {
+    EXPECT_THAT(refusal.error_code(),
+                ::testing::AnyOf(grpc::StatusCode::UNAVAILABLE,
+                                 grpc::StatusCode::CANCELLED))
+        << refusal.error_message();
+    EXPECT_THAT(refusal.error_message(),
+                ::testing::Not(HasSubstr("while locating")));
+  }
+  EXPECT_EQ(server->WaitForExit(kExitTimeout), 0);
+}
+
+}  // namespace
+}  // namespace locator::e2e

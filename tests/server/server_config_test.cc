@@ -1,0 +1,179 @@
+#include "server/server_config.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace locator {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Parses locatord's flags `args` (argv[0] added).
+Status Parse(std::vector<std::string> args, ServerConfig* config,
+             std::string* help) {
+  args.insert(args.begin(), "locatord");
+  std::vector<const char*> argv;
+  for (const std::string& arg : args) argv.push_back(arg.c_str());
+  return ParseServerConfig(static_cast<int>(argv.size()), argv.data(), config,
+                           help);
+}
+
+Status Parse(std::vector<std::string> args, ServerConfig* config) {
+  std::string help;
+  return Parse(std::move(args), config, &help);
+}
+
+TEST(ServerConfigTest, DefaultsWithoutFlags) {
+  ServerConfig config;
+  std::string help;
+  ASSERT_TRUE(Parse({}, &config, &help).ok());
+  EXPECT_EQ(help, "");
+  EXPECT_EQ(config.dataset, "uniform:1000000:1");
+  EXPECT_EQ(config.serving.ListenAddress(), "127.0.0.1:50051");
+  EXPECT_EQ(config.serving.max_message_bytes, 64u << 20);
+  EXPECT_EQ(config.serving.max_batch_points, 1'000'000u);
+  EXPECT_GE(config.serving.threads, 1u);
+  EXPECT_EQ(config.engine.strategy, "self-tuning");
+  EXPECT_TRUE(config.engine.tuning.background);
+  EXPECT_EQ(config.engine.tuning.budget_bytes, 0u);
+  EXPECT_EQ(config.stats_interval_s, 0);
+  EXPECT_EQ(config.retune_interval_s, 0);
+}
+
+TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
+  ServerConfig config;
+  const Status status = Parse({"--dataset",
+                               "clusters:5000:4:2",
+                               "--listen",
+                               "0.0.0.0:0",
+                               "--strategy",
+                               "adaptive-paper",
+                               "--grid",
+                               "16",
+                               "--warmup",
+                               "300",
+                               "--retune-every",
+                               "500",
+                               "--budget",
+                               "64KiB",
+                               "--threads",
+                               "3",
+                               "--max-batch-points",
+                               "1000",
+                               "--max-message-bytes",
+                               "8MiB",
+                               "--stats-interval-s",
+                               "2.5",
+                               "--retune-interval-s",
+                               "30"},
+                              &config);
+  ASSERT_TRUE(status.ok()) << status.ToString();
+  EXPECT_EQ(config.dataset, "clusters:5000:4:2");
+  EXPECT_EQ(config.serving.listen_host, "0.0.0.0");
+  EXPECT_EQ(config.serving.listen_port, 0);
+  EXPECT_EQ(config.engine.strategy, "adaptive-paper");
+  EXPECT_EQ(config.engine.tuning.grid_size, 16);
+  EXPECT_EQ(config.engine.tuning.warmup_queries, 300u);
+  EXPECT_EQ(config.engine.tuning.retune_every, 500u);
+  EXPECT_EQ(config.engine.tuning.budget_bytes, 64u * 1024);
+  EXPECT_TRUE(config.engine.tuning.background);
+  EXPECT_EQ(config.serving.threads, 3u);
+  EXPECT_EQ(config.serving.max_batch_points, 1000u);
+  EXPECT_EQ(config.serving.max_message_bytes, 8u << 20);
+  EXPECT_EQ(config.stats_interval_s, 2.5);
+  EXPECT_EQ(config.retune_interval_s, 30);
+}
+
+TEST(ServerConfigTest, HelpListsTheFlags) {
+  ServerConfig config;
+  std::string help;
+  ASSERT_TRUE(Parse({"--help"}, &config, &help).ok());
+  EXPECT_THAT(help, HasSubstr("Usage: locatord"));
+  EXPECT_THAT(help, HasSubstr("--dataset"));
+  EXPECT_THAT(help, HasSubstr("--budget"));
+  EXPECT_THAT(help, HasSubstr("--retune-interval-s"));
+}
+
+TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
+  const std::vector<std::vector<std::string>> bad = {
+      {"--threads", "0"},
+      {"--threads", "-1"},
+      {"--threads", "two"},
+      {"--grid", "0"},
+      {"--retune-every", "0"},
+      {"--warmup", "1e3"},
+      {"--warmup", "0"},
+      {"--budget", "12kb"},
+      {"--budget", "-5"},
+      {"--budget", "99999999999999999999GiB"},
+      {"--max-message-bytes", "100"},
+      {"--max-message-bytes", "4GiB"},
+      {"--max-batch-points", "0"},
+      {"--stats-interval-s", "-1"},
+      {"--retune-interval-s", "nan"},
+      {"--listen", "50051"},
+      {"--listen", ":50051"},
+      {"--listen", "localhost:65536"},
+      {"--listen", "localhost:http"},
+      {"--strategy", "fastest"},
+      {"--dataset", ""},
+  };
+  for (const std::vector<std::string>& args : bad) {
+    ServerConfig config;
+    const Status status = Parse(args, &config);
+    EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << args[0];
+    EXPECT_THAT(status.message(), HasSubstr(args[0]));
+  }
+}
+
+TEST(ServerConfigTest, UnknownFlagsAndStrayArgumentsFail) {
+  ServerConfig config;
+  EXPECT_THAT(Parse({"--no-such-flag"}, &config).message(),
+              HasSubstr("no-such-flag"));
+  EXPECT_FALSE(Parse({"stray"}, &config).ok());
+  EXPECT_FALSE(Parse({"--threads"}, &config).ok());
+}
+
+TEST(ServerConfigTest, ByteFlagsTakeUnitSuffixes) {
+  const std::vector<std::pair<std::string, size_t>> cases = {
+      {"0", 0}, {"100B", 100}, {"64KiB", 65536}, {"3MiB", 3u << 20}};
+  for (const auto& [text, want] : cases) {
+    ServerConfig config;
+    ASSERT_TRUE(Parse({"--budget", text}, &config).ok()) << text;
+    EXPECT_EQ(config.engine.tuning.budget_bytes, want) << text;
+  }
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--max-message-bytes", "1GiB"}, &config).ok());
+  EXPECT_EQ(config.serving.max_message_bytes, size_t{1} << 30);
+}
+
+TEST(ServerConfigTest, ListenAddressSplitsAtTheLastColon) {
+  std::string host;
+  int port = -1;
+  ASSERT_TRUE(ParseListenAddress("[::1]:8080", &host, &port).ok());
+  EXPECT_EQ(host, "[::1]");
+  EXPECT_EQ(port, 8080);
+}
+
+TEST(NoopServerConfigTest, TakesServingFlagsOnly) {
+  const std::vector<const char*> good = {"locator-noop-server", "--listen",
+                                         "127.0.0.1:0", "--threads", "2"};
+  ServingConfig config;
+  std::string help;
+  ASSERT_TRUE(ParseNoopServerConfig(static_cast<int>(good.size()), good.data(),
+                                    &config, &help)
+                  .ok());
+  EXPECT_EQ(config.listen_port, 0);
+  EXPECT_EQ(config.threads, 2u);
+  const std::vector<const char*> bad = {"locator-noop-server", "--dataset",
+                                        "uniform:10"};
+  EXPECT_FALSE(ParseNoopServerConfig(static_cast<int>(bad.size()), bad.data(),
+                                     &config, &help)
+                   .ok());
+}
+
+}  // namespace
+}  // namespace locator

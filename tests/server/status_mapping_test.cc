@@ -1,0 +1,36 @@
+#include "server/status_mapping.h"
+
+#include <gtest/gtest.h>
+
+#include <utility>
+#include <vector>
+
+namespace locator {
+namespace {
+
+TEST(StatusMappingTest, OkIsOk) {
+  EXPECT_TRUE(ToGrpcStatus(Status::OK()).ok());
+}
+
+TEST(StatusMappingTest, EveryCodeMapsToItsGrpcNamesakeKeepingTheMessage) {
+  const std::vector<std::pair<Status, grpc::StatusCode>> cases = {
+      {Status::InvalidArgument("x is NaN"), grpc::StatusCode::INVALID_ARGUMENT},
+      {Status::NotFound("no file"), grpc::StatusCode::NOT_FOUND},
+      {Status::FailedPrecondition("not yet"),
+       grpc::StatusCode::FAILED_PRECONDITION},
+      {Status::ResourceExhausted("too big"),
+       grpc::StatusCode::RESOURCE_EXHAUSTED},
+      {Status::Unavailable("loading"), grpc::StatusCode::UNAVAILABLE},
+      {Status::Internal("bug"), grpc::StatusCode::INTERNAL},
+      // Not retryable against the same server: see status_mapping.cc.
+      {Status::IOError("read failed"), grpc::StatusCode::INTERNAL},
+  };
+  for (const auto& [status, code] : cases) {
+    const grpc::Status mapped = ToGrpcStatus(status);
+    EXPECT_EQ(mapped.error_code(), code) << status.ToString();
+    EXPECT_EQ(mapped.error_message(), status.message());
+  }
+}
+
+}  // namespace
+}  // namespace locator
