@@ -5,14 +5,6 @@
 
 namespace locator::bench {
 
-std::vector<Point2> MakeQueries(WorkloadKind kind, const BoundingBox& box,
-                                uint64_t seed, size_t count) {
-  Workload workload(kind, box, seed);
-  std::vector<Point2> out(count);
-  for (Point2& p : out) p = workload.Next();
-  return out;
-}
-
 void LocateAll(const PointLocator& locator, std::span<const Point2> queries,
                CostSums* sums) {
   LocateResult r;

@@ -43,10 +43,6 @@ struct CostSums {
   }
 };
 
-// The first `count` queries of `kind` over `box`.
-std::vector<Point2> MakeQueries(WorkloadKind kind, const BoundingBox& box,
-                                uint64_t seed, size_t count);
-
 // Locates every query in order, adding costs to *sums (if given).
 void LocateAll(const PointLocator& locator, std::span<const Point2> queries,
                CostSums* sums);

@@ -76,8 +76,8 @@ void RunPaper(const PaperOptions& o, BenchReport* report) {
         const size_t measured =
             kind == WorkloadKind::kDrift ? o.drift_queries : o.measured;
         const std::vector<Point2> queries =
-            MakeQueries(kind, unit, seed * 7919 + static_cast<int>(kind),
-                        o.warmup + measured);
+            WorkloadQueries(kind, unit, o.warmup + measured,
+                            seed * 7919 + static_cast<int>(kind));
         for (const std::string& strategy : StrategyNames()) {
           RunStream(o, *t, strategy, kind, queries, &results);
         }

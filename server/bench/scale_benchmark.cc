@@ -65,8 +65,8 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
     for (WorkloadKind kind : AllWorkloadKinds()) {
       const std::string workload(WorkloadName(kind));
       const std::vector<Point2> all =
-          MakeQueries(kind, t->bounding_box(), 4242 + static_cast<int>(kind),
-                      o.warmup + o.queries);
+          WorkloadQueries(kind, t->bounding_box(), o.warmup + o.queries,
+                          4242 + static_cast<int>(kind));
       const std::span<const Point2> warm = std::span(all).first(o.warmup);
       const std::span<const Point2> measured = std::span(all).subspan(o.warmup);
       std::vector<LocateResult> reference(measured.size());

@@ -139,4 +139,12 @@ Point2 Workload::NearDiagonal(bool anti) {
   }
 }
 
+std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
+                                    size_t count, uint64_t seed) {
+  Workload workload(kind, box, seed);
+  std::vector<Point2> queries(count);
+  for (Point2& q : queries) q = workload.Next();
+  return queries;
+}
+
 }  // namespace locator

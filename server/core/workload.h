@@ -73,6 +73,10 @@ class Workload {
   Point2 drift_corner_{0.48, 0.48};
 };
 
+// The first `count` queries of a Workload(kind, box, seed).
+std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
+                                    size_t count, uint64_t seed);
+
 }  // namespace locator
 
 #endif  // LOCATOR_CORE_WORKLOAD_H_

@@ -118,8 +118,8 @@ class AgreementTest : public ::testing::TestWithParam<Param> {
     auto locator = test::MakeLocator(strategy(), t(), FastLearning());
     if (locator) {
       LocateResult r;
-      for (const Point2& q : test::WorkloadQueries(
-               WorkloadKind::kOneCluster, t().bounding_box(), 2000, 77)) {
+      for (const Point2& q : WorkloadQueries(WorkloadKind::kOneCluster,
+                                             t().bounding_box(), 2000, 77)) {
         locator->Locate(q, &r);
       }
     }
@@ -140,8 +140,8 @@ TEST_P(AgreementTest, EveryWorkload) {
   for (WorkloadKind kind : AllWorkloadKinds()) {
     SCOPED_TRACE(WorkloadName(kind));
     const Checked& set = fixture_->Set(std::string(WorkloadName(kind)), [&] {
-      return test::WorkloadQueries(kind, t().bounding_box(),
-                                   kQueriesPerWorkload, 1000 + int(kind));
+      return WorkloadQueries(kind, t().bounding_box(), kQueriesPerWorkload,
+                             1000 + int(kind));
     });
     const TuningOptions options = FastLearning();
     auto locator = test::MakeLocator(strategy(), t(), options);

@@ -18,7 +18,6 @@ namespace {
 
 using test::MakeLocator;
 using test::MeanCost;
-using test::WorkloadQueries;
 
 // One uniform dataset shared by every test (built once per process).
 class LearningTest : public ::testing::Test {

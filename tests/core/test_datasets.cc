@@ -70,14 +70,6 @@ std::unique_ptr<PointLocator> MakeLocator(std::string_view name,
   return locator;
 }
 
-std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
-                                    size_t n, uint64_t seed) {
-  Workload workload(kind, box, seed);
-  std::vector<Point2> queries(n);
-  for (Point2& q : queries) q = workload.Next();
-  return queries;
-}
-
 std::vector<Point2> UniformQueries(const BoundingBox& box, size_t n,
                                    uint64_t seed) {
   std::mt19937_64 rng(seed);

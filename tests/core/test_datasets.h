@@ -50,10 +50,6 @@ std::unique_ptr<PointLocator> MakeLocator(
     std::string_view name, const Triangulation& t,
     const TuningOptions& options = TuningOptions());
 
-// `n` queries of workload `kind` mapped into `box`.
-std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
-                                    size_t n, uint64_t seed);
-
 // `n` points uniform in `box`.
 std::vector<Point2> UniformQueries(const BoundingBox& box, size_t n,
                                    uint64_t seed);
