@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <mutex>
 #include <sstream>
 #include <string>
 #include <utility>
 
+#include "server/core/engine.h"
 #include "server/proto_convert.h"
 #include "server/status_mapping.h"
 
@@ -76,16 +76,11 @@ Status BatchLocator::Validate(const v1::LocateBatchRequest& request) const {
     return Status::ResourceExhausted(msg.str());
   }
   // Checked here for the whole batch, not per block by the engine, so that
-  // the index in the message is the point's index in the request. Worded as
-  // the engine words it.
+  // the index in the message is the point's index in the request.
   for (int i = 0; i < xs; ++i) {
-    const double x = request.xs(i);
-    const double y = request.ys(i);
-    if (!std::isfinite(x) || !std::isfinite(y)) {
-      return Status::InvalidArgument(
-          "point " + std::to_string(i) + " has a non-finite coordinate (x=" +
-          std::to_string(x) + ", y=" + std::to_string(y) + ")");
-    }
+    const Status s = CheckBatchPoint(Point2{request.xs(i), request.ys(i)},
+                                     static_cast<size_t>(i));
+    if (!s.ok()) return s;
   }
   return Status::OK();
 }

@@ -25,6 +25,11 @@ Status CheckFinite(const Point2& q, const std::string& what) {
 
 }  // namespace
 
+Status CheckBatchPoint(const Point2& q, size_t index) {
+  if (IsFinite(q)) return Status::OK();
+  return CheckFinite(q, "point " + std::to_string(index));
+}
+
 Engine::Engine() = default;
 Engine::~Engine() = default;
 
@@ -81,9 +86,7 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
                            std::vector<LocateResult>* results,
                            const std::function<bool()>& keep_going) const {
   for (size_t i = 0; i < queries.size(); ++i) {
-    if (!IsFinite(queries[i])) {
-      return CheckFinite(queries[i], "point " + std::to_string(i));
-    }
+    if (Status s = CheckBatchPoint(queries[i], i); !s.ok()) return s;
   }
   results->resize(queries.size());
   for (size_t begin = 0; begin < queries.size(); begin += kBatchChunk) {

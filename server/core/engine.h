@@ -27,6 +27,11 @@ namespace locator {
 
 class Triangulation;
 
+// InvalidArgument naming point `index` of a batch and its coordinates unless
+// both are finite: the one wording of that error, wherever a batch is
+// checked.
+Status CheckBatchPoint(const Point2& q, size_t index);
+
 struct EngineOptions {
   // walk | jump-and-walk | adaptive-paper | self-tuning
   std::string strategy = "self-tuning";
