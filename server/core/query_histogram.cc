@@ -42,9 +42,9 @@ QueryHistogram::QueryHistogram(const GridGeometry& grid) : grid_(grid) {
   }
 }
 
-void QueryHistogram::Add(const Point2& p) {
-  counts_[ThreadShard() * stride_ + grid_.CellOf(p)].fetch_add(
-      1, std::memory_order_relaxed);
+void QueryHistogram::AddToCell(size_t cell) {
+  counts_[ThreadShard() * stride_ + cell].fetch_add(1,
+                                                    std::memory_order_relaxed);
 }
 
 void QueryHistogram::Drain(std::vector<double>* into) {

@@ -66,7 +66,9 @@ class QueryHistogram {
 
   const GridGeometry& grid() const { return grid_; }
   // Counts one query at p (relaxed; never blocks).
-  void Add(const Point2& p);
+  void Add(const Point2& p) { AddToCell(grid_.CellOf(p)); }
+  // The same, for a caller that already knows p's cell.
+  void AddToCell(size_t cell);
   // Adds every count since the last Drain() into `into` (size cells()) and
   // resets them.
   void Drain(std::vector<double>* into);

@@ -44,13 +44,14 @@ SelfTuningLocator::~SelfTuningLocator() {
 
 bool SelfTuningLocator::LocateIn(const TuningSnapshot& snap, const Point2& q,
                                  LocateResult* result) const {
-  histogram_.Add(q);
+  const size_t cell = histogram_.grid().CellOf(q);
+  histogram_.AddToCell(cell);
   result->cost = LocateCost();
   uint32_t lookups = 0;
   const auto start = snap.table->Start(q, &lookups);
   WalkAndDescribe(t_, start, q, result);
   result->cost.table_lookups = lookups;
-  return !snap.hot[histogram_.grid().CellOf(q)];
+  return !snap.hot[cell];
 }
 
 void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
