@@ -11,7 +11,10 @@ PACKAGES=(
   libprotobuf-dev protobuf-compiler
   libgrpc++-dev libgrpc-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev
-  python3
+  prometheus-cpp-dev
+  python3 python3-grpcio python3-protobuf
+  chromium nginx openssl curl
+  clang libclang-rt-14-dev
 )
 
 missing=()

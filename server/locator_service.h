@@ -36,8 +36,12 @@ class LocatorService final : public v1::Locator::CallbackService {
  public:
   explicit LocatorService(const LocatorServiceOptions& options);
 
-  // Starts answering with `engine`.
+  // Starts answering with `engine`; calls already running keep the engine
+  // they started with.
   void Publish(std::shared_ptr<Engine> engine);
+
+  // The engine new calls use, or null while the dataset is loading.
+  std::shared_ptr<Engine> engine() const;
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
                                    const v1::LocateRequest* request,
@@ -59,9 +63,6 @@ class LocatorService final : public v1::Locator::CallbackService {
                                    v1::RetuneResponse* response) override;
 
  private:
-  // The published engine, or null while the dataset is loading.
-  std::shared_ptr<Engine> engine() const;
-
   mutable std::mutex engine_mu_;
   std::shared_ptr<Engine> engine_;  // guarded by engine_mu_
   BatchLocator batch_locator_;

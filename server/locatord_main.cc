@@ -73,12 +73,12 @@ Status BuildEngine(const ServerConfig& config,
   return Status::OK();
 }
 
+// Periodic work acts on whichever engine the service currently publishes.
 void StartPeriodicWork(const ServerConfig& config,
-                       const std::shared_ptr<Engine>& engine,
-                       ServerRunner* runner) {
+                       const LocatorService& service, ServerRunner* runner) {
   if (config.stats_interval_s > 0) {
-    runner->RunEvery(config.stats_interval_s, [engine] {
-      const EngineStats stats = engine->Stats();
+    runner->RunEvery(config.stats_interval_s, [&service] {
+      const EngineStats stats = service.engine()->Stats();
       LogLine() << "stats: queries=" << stats.queries
                 << " mean_cost_recent=" << stats.mean_cost_recent
                 << " snapshot_version=" << stats.tuning.snapshot_version;
@@ -86,7 +86,8 @@ void StartPeriodicWork(const ServerConfig& config,
   }
   if (config.retune_interval_s > 0) {
     // On the loop thread, which has nothing else to do between signals.
-    runner->RunEvery(config.retune_interval_s, [engine] { engine->Retune(); });
+    runner->RunEvery(config.retune_interval_s,
+                     [&service] { service.engine()->Retune(); });
   }
 }
 
@@ -121,7 +122,7 @@ int Main(int argc, char** argv) {
       runner->SetServing(true);
       LogLine() << "serving " << engine->dataset_info().triangles
                 << " triangles";
-      StartPeriodicWork(config, engine, runner.get());
+      StartPeriodicWork(config, service, runner.get());
     });
   }).detach();
   runner->RunAndExit();
