@@ -58,10 +58,15 @@ class BatchLocator {
                                   LocateBatchFn locate_batch,
                                   v1::LocateBatchResponse* response);
 
+  // The checks Serve() makes before locating anything: xs and ys of equal
+  // length (InvalidArgument), at most max_batch_points points
+  // (ResourceExhausted), finite coordinates (InvalidArgument naming the first
+  // bad point's index). Public for the request fuzzer.
+  Status Validate(const v1::LocateBatchRequest& request) const;
+
  private:
   struct Call;
 
-  Status Validate(const v1::LocateBatchRequest& request) const;
   size_t ShardCount(size_t points) const;
   static void RunShard(const std::shared_ptr<Call>& call, size_t begin,
                        size_t end);

@@ -1,0 +1,130 @@
+// Fuzzes the dataset parsers: every input is parsed both as CSV/XYZ text and
+// as Triangle .node text, with the limits locatord uses.
+//
+// Aborts unless each parse either
+//   - succeeds with at least one point, finite coordinates and values, values
+//     empty or one per point, and a dataset that survives a round trip: the
+//     points written back as CSV with 17 significant digits parse to exactly
+//     the same doubles; or
+//   - fails with InvalidArgument or ResourceExhausted and a message that
+//     starts with the file name, followed by ": " or by ":LINE: " with LINE a
+//     line of the input.
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "server/core/dataset.h"
+
+namespace locator {
+namespace {
+
+constexpr std::string_view kCsvName = "fuzz.csv";
+constexpr std::string_view kNodeName = "fuzz.node";
+
+void Fail(std::string_view what, const Status& status) {
+  std::fprintf(stderr, "dataset_fuzzer: %.*s (%s)\n",
+               static_cast<int>(what.size()), what.data(),
+               status.ToString().c_str());
+  std::abort();
+}
+
+// 1-based lines in `text` as FieldReader counts them.
+size_t LineCount(std::string_view text) {
+  size_t lines = 1;
+  for (char c : text) lines += c == '\n';
+  return lines;
+}
+
+void CheckError(const Status& status, std::string_view text,
+                std::string_view name) {
+  if (status.code() != Status::Code::kInvalidArgument &&
+      status.code() != Status::Code::kResourceExhausted) {
+    Fail("unexpected error code", status);
+  }
+  std::string_view rest = status.message();
+  if (!rest.starts_with(name) || rest.size() < name.size() + 2 ||
+      rest[name.size()] != ':') {
+    Fail("error does not start with the file name", status);
+  }
+  rest.remove_prefix(name.size() + 1);
+  if (rest.starts_with(' ')) return;  // a whole-file error: "name: what"
+  size_t line = 0;
+  size_t digits = 0;
+  for (; digits < rest.size() && rest[digits] >= '0' && rest[digits] <= '9';
+       ++digits) {
+    line = line * 10 + static_cast<size_t>(rest[digits] - '0');
+  }
+  if (digits == 0 || !rest.substr(digits).starts_with(": ")) {
+    Fail("error is neither 'name: what' nor 'name:LINE: what'", status);
+  }
+  if (line < 1 || line > LineCount(text)) Fail("line out of range", status);
+}
+
+// The dataset as CSV that must parse back to exactly the same doubles.
+std::string ToCsv(const Dataset& ds) {
+  std::string csv;
+  char row[128];
+  for (size_t i = 0; i < ds.points.size(); ++i) {
+    int n = ds.has_values()
+                ? std::snprintf(row, sizeof(row), "%.17g,%.17g,%.17g\n",
+                                ds.points[i].x, ds.points[i].y, ds.values[i])
+                : std::snprintf(row, sizeof(row), "%.17g,%.17g\n",
+                                ds.points[i].x, ds.points[i].y);
+    csv.append(row, static_cast<size_t>(n));
+  }
+  return csv;
+}
+
+bool SameDoubles(const Dataset& a, const Dataset& b) {
+  if (a.points.size() != b.points.size() || a.values != b.values) return false;
+  for (size_t i = 0; i < a.points.size(); ++i) {
+    if (a.points[i].x != b.points[i].x || a.points[i].y != b.points[i].y) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void CheckDataset(const Dataset& ds) {
+  const Status ok;
+  if (ds.points.empty()) Fail("parsed an empty dataset", ok);
+  if (ds.has_values() && ds.values.size() != ds.points.size()) {
+    Fail("values not parallel to points", ok);
+  }
+  for (const Point2& p : ds.points) {
+    if (!IsFinite(p)) Fail("parsed a non-finite coordinate", ok);
+  }
+  for (double v : ds.values) {
+    if (!std::isfinite(v)) Fail("parsed a non-finite value", ok);
+  }
+  Dataset again;
+  const Status reparsed = ParseXyzText(ToCsv(ds), kCsvName, &again);
+  if (!reparsed.ok()) Fail("its own CSV does not parse", reparsed);
+  if (!SameDoubles(ds, again)) Fail("CSV round trip changed the doubles", ok);
+}
+
+template <typename Parser>
+void Check(Parser parse, std::string_view text, std::string_view name) {
+  Dataset ds;
+  const Status status = parse(text, name, &ds, DatasetLimits());
+  if (status.ok()) {
+    CheckDataset(ds);
+  } else {
+    CheckError(status, text, name);
+  }
+}
+
+}  // namespace
+}  // namespace locator
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  locator::Check(locator::ParseXyzText, text, locator::kCsvName);
+  locator::Check(locator::ParseNodeText, text, locator::kNodeName);
+  return 0;
+}
