@@ -9,7 +9,14 @@ namespace locator {
 
 LocateStreamReactor::LocateStreamReactor(LocateFn locate)
     : locate_(std::move(locate)) {
-  reading_ = true;
+  {
+    // The reactions run on other threads; they see this construction (and
+    // what locate_ refers to) through mu_, like all other state. gRPC orders
+    // them after it too, but through synchronization ThreadSanitizer cannot
+    // see.
+    std::lock_guard<std::mutex> lock(mu_);
+    reading_ = true;
+  }
   StartRead(&request_);
 }
 
