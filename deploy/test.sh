@@ -1,10 +1,131 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test (README command 2).
+# README command 2, and what CI runs (.ci/run): installs what is missing,
+# builds, and runs every test. Then, each in its own build tree:
+#   asan  the whole suite under AddressSanitizer + UBSan (build-asan)
+#   tsan  the concurrency and end-to-end tests under ThreadSanitizer
+#         (build-tsan; only their executables and the servers they spawn)
+#   fuzz  every libFuzzer target for LOCATOR_FUZZ_SECONDS (build-fuzz, clang)
+#   soak  deploy/soak.sh for LOCATOR_SOAK_SECONDS on the plain build
+# Any test failure, sanitizer report (from a test or from a server it
+# started), fuzzer crash or soak failure fails the run. Stage timings are
+# printed at the end, pass or fail.
+#
+# Environment knobs (defaults are what CI runs):
+#   BUILD_DIR=build  LOCATOR_CI_SANITIZERS=1  LOCATOR_CI_FUZZ=1
+#   LOCATOR_CI_SOAK=1  LOCATOR_FUZZ_SECONDS=30  LOCATOR_SOAK_SECONDS=60
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash deploy/install-deps.sh
+
 BUILD_DIR="${BUILD_DIR:-build}"
-cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build "$BUILD_DIR" -j"$(nproc)"
-cd "$BUILD_DIR"
-ctest --output-on-failure -j"$(nproc)" --timeout 300
+SANITIZERS="${LOCATOR_CI_SANITIZERS:-1}"
+FUZZ="${LOCATOR_CI_FUZZ:-1}"
+SOAK="${LOCATOR_CI_SOAK:-1}"
+FUZZ_SECONDS="${LOCATOR_FUZZ_SECONDS:-30}"
+SOAK_SECONDS="${LOCATOR_SOAK_SECONDS:-60}"
+JOBS="$(nproc)"
+# Sanitizer trees: optimized like the real build, with line tables for
+# readable reports, and without locator-bench (a program, not a test).
+SANITIZER_FLAGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+  -DLOCATOR_BUILD_BENCH=OFF)
+
+# Each stage's wall time, and the CPU time (user + sys) of everything it ran:
+# on a shared machine the CPU time tells what a dedicated one would need.
+timings=()
+total_start=$SECONDS
+times_file=$(mktemp)
+print_timings() {
+  echo "== stage timings (seconds)"
+  printf '%s\n' "${timings[@]}"
+  printf '%-12s wall %5d\n' total $((SECONDS - total_start))
+  rm -f "$times_file"
+}
+trap print_timings EXIT
+
+# CPU seconds of the children waited for so far, from `times` (which must
+# run in this shell, not a subshell, hence the file).
+children_cpu() {
+  awk 'NR == 2 { split($0, t, /[ms]+/); printf "%d", t[1] * 60 + t[2] + t[3] * 60 + t[4] }' \
+    "$times_file"
+}
+
+# stage NAME COMMAND...: runs COMMAND as stage NAME and records its times.
+stage() {
+  local name=$1 start=$SECONDS cpu_start result=""
+  shift
+  echo "== [$name] $*"
+  times > "$times_file"
+  cpu_start=$(children_cpu)
+  "$@" || result="  FAILED"
+  times > "$times_file"
+  timings+=("$(printf '%-12s wall %5d  cpu %5d%s' "$name" \
+    $((SECONDS - start)) $(($(children_cpu) - cpu_start)) "$result")")
+  [ -z "$result" ] || exit 1
+}
+
+# build_tree DIR "TARGETS" CMAKE_ARGS...: configures DIR and builds TARGETS.
+build_tree() {
+  local dir=$1 targets=$2
+  shift 2
+  # shellcheck disable=SC2086  # TARGETS is a list
+  cmake -S . -B "$dir" -G Ninja "$@" &&
+    cmake --build "$dir" -j"$JOBS" --target $targets
+}
+
+# sanitized_ctest DIR CTEST_ARGS...: runs ctest in DIR with every sanitizer
+# halting on its first report and writing it to DIR/sanitizer-reports, where
+# reports of the servers the end-to-end tests spawn land too (their exit
+# status is not every test's business). Fails on a failed test or any report.
+# TSAN ignores what its interceptors (malloc, memcpy, ...) see when called
+# from code it did not instrument (gRPC, abseil, protobuf; see the top-level
+# CMakeLists.txt for why the gRPC layer is not instrumented): such accesses
+# have no visible synchronization, so each one would be a false report.
+sanitized_ctest() {
+  local dir=$1 reports="$PWD/$1/sanitizer-reports" status=0
+  shift
+  rm -rf "$reports" && mkdir -p "$reports" || return 1
+  ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_path=$reports/asan" \
+    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_path=$reports/ubsan" \
+    TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:log_path=$reports/tsan" \
+    ctest --test-dir "$dir" --output-on-failure -j"$JOBS" --timeout 900 "$@" ||
+    status=1
+  if compgen -G "$reports/*" > /dev/null; then
+    echo "sanitizer reports in $reports:"
+    cat "$reports"/*
+    status=1
+  fi
+  return $status
+}
+
+# fuzz_run: every fuzzer for its bounded time, then how many inputs each ran.
+fuzz_run() {
+  ctest --test-dir build-fuzz -L fuzz --output-on-failure -j"$JOBS" &&
+    grep -E '^[0-9]+/[0-9]+ Test: |^Done [0-9]+ runs' \
+      build-fuzz/Testing/Temporary/LastTest.log
+}
+
+stage deps bash deploy/install-deps.sh
+stage build build_tree "$BUILD_DIR" all -DCMAKE_BUILD_TYPE=Release
+stage test ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS" \
+  --timeout 300
+
+if [ "$SANITIZERS" != 0 ]; then
+  stage asan-build build_tree build-asan all "${SANITIZER_FLAGS[@]}" \
+    -DLOCATOR_SANITIZER=address
+  stage asan-test sanitized_ctest build-asan
+  stage tsan-build build_tree build-tsan "tests-concurrency tests-e2e" \
+    "${SANITIZER_FLAGS[@]}" -DLOCATOR_SANITIZER=thread
+  stage tsan-test sanitized_ctest build-tsan -L 'concurrency|e2e'
+fi
+
+if [ "$FUZZ" != 0 ]; then
+  stage fuzz-build build_tree build-fuzz fuzzers "${SANITIZER_FLAGS[@]}" \
+    -DCMAKE_CXX_COMPILER=clang++ -DLOCATOR_FUZZ=ON -DLOCATOR_BUILD_TESTS=OFF \
+    -DLOCATOR_FUZZ_SECONDS="$FUZZ_SECONDS"
+  stage fuzz-run fuzz_run
+fi
+
+if [ "$SOAK" != 0 ]; then
+  stage soak env BUILD_DIR="$BUILD_DIR" bash deploy/soak.sh \
+    --duration "$SOAK_SECONDS"
+fi
