@@ -162,23 +162,26 @@ TEST(QueryHistogramTest, ConcurrentAddsAreAllCounted) {
 TEST(QueryHistogramTest, DrainConcurrentWithAddsLosesNothing) {
   QueryHistogram h(GridGeometry(kBox, 10));
   std::atomic<int> running{kThreads};
+  std::atomic<int> drains{0};
   std::vector<std::thread> threads;
   for (int i = 0; i < kThreads; ++i) {
-    threads.emplace_back([&h, &running, i] {
+    threads.emplace_back([&h, &running, &drains, i] {
+      AddFromThread(&h, i);
+      // Every thread adds both before and after some drain, however the
+      // threads are scheduled.
+      while (drains.load() == 0) std::this_thread::yield();
       AddFromThread(&h, i);
       running.fetch_sub(1);
     });
   }
   std::vector<double> total;
-  int drains = 0;
   while (running.load() > 0) {
     h.Drain(&total);
-    ++drains;
+    drains.fetch_add(1);
   }
   for (std::thread& t : threads) t.join();
   h.Drain(&total);
-  EXPECT_GT(drains, 0);
-  EXPECT_EQ(Sum(total), double{kThreads} * kPerThread);
+  EXPECT_EQ(Sum(total), 2.0 * kThreads * kPerThread);
 }
 
 }  // namespace
