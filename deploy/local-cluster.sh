@@ -73,8 +73,8 @@ fail() { echo "local-cluster: $*" >&2; exit 1; }
 # connection.
 free_ports() {
   python3 - "$1" <<'PY'
-import random, socket, sys
-low = int(open("/proc/sys/net/ipv4/ip_local_port_range").read().split()[0])
+import pathlib, random, socket, sys
+low = int(pathlib.Path("/proc/sys/net/ipv4/ip_local_port_range").read_text().split()[0])
 chosen = set()
 while len(chosen) < int(sys.argv[1]):
     if low > 11000:
@@ -138,15 +138,15 @@ done
 # rewritten, inside a main config that keeps every file in $work.
 mkdir -p "$work/nginx"
 python3 - "$repo/deploy/nginx/locator.conf" "$work/nginx/locator.conf" "$nginx_port" "${ports[@]:1}" <<'PY'
-import re, sys
+import pathlib, re, sys
 template, out, listen, *replicas = sys.argv[1:]
-text = open(template).read()
+text = pathlib.Path(template).read_text()
 servers = iter(replicas)
 text, n = re.subn(r"server locator\d+:50051", lambda m: f"server 127.0.0.1:{next(servers)}", text)
 text, m = re.subn(r"listen 8080 http2;", f"listen 127.0.0.1:{listen} http2;", text)
 if (n, m) != (3, 1):
     sys.exit(f"{template}: expected 3 upstream servers and 1 listen line, found {n} and {m}")
-open(out, "w").write(text)
+pathlib.Path(out).write_text(text)
 PY
 cat > "$work/nginx/nginx.conf" <<EOF
 daemon off;
@@ -214,7 +214,7 @@ unset "pids[load]"
 "$LOCATOR" --target "$victim" --json stats > "$work/end-stats.json" || true
 
 python3 - "$work" "$has_state_dir" "$VICTIM" "$load_status" "${SUMMARY_JSON:-}" <<'PY'
-import json, os, sys
+import json, os, pathlib, sys
 
 work, has_state_dir, victim, load_status, summary_path = sys.argv[1:]
 # A fresh self-tuning replica cannot re-tune before retune_every / 4 = 500
@@ -224,10 +224,12 @@ EARLIEST_OWN_RETUNE = 500
 
 
 def load(name):
-    path = os.path.join(work, name)
-    if not os.path.exists(path) or os.path.getsize(path) == 0:
-        return {}
-    return json.load(open(path))
+    text = read(name) if os.path.exists(os.path.join(work, name)) else ""
+    return json.loads(text) if text else {}
+
+
+def read(name):
+    return pathlib.Path(work, name).read_text()
 
 
 def tuned_at_restart(stats):
@@ -251,7 +253,7 @@ run, probe = load("load.json"), load("probe.json")
 first, end = load("restart-stats.json"), load("end-stats.json")
 if not run:
     sys.exit("local-cluster: locator-load printed no report:\n" +
-             open(os.path.join(work, "load.err")).read())
+             read("load.err"))
 names = ["before", "during", "after"]
 phases = [dict(name=names[i] if i < 3 else f"phase {i + 1}",
                start_seconds=p["start_seconds"], calls=int(p["calls"]),
@@ -259,8 +261,7 @@ phases = [dict(name=names[i] if i < 3 else f"phase {i + 1}",
                p50_us=int(p["latency_us"]["p50"]),
                p99_us=int(p["latency_us"]["p99"]))
           for i, p in enumerate(run["phases"])]
-access_log = os.path.join(work, "nginx", "access.log")
-nginx_502 = sum(' 502 ' in line for line in open(access_log))
+nginx_502 = sum(" 502 " in line for line in read("nginx/access.log").splitlines())
 cold, steady = run["cost_window_means"][:1], run["cost_window_means"][-1:]
 summary = dict(
     calls=int(run["calls"]), failed_calls=int(run["failed_calls"]),
@@ -303,7 +304,7 @@ print(f"cost        restarted replica's first 500 queries {fmt(r['first_queries_
       f" per query (cluster: first 500 {fmt(summary['cluster_cold_mean_cost'])},"
       f" last 500 {fmt(summary['cluster_end_mean_cost'])})")
 if summary_path:
-    json.dump(summary, open(summary_path, "w"), indent=2)
+    pathlib.Path(summary_path).write_text(json.dumps(summary, indent=2))
 PY
 
 [ "$load_status" = 0 ] || fail "locator-load exited $load_status: some calls failed"

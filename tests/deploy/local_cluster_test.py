@@ -10,6 +10,7 @@ Usage: local_cluster_test.py SCRIPT BUILD_DIR
 
 import json
 import os
+import pathlib
 import subprocess
 import sys
 import tempfile
@@ -44,8 +45,9 @@ class LocalClusterTest(unittest.TestCase):
                 timeout=240, check=False)
             print(cls.run_result.stdout, cls.run_result.stderr,
                   file=sys.stderr)
-            cls.summary = (json.load(open(summary_path))
-                           if os.path.exists(summary_path) else None)
+            summary = pathlib.Path(summary_path)
+            cls.summary = (json.loads(summary.read_text())
+                           if summary.exists() else None)
 
     def setUp(self):
         self.assertIsNotNone(self.summary, "the script wrote no summary")
