@@ -207,6 +207,31 @@ TEST(TuningPersistenceTest, TheTunerThreadSavesAfterARetune) {
   EXPECT_TRUE(std::filesystem::exists(p.state_path));
 }
 
+// Readers, the tuner thread's saves, explicit saves and stats all at once
+// (run under ThreadSanitizer with ctest -L concurrency).
+TEST(TuningPersistenceTest, SavesWhileManyThreadsLocate) {
+  ScratchDir dir;
+  EngineOptions options = Options(dir.path());
+  options.tuning.background = true;
+  const std::unique_ptr<Engine> engine = NewEngine(options);
+  std::vector<std::thread> readers;
+  for (uint64_t seed = 10; seed < 14; ++seed) {
+    readers.emplace_back([&engine, seed] {
+      Feed(*engine, Clustered(*engine, 5 * kRetuneEvery, seed));
+    });
+  }
+  for (int k = 0; k < 20; ++k) {
+    EXPECT_TRUE(engine->SaveTuningState().ok());
+    EXPECT_EQ(engine->Stats().tuning.persistence.save_error, "");
+  }
+  for (std::thread& reader : readers) reader.join();
+  EXPECT_TRUE(engine->SaveTuningState().ok());
+  EXPECT_GE(engine->Stats().tuning.persistence.saves, 1u);
+  EXPECT_TRUE(NewEngine(Options(dir.path()))
+                  ->Stats()
+                  .tuning.persistence.restored_from_state);
+}
+
 TEST(TuningPersistenceTest, AFailedSaveIsReported) {
   ScratchDir dir;
   const std::string gone = dir.path() + "/gone";
