@@ -3,7 +3,9 @@
 
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -62,12 +64,14 @@ TEST_F(LocatorCliReloadTest, ReloadPrintsTheNewDatasetAndGeneration) {
 }
 
 TEST_F(LocatorCliReloadTest, ABadDatasetIsAnRpcErrorWithFileAndLine) {
-  const std::string path = ::testing::TempDir() + "locator_cli_reload_bad.csv";
+  const std::string path = ::testing::TempDir() + "locator_cli_reload_bad_" +
+                           std::to_string(getpid()) + ".csv";
   std::ofstream(path) << "x,y\n1,2\n3,zz\n";
   const BinaryResult result = Locator({"reload", "--dataset", path});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(result.err.rfind("error: INVALID_ARGUMENT: " + path + ":3", 0), 0u)
       << result.err;
+  std::remove(path.c_str());
 }
 
 TEST_F(LocatorCliReloadTest, DatasetIsForReloadOnly) {
