@@ -36,6 +36,9 @@ LocatorService::LocatorService(const LocatorServiceOptions& options)
       reloader_(
           [this, build = options.build_engine](const std::string& dataset,
                                                std::shared_ptr<Engine>* built) {
+            if (!build) {
+              return Status::FailedPrecondition("this server cannot reload");
+            }
             const std::shared_ptr<Engine> serving = engine();
             return build(dataset, serving.get(), built);
           },

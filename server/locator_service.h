@@ -41,7 +41,7 @@ struct LocatorServiceOptions {
   size_t max_batch_points = 1'000'000;
   // Builds the engine for a dataset spec ("": the configured dataset), given
   // the engine serving now (null before the first); runs on the reload
-  // thread.
+  // thread. Unset: reloads fail with FAILED_PRECONDITION.
   std::function<Status(const std::string& dataset, Engine* serving,
                        std::shared_ptr<Engine>* built)>
       build_engine;
