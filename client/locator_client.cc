@@ -140,6 +140,15 @@ grpc::Status LocatorClient::Retune(v1::RetuneResponse* response) {
   return stub_->Retune(&context, v1::RetuneRequest(), response);
 }
 
+grpc::Status LocatorClient::Reload(const std::string& dataset,
+                                   v1::ReloadResponse* response) {
+  v1::ReloadRequest request;
+  request.set_dataset(dataset);
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->Reload(&context, request, response);
+}
+
 grpc::Status LocatorClient::CheckHealth(HealthStatus* status) {
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);

@@ -89,6 +89,8 @@ class LocatorClient {
   grpc::Status GetStats(v1::GetStatsResponse* response);
   // Re-tunes the server now.
   grpc::Status Retune(v1::RetuneResponse* response);
+  // Makes the server load `dataset` ("": its configured one) and serve it.
+  grpc::Status Reload(const std::string& dataset, v1::ReloadResponse* response);
   // Asks the standard health service about the server as a whole.
   grpc::Status CheckHealth(HealthStatus* status);
 

@@ -32,16 +32,40 @@ grpc::ServerUnaryReactor* FinishNow(grpc::CallbackServerContext* context,
 }  // namespace
 
 LocatorService::LocatorService(const LocatorServiceOptions& options)
-    : batch_locator_(options.batch_threads, options.max_batch_points) {}
+    : batch_locator_(options.batch_threads, options.max_batch_points),
+      reloader_(
+          [this, build = options.build_engine](const std::string& dataset,
+                                               std::shared_ptr<Engine>* built) {
+            if (!build) {
+              return Status::FailedPrecondition("this server cannot reload");
+            }
+            const std::shared_ptr<Engine> serving = engine();
+            return build(dataset, serving.get(), built);
+          },
+          [this](std::shared_ptr<Engine> engine) {
+            return Publish(std::move(engine));
+          }) {}
 
-void LocatorService::Publish(std::shared_ptr<Engine> engine) {
+uint64_t LocatorService::Publish(std::shared_ptr<Engine> engine) {
   std::lock_guard<std::mutex> lock(engine_mu_);
   engine_ = std::move(engine);
+  return ++generation_;
 }
 
 std::shared_ptr<Engine> LocatorService::engine() const {
   std::lock_guard<std::mutex> lock(engine_mu_);
   return engine_;
+}
+
+std::shared_ptr<Engine> LocatorService::engine(uint64_t* generation) const {
+  std::lock_guard<std::mutex> lock(engine_mu_);
+  *generation = generation_;
+  return engine_;
+}
+
+Status LocatorService::StartReload(const std::string& dataset,
+                                   EngineReloader::Done done) {
+  return reloader_.Start(dataset, std::move(done));
 }
 
 grpc::ServerUnaryReactor* LocatorService::Locate(
@@ -86,9 +110,12 @@ LocatorService::LocateStream(grpc::CallbackServerContext* /*context*/) {
 grpc::ServerUnaryReactor* LocatorService::GetStats(
     grpc::CallbackServerContext* context,
     const v1::GetStatsRequest* /*request*/, v1::GetStatsResponse* response) {
-  std::shared_ptr<Engine> engine = this->engine();
+  uint64_t generation = 0;
+  std::shared_ptr<Engine> engine = this->engine(&generation);
   if (engine == nullptr) return FinishNow(context, LoadingStatus());
   ToGetStatsResponse(engine->Stats(), response);
+  response->set_generation(generation);
+  response->set_reload_in_progress(reloader_.in_progress());
   return FinishNow(context, grpc::Status::OK);
 }
 
@@ -101,6 +128,24 @@ grpc::ServerUnaryReactor* LocatorService::Retune(
   ToTuningStats(engine->Stats().tuning, /*include_histogram=*/false,
                 response->mutable_tuning());
   return FinishNow(context, grpc::Status::OK);
+}
+
+grpc::ServerUnaryReactor* LocatorService::Reload(
+    grpc::CallbackServerContext* context, const v1::ReloadRequest* request,
+    v1::ReloadResponse* response) {
+  if (engine() == nullptr) return FinishNow(context, LoadingStatus());
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  // The reload thread finishes the call.
+  const Status started = StartReload(
+      request->dataset(),
+      [reactor, response](const Status& status, std::shared_ptr<Engine> engine,
+                          uint64_t generation) {
+        if (status.ok())
+          ToReloadResponse(engine->Stats(), generation, response);
+        reactor->Finish(ToGrpcStatus(status));
+      });
+  if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
+  return reactor;
 }
 
 }  // namespace locator

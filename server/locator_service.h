@@ -8,6 +8,10 @@
 // server/core/snapshot_slot.h.) Until Publish(), every RPC answers
 // UNAVAILABLE "dataset is still loading".
 //
+// Also owns the EngineReloader that builds engines for StartReload() (the
+// Reload RPC, SIGHUP, the first build) off the calling thread and publishes
+// them. Each Publish() starts a new generation (the first engine is 1).
+//
 // Thread-safety: all methods may be called concurrently, Publish() included.
 
 #ifndef LOCATOR_SERVER_LOCATOR_SERVICE_H_
@@ -16,12 +20,17 @@
 #include <grpcpp/grpcpp.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <string>
 
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/batch_locator.h"
 #include "server/core/engine.h"
+#include "server/core/status.h"
+#include "server/engine_reloader.h"
 
 namespace locator {
 
@@ -30,6 +39,12 @@ struct LocatorServiceOptions {
   size_t batch_threads = 1;
   // LocateBatch requests with more points fail with RESOURCE_EXHAUSTED.
   size_t max_batch_points = 1'000'000;
+  // Builds the engine for a dataset spec ("": the configured dataset), given
+  // the engine serving now (null before the first); runs on the reload
+  // thread. Unset: reloads fail with FAILED_PRECONDITION.
+  std::function<Status(const std::string& dataset, Engine* serving,
+                       std::shared_ptr<Engine>* built)>
+      build_engine;
 };
 
 class LocatorService final : public v1::Locator::CallbackService {
@@ -37,11 +52,17 @@ class LocatorService final : public v1::Locator::CallbackService {
   explicit LocatorService(const LocatorServiceOptions& options);
 
   // Starts answering with `engine`; calls already running keep the engine
-  // they started with.
-  void Publish(std::shared_ptr<Engine> engine);
+  // they started with. Returns its generation.
+  uint64_t Publish(std::shared_ptr<Engine> engine);
 
   // The engine new calls use, or null while the dataset is loading.
   std::shared_ptr<Engine> engine() const;
+
+  // Builds an engine for `dataset` ("": the configured one) with
+  // options.build_engine on the reload thread and publishes it; then calls
+  // `done` there with the outcome (see EngineReloader::Start).
+  // FailedPrecondition "reload in progress" while another build runs.
+  Status StartReload(const std::string& dataset, EngineReloader::Done done);
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
                                    const v1::LocateRequest* request,
@@ -61,11 +82,22 @@ class LocatorService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Retune(grpc::CallbackServerContext* context,
                                    const v1::RetuneRequest* request,
                                    v1::RetuneResponse* response) override;
+  // Finishes when the new engine serves or the build failed (see
+  // StartReload); the callback thread is not held meanwhile.
+  grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
+                                   const v1::ReloadRequest* request,
+                                   v1::ReloadResponse* response) override;
 
  private:
+  // engine() and its generation (how many engines were published), read
+  // together.
+  std::shared_ptr<Engine> engine(uint64_t* generation) const;
+
   mutable std::mutex engine_mu_;
   std::shared_ptr<Engine> engine_;  // guarded by engine_mu_
+  uint64_t generation_ = 0;         // guarded by engine_mu_
   BatchLocator batch_locator_;
+  EngineReloader reloader_;
 };
 
 }  // namespace locator

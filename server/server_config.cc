@@ -5,6 +5,7 @@
 #include <boost/program_options.hpp>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -33,6 +34,7 @@ struct EngineFlags {
   std::string budget;
   std::string stats_interval_s;
   std::string retune_interval_s;
+  std::string state_dir;
 };
 
 Status FlagError(std::string_view flag, std::string_view text,
@@ -172,7 +174,26 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       "log a stats line this often; 0 = never")(
       "retune-interval-s",
       po::value(&flags->retune_interval_s)->default_value("0"),
-      "also re-tune this often; 0 = only by query count");
+      "also re-tune this often; 0 = only by query count")(
+      "state-dir", po::value(&flags->state_dir)->default_value(""),
+      "self-tuning: directory where the learned tuning persists across "
+      "restarts and reloads; empty = off");
+}
+
+// The state dir must exist (locatord does not create directories), and only
+// the self-tuning strategy has state to keep.
+Status ReadStateDir(const EngineFlags& flags, EngineOptions* engine) {
+  if (flags.state_dir.empty()) return Status::OK();
+  std::error_code error;
+  if (!std::filesystem::is_directory(flags.state_dir, error)) {
+    return FlagError("state-dir", flags.state_dir, "not a directory");
+  }
+  if (engine->strategy != "self-tuning") {
+    return FlagError("state-dir", flags.state_dir,
+                     "only the self-tuning strategy keeps state");
+  }
+  engine->tuning.state_dir = flags.state_dir;
+  return Status::OK();
 }
 
 Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
@@ -207,6 +228,7 @@ Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
     status = ParseSeconds("retune-interval-s", flags.retune_interval_s,
                           &config->retune_interval_s);
   }
+  if (status.ok()) status = ReadStateDir(flags, &engine);
   return status;
 }
 

@@ -41,8 +41,8 @@ struct ServerConfig {
   ServingConfig serving;
   // --dataset: a file path or generator spec (see LoadDataset).
   std::string dataset = "uniform:1000000:1";
-  // --strategy, --grid, --warmup, --retune-every, --budget; the server always
-  // re-tunes in the background.
+  // --strategy, --grid, --warmup, --retune-every, --budget, --state-dir; the
+  // server always re-tunes in the background.
   EngineOptions engine;
   // --stats-interval-s: period of the stats log line; 0 = off.
   double stats_interval_s = 0;

@@ -13,7 +13,9 @@
 namespace locator {
 
 ServerRunner::ServerRunner(std::string_view program)
-    : program_(program), signals_(io_context_, SIGINT, SIGTERM) {}
+    : program_(program),
+      signals_(io_context_, SIGINT, SIGTERM),
+      hangup_(io_context_, SIGHUP) {}
 
 std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
     std::string_view program, const ServingConfig& config,
@@ -77,7 +79,28 @@ void ServerRunner::Stop(int exit_code) {
   io_context_.stop();
 }
 
+void ServerRunner::OnHangup(std::function<void()> handler) {
+  hangup_handler_ = std::move(handler);
+}
+
+void ServerRunner::BeforeExit(std::function<void()> hook) {
+  before_exit_ = std::move(hook);
+}
+
+void ServerRunner::WaitForHangup() {
+  hangup_.async_wait([this](const boost::system::error_code& error, int) {
+    if (error) return;  // cancelled: the loop is stopping
+    if (hangup_handler_) {
+      hangup_handler_();
+    } else {
+      std::cerr << program_ << " received SIGHUP; nothing to do" << std::endl;
+    }
+    WaitForHangup();
+  });
+}
+
 void ServerRunner::RunAndExit() {
+  WaitForHangup();
   signals_.async_wait(
       [this](const boost::system::error_code& error, int signal_number) {
         if (error) return;
@@ -86,10 +109,11 @@ void ServerRunner::RunAndExit() {
         Stop(0);
       });
   io_context_.run();
-  // Every call has been answered and the server is shut down; what is left
-  // holds no state worth saving. Tearing it down would cost time: gRPC's
-  // global shutdown can idle for up to 10 s on an executor thread's poll,
-  // and a triangulation build cannot be interrupted.
+  // Every call has been answered and the server is shut down; the hook saves
+  // whatever state is worth keeping, and the rest is not torn down. That
+  // would cost time: gRPC's global shutdown can idle for up to 10 s on an
+  // executor thread's poll, and a triangulation build cannot be interrupted.
+  if (before_exit_) before_exit_();
   std::cout.flush();
   std::cerr.flush();
   std::_Exit(exit_code_);

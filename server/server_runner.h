@@ -6,13 +6,15 @@
 // listening on HOST:PORT" (the port actually bound) on stdout. RunAndExit()
 // then drives the loop on the calling thread until SIGINT or SIGTERM, or
 // until Stop(): the server goes NOT_SERVING, new calls are refused,
-// in-flight calls get kDrainDeadline to complete, and the process exits with
-// the exit code.
+// in-flight calls get kDrainDeadline to complete, the BeforeExit() hook
+// runs, and the process exits with the exit code. SIGHUP never ends the
+// process: it calls the OnHangup() handler (e.g. a reload), or is logged
+// and ignored without one.
 //
-// Owns the server, the io_context, its signal set and timers. Thread-safety:
-// SetServing() may be called from any thread; RunEvery() and Stop() only on
-// the loop thread (post to io_context() from elsewhere); the rest from the
-// thread that called StartOrExit().
+// Owns the server, the io_context, its signal sets and timers.
+// Thread-safety: SetServing() may be called from any thread; RunEvery() and
+// Stop() only on the loop thread (post to io_context() from elsewhere); the
+// rest from the thread that called StartOrExit().
 
 #ifndef LOCATOR_SERVER_SERVER_RUNNER_H_
 #define LOCATOR_SERVER_SERVER_RUNNER_H_
@@ -60,6 +62,12 @@ class ServerRunner {
   // exit with `exit_code`.
   void Stop(int exit_code);
 
+  // Calls `handler` on the loop thread on every SIGHUP.
+  void OnHangup(std::function<void()> handler);
+  // Calls `hook` on the loop thread once the server has shut down, right
+  // before the process exits (after a signal or Stop()).
+  void BeforeExit(std::function<void()> hook);
+
   // Runs the loop until a signal (exit code 0) or Stop(), then ends the
   // process at once: objects still alive, including threads other code
   // started, are not torn down.
@@ -71,10 +79,16 @@ class ServerRunner {
   void ScheduleTick(boost::asio::steady_timer* timer,
                     std::chrono::steady_clock::duration period,
                     std::function<void()> tick);
+  // Waits for the next SIGHUP, handles it and waits again.
+  void WaitForHangup();
 
   const std::string program_;
   boost::asio::io_context io_context_;
   boost::asio::signal_set signals_;
+  // SIGHUP, registered from the start so that it cannot kill the process.
+  boost::asio::signal_set hangup_;
+  std::function<void()> hangup_handler_;
+  std::function<void()> before_exit_;
   std::list<boost::asio::steady_timer> timers_;  // stable addresses
   std::unique_ptr<grpc::Server> server_;
   int exit_code_ = 0;

@@ -103,6 +103,8 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
 
 void Engine::Retune() { locator_->Retune(); }
 
+Status Engine::SaveTuningState() { return locator_->SaveState(); }
+
 EngineStats Engine::Stats() const {
   EngineStats s;
   s.dataset = info_;

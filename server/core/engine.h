@@ -90,6 +90,11 @@ class Engine {
   // Re-tunes the strategy now (no-op for fixed strategies).
   void Retune();
 
+  // Saves the strategy's learned state to its state file now if it changed
+  // since the last save (EngineOptions::tuning.state_dir); OK when nothing
+  // persists. Safe while queries and re-tunes run.
+  Status SaveTuningState();
+
   const DatasetInfo& dataset_info() const { return info_; }
   EngineStats Stats() const;
 

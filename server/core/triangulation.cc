@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "server/core/fnv_hash.h"
+
 namespace locator {
 
 namespace {
@@ -144,6 +146,48 @@ Triangulation::Face_handle Triangulation::FiniteFaceAt(Vertex_handle v) const {
 Triangulation::Face_handle Triangulation::DefaultStart() const {
   const Face_handle inf = dt_.infinite_face();
   return inf->neighbor(inf->index(dt_.infinite_vertex()));
+}
+
+uint64_t Triangulation::VertexDigest() const {
+  Fnv1a64 hash;
+  for (size_t id = 0; id < by_input_.size(); ++id) {
+    const Vertex_handle v = by_input_[id];
+    if (static_cast<size_t>(v->info().id) != id) continue;  // merged
+    hash.AddU64(id);
+    hash.AddDouble(v->point().x());
+    hash.AddDouble(v->point().y());
+  }
+  return hash.digest();
+}
+
+std::array<uint32_t, 3> Triangulation::CornerIds(Face_handle f) const {
+  std::array<uint32_t, 3> ids;
+  for (int i = 0; i < 3; ++i) {
+    ids[i] = static_cast<uint32_t>(f->vertex(i)->info().id);
+  }
+  return ids;
+}
+
+bool Triangulation::FaceWithCorners(const std::array<uint32_t, 3>& ids,
+                                    Face_handle* face) const {
+  std::array<Vertex_handle, 3> corners;
+  for (int i = 0; i < 3; ++i) {
+    if (ids[i] >= by_input_.size()) return false;
+    corners[i] = by_input_[ids[i]];
+    if (corners[i]->info().id != ids[i]) return false;  // merged
+  }
+  // The face is among those around its first corner.
+  auto f = dt_.incident_faces(corners[0]);
+  const auto end = f;
+  do {
+    const int i = f->index(corners[0]);
+    if (!dt_.is_infinite(f) && f->vertex(Ccw(i)) == corners[1] &&
+        f->vertex(Cw(i)) == corners[2]) {
+      *face = f;
+      return true;
+    }
+  } while (++f != end);
+  return false;
 }
 
 void Triangulation::Describe(Face_handle f, LocationType type, int feature,

@@ -4,6 +4,7 @@
 
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
@@ -28,8 +29,11 @@ using testing::ServerProcess;
 constexpr int kDatasetPoints = 300;
 constexpr int kBatchRows = 25;
 
+// A file of this process's own: ctest runs each test in a process of its
+// own, several at once, and they must not rewrite each other's files.
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "locator_cli_e2e_" + name;
+  const std::string path = ::testing::TempDir() + "locator_cli_e2e_" +
+                           std::to_string(getpid()) + "_" + name;
   std::ofstream(path) << text;
   return path;
 }

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 namespace locator::e2e {
 namespace {
@@ -179,6 +181,17 @@ v1::GetStatsResponse GetStats(v1::Locator::Stub& stub) {
   v1::GetStatsResponse stats;
   const grpc::Status status = stub.GetStats(&context, {}, &stats);
   EXPECT_TRUE(status.ok()) << status.error_message();
+  return stats;
+}
+
+v1::GetStatsResponse WaitForStats(
+    v1::Locator::Stub& stub,
+    const std::function<bool(const v1::GetStatsResponse&)>& done) {
+  v1::GetStatsResponse stats = GetStats(stub);
+  for (int attempt = 0; attempt < 500 && !done(stats); ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    stats = GetStats(stub);
+  }
   return stats;
 }
 

@@ -14,6 +14,7 @@
 #define LOCATOR_TESTS_SERVER_E2E_SUPPORT_H_
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -66,6 +67,10 @@ grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
                        v1::LocateResponse* response);
 // Calls GetStats; a failed call is a test failure (and an empty answer).
 v1::GetStatsResponse GetStats(v1::Locator::Stub& stub);
+// Polls GetStats until `done` holds or ~10 s pass; returns the last answer.
+v1::GetStatsResponse WaitForStats(
+    v1::Locator::Stub& stub,
+    const std::function<bool(const v1::GetStatsResponse&)>& done);
 
 // An answer that came over the wire, as the core would have returned it.
 LocateResult FromLocateResponse(const v1::LocateResponse& response);

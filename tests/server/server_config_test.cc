@@ -41,6 +41,7 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   EXPECT_EQ(config.engine.tuning.budget_bytes, 0u);
   EXPECT_EQ(config.stats_interval_s, 0);
   EXPECT_EQ(config.retune_interval_s, 0);
+  EXPECT_EQ(config.engine.tuning.state_dir, "");
 }
 
 TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
@@ -127,6 +128,19 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << args[0];
     EXPECT_THAT(status.message(), HasSubstr(args[0]));
   }
+}
+
+TEST(ServerConfigTest, StateDirMustBeADirectoryForSelfTuning) {
+  const std::string dir = ::testing::TempDir();
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--state-dir", dir}, &config).ok());
+  EXPECT_EQ(config.engine.tuning.state_dir, dir);
+  const Status missing = Parse({"--state-dir", dir + "/no/such/dir"}, &config);
+  EXPECT_THAT(missing.message(), HasSubstr("--state-dir"));
+  EXPECT_THAT(missing.message(), HasSubstr("not a directory"));
+  EXPECT_THAT(
+      Parse({"--state-dir", dir, "--strategy", "walk"}, &config).message(),
+      HasSubstr("only the self-tuning strategy keeps state"));
 }
 
 TEST(ServerConfigTest, UnknownFlagsAndStrayArgumentsFail) {
