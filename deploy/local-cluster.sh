@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A 3-replica locator cluster on this machine, with no container engine:
-# three locatord on loopback, each with its own state directory (when the
-# binary has --state-dir), behind Debian's nginx configured from
+# three locatord on loopback, each with its own state directory, behind
+# Debian's nginx configured from
 # deploy/nginx/locator.conf. It drives locator-load (unary calls, with the
 # client's gRPC retry policy) through nginx, SIGKILLs one replica mid-run,
 # restarts it a few seconds later on the same port and state directory, and
@@ -107,19 +107,16 @@ wait_for() {
   done
 }
 
-has_state_dir=0
-if "$LOCATORD" --help 2>&1 | grep -q -- '--state-dir'; then has_state_dir=1; fi
-
 read -r -a ports <<< "$(free_ports 4)"
 nginx_port=${ports[0]}
 
 # start_replica I: starts replica I on its port (again, after a kill) and
 # waits until it listens; SERVING comes later, once the dataset is built.
 start_replica() {
-  local i=$1 args=()
+  local i=$1
   mkdir -p "$work/replica$i/state"
-  if [ $has_state_dir = 1 ]; then args=(--state-dir "$work/replica$i/state"); fi
-  "$LOCATORD" --dataset "$DATASET" --listen "127.0.0.1:${ports[$i]}" "${args[@]}" \
+  "$LOCATORD" --dataset "$DATASET" --listen "127.0.0.1:${ports[$i]}" \
+    --state-dir "$work/replica$i/state" \
     >> "$work/replica$i/locatord.log" 2>&1 &
   pids[replica$i]=$!
   wait_for 60 $! "$work/replica$i/locatord.log" \
@@ -128,7 +125,7 @@ start_replica() {
 
 health() { "$LOCATOR" --target "$1" --deadline-ms 1000 health; }
 
-log "3 replicas of $DATASET on ports ${ports[*]:1}, state dirs: $([ $has_state_dir = 1 ] && echo yes || echo 'no (locatord has no --state-dir)')"
+log "3 replicas of $DATASET on ports ${ports[*]:1}, each with a state dir"
 for i in 1 2 3; do start_replica $i; done
 for i in 1 2 3; do
   wait_for 300 "${pids[replica$i]}" "$work/replica$i/locatord.log" health "127.0.0.1:${ports[$i]}"
@@ -213,10 +210,10 @@ wait "${pids[load]}" || load_status=$?
 unset "pids[load]"
 "$LOCATOR" --target "$victim" --json stats > "$work/end-stats.json" || true
 
-python3 - "$work" "$has_state_dir" "$VICTIM" "$load_status" "${SUMMARY_JSON:-}" <<'PY'
+python3 - "$work" "$VICTIM" "$load_status" "${SUMMARY_JSON:-}" <<'PY'
 import json, os, pathlib, sys
 
-work, has_state_dir, victim, load_status, summary_path = sys.argv[1:]
+work, victim, load_status, summary_path = sys.argv[1:]
 # A fresh self-tuning replica cannot re-tune before retune_every / 4 = 500
 # queries (server/core/self_tuning_locator.cc); a tuning seen earlier was
 # restored from its state directory.
@@ -235,15 +232,13 @@ def read(name):
 def tuned_at_restart(stats):
     """Whether the restarted replica's first GetStats shows learned tuning.
 
-    True when it reports hot regions (a fresh replica has none) or a
-    restored-state flag (any field named like "restored"), before it could
-    have learned anything itself; None when the capture came too late to
-    tell.
+    True when it says it restored its state file and already has hot regions
+    (a fresh replica has none), before it could have learned anything
+    itself; None when the capture came too late to tell.
     """
     tuning = stats.get("tuning", {})
-    restored_flag = any("restor" in key.lower() and value
-                        for key, value in {**stats, **tuning}.items())
-    learned = bool(tuning.get("hot_regions")) or restored_flag
+    restored = bool(tuning.get("persistence", {}).get("restored_from_state"))
+    learned = restored and bool(tuning.get("hot_regions"))
     if int(stats.get("queries_served", 0)) >= EARLIEST_OWN_RETUNE:
         return None
     return learned
@@ -267,7 +262,7 @@ summary = dict(
     calls=int(run["calls"]), failed_calls=int(run["failed_calls"]),
     errors=run["errors"], load_exit_code=int(load_status),
     p99_us=int(run["latency_us"]["p99"]), phases=phases,
-    nginx_502_answers=nginx_502, state_dir_supported=has_state_dir == "1",
+    nginx_502_answers=nginx_502,
     restarted=dict(
         replica=int(victim),
         first_stats_queries_served=int(first.get("queries_served", 0)),
@@ -293,8 +288,7 @@ for p in phases:
           f" {p['failed_calls']} failed, p50 {ms(p['p50_us'])}, p99 {ms(p['p99_us'])}")
 r = summary["restarted"]
 verdict = {True: "yes", False: "no", None: "unknown (captured too late)"}
-print(f"restarted   replica {victim}: state dir "
-      f"{'yes' if summary['state_dir_supported'] else 'unsupported'}; first GetStats:"
+print(f"restarted   replica {victim}: first GetStats:"
       f" {r['first_stats_queries_served']} queries served, snapshot"
       f" {r['first_stats_snapshot_version']}, {r['first_stats_retune_count']} re-tunes,"
       f" {r['first_stats_hot_regions']} hot regions -> tuned at restart:"

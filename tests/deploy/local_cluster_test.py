@@ -72,8 +72,6 @@ class LocalClusterTest(unittest.TestCase):
             self.assertLessEqual(phase["p50_us"], phase["p99_us"], phase)
 
     def test_restarted_replica_came_back_tuned(self):
-        if not self.summary["state_dir_supported"]:
-            self.skipTest("locatord has no --state-dir yet")
         restarted = self.summary["restarted"]
         # None means the first GetStats came after the replica could have
         # re-tuned by itself; that proves nothing either way.
