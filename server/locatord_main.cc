@@ -16,9 +16,11 @@
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
+#include "server/http/status_server.h"
 #include "server/locator_service.h"
 #include "server/server_config.h"
 #include "server/server_runner.h"
@@ -75,7 +77,14 @@ Status BuildEngine(const ServerConfig& config,
 
 // Periodic work acts on whichever engine the service currently publishes.
 void StartPeriodicWork(const ServerConfig& config,
-                       const LocatorService& service, ServerRunner* runner) {
+                       const LocatorService& service, StatusServer* status,
+                       ServerRunner* runner) {
+  if (status != nullptr) {
+    // The first sample is the baseline the first interval is measured from.
+    status->SampleHistory();
+    runner->RunEvery(StatusServer::kHistorySeconds,
+                     [status] { status->SampleHistory(); });
+  }
   if (config.stats_interval_s > 0) {
     runner->RunEvery(config.stats_interval_s, [&service] {
       const EngineStats stats = service.engine()->Stats();
@@ -102,8 +111,29 @@ int Main(int argc, char** argv) {
   LocatorService service(LocatorServiceOptions{
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points});
-  const std::unique_ptr<ServerRunner> runner =
-      ServerRunner::StartOrExit(kProgram, config.serving, {&service});
+  // With --http-listen, every gRPC call is counted for /metrics.
+  std::unique_ptr<StatusServer> status_server;
+  std::vector<
+      std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
+      interceptors;
+  if (config.http_enabled()) {
+    status_server =
+        std::make_unique<StatusServer>([&service] { return service.engine(); });
+    interceptors.push_back(status_server->NewInterceptorFactory());
+  }
+  const std::unique_ptr<ServerRunner> runner = ServerRunner::StartOrExit(
+      kProgram, config.serving, {&service}, std::move(interceptors));
+  if (status_server != nullptr) {
+    if (Status listening =
+            status_server->Listen(config.http_host, config.http_port);
+        !listening.ok()) {
+      std::cerr << kProgram << ": " << listening.message() << std::endl;
+      runner->Stop(1);
+      runner->RunAndExit();
+    }
+    std::cout << kProgram << " http listening on " << config.http_host << ":"
+              << status_server->port() << std::endl;
+  }
 
   // The build runs off the loop so that signals are handled meanwhile; its
   // outcome is handed to the loop, which owns every state change. The thread
@@ -122,7 +152,7 @@ int Main(int argc, char** argv) {
       runner->SetServing(true);
       LogLine() << "serving " << engine->dataset_info().triangles
                 << " triangles";
-      StartPeriodicWork(config, service, runner.get());
+      StartPeriodicWork(config, service, status_server.get(), runner.get());
     });
   }).detach();
   runner->RunAndExit();

@@ -33,6 +33,7 @@ struct EngineFlags {
   std::string budget;
   std::string stats_interval_s;
   std::string retune_interval_s;
+  std::string http_listen;
 };
 
 Status FlagError(std::string_view flag, std::string_view text,
@@ -172,7 +173,10 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       "log a stats line this often; 0 = never")(
       "retune-interval-s",
       po::value(&flags->retune_interval_s)->default_value("0"),
-      "also re-tune this often; 0 = only by query count");
+      "also re-tune this often; 0 = only by query count")(
+      "http-listen", po::value(&flags->http_listen)->default_value(""),
+      "HOST:PORT for /metrics and the status page; port 0 lets the OS pick "
+      "(the chosen port is printed); empty = off");
 }
 
 Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
@@ -206,6 +210,13 @@ Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
   if (status.ok()) {
     status = ParseSeconds("retune-interval-s", flags.retune_interval_s,
                           &config->retune_interval_s);
+  }
+  if (status.ok() && !flags.http_listen.empty()) {
+    status = ParseListenAddress(flags.http_listen, &config->http_host,
+                                &config->http_port);
+    if (!status.ok()) {
+      return FlagError("http-listen", flags.http_listen, status.message());
+    }
   }
   return status;
 }
