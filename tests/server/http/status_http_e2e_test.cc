@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "client/health_check.h"
 #include "tests/server/e2e_support.h"
 #include "tests/server/http/http_test_client.h"
 #include "tests/server/http/prometheus_text.h"
@@ -65,6 +66,12 @@ class StatusHttpTest : public ::testing::Test {
     v1::LocateBatchResponse answers;
     ASSERT_TRUE(stub->LocateBatch(&context, batch, &answers).ok());
     cost_sum_ += answers.total_cost();
+    // Another service than locator.v1's.
+    HealthChecker health(grpc::CreateChannel(
+        server_->grpc_target(), grpc::InsecureChannelCredentials()));
+    grpc::ClientContext health_context;
+    HealthStatus serving = HealthStatus::kUnknown;
+    ASSERT_TRUE(health.Check(&health_context, "", &serving).ok());
   }
   static void TearDownTestSuite() { server_.reset(); }
 
@@ -105,6 +112,11 @@ TEST_F(StatusHttpTest, RpcCountersMatchTheCallsMade) {
             std::nullopt);
   EXPECT_EQ(m.Value("locator_rpc_requests_total",
                     {{"method", "LocateBatch"}, {"code", "OK"}}),
+            1);
+  EXPECT_EQ(m.Value("locator_rpc_requests_total",
+                    {{"service", "grpc.health.v1.Health"},
+                     {"method", "Check"},
+                     {"code", "OK"}}),
             1);
   EXPECT_EQ(m.Value("locator_rpc_duration_seconds_count", kLocate),
             kLocateCalls + kInvalidCalls);
