@@ -16,9 +16,11 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
+#include "server/http/status_server.h"
 #include "server/locator_service.h"
 #include "server/server_config.h"
 #include "server/server_runner.h"
@@ -130,7 +132,14 @@ void ReloadOnHangup(const ServerConfig& config, LocatorService& service) {
 
 // Periodic work acts on whichever engine the service currently publishes.
 void StartPeriodicWork(const ServerConfig& config,
-                       const LocatorService& service, ServerRunner* runner) {
+                       const LocatorService& service, StatusServer* status,
+                       ServerRunner* runner) {
+  if (status != nullptr) {
+    // The first sample is the baseline the first interval is measured from.
+    status->SampleHistory();
+    runner->RunEvery(StatusServer::kHistorySeconds,
+                     [status] { status->SampleHistory(); });
+  }
   if (config.stats_interval_s > 0) {
     runner->RunEvery(config.stats_interval_s, [&service] {
       const EngineStats stats = service.engine()->Stats();
@@ -150,7 +159,7 @@ void StartPeriodicWork(const ServerConfig& config,
 // its build failed.
 void ServeOrExit(const Status& built, const Engine* engine,
                  const ServerConfig& config, const LocatorService& service,
-                 ServerRunner* runner) {
+                 StatusServer* status_server, ServerRunner* runner) {
   if (!built.ok()) {
     LogLine() << "cannot serve the dataset: " << built.ToString();
     runner->Stop(1);
@@ -158,7 +167,7 @@ void ServeOrExit(const Status& built, const Engine* engine,
   }
   runner->SetServing(true);
   LogLine() << "serving " << engine->dataset_info().triangles << " triangles";
-  StartPeriodicWork(config, service, runner);
+  StartPeriodicWork(config, service, status_server, runner);
 }
 
 int Main(int argc, char** argv) {
@@ -176,8 +185,29 @@ int Main(int argc, char** argv) {
                                 std::shared_ptr<Engine>* engine) {
         return BuildEngine(config, spec, serving, engine);
       }});
-  const std::unique_ptr<ServerRunner> runner =
-      ServerRunner::StartOrExit(kProgram, config.serving, {&service});
+  // With --http-listen, every gRPC call is counted for /metrics.
+  std::unique_ptr<StatusServer> status_server;
+  std::vector<
+      std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
+      interceptors;
+  if (config.http_enabled()) {
+    status_server =
+        std::make_unique<StatusServer>([&service] { return service.engine(); });
+    interceptors.push_back(status_server->NewInterceptorFactory());
+  }
+  const std::unique_ptr<ServerRunner> runner = ServerRunner::StartOrExit(
+      kProgram, config.serving, {&service}, std::move(interceptors));
+  if (status_server != nullptr) {
+    if (Status listening =
+            status_server->Listen(config.http_host, config.http_port);
+        !listening.ok()) {
+      std::cerr << kProgram << ": " << listening.message() << std::endl;
+      runner->Stop(1);
+      runner->RunAndExit();
+    }
+    std::cout << kProgram << " http listening on " << config.http_host << ":"
+              << status_server->port() << std::endl;
+  }
   runner->OnHangup([&] { ReloadOnHangup(config, service); });
   runner->BeforeExit([&service] {
     if (std::shared_ptr<Engine> engine = service.engine()) {
@@ -194,7 +224,8 @@ int Main(int argc, char** argv) {
       "", [&](const Status& status, std::shared_ptr<Engine> engine,
               uint64_t /*generation*/) {
         boost::asio::post(runner->io_context(), [&, status, engine] {
-          ServeOrExit(status, engine.get(), config, service, runner.get());
+          ServeOrExit(status, engine.get(), config, service,
+                      status_server.get(), runner.get());
         });
       });
   runner->RunAndExit();

@@ -35,6 +35,7 @@ struct EngineFlags {
   std::string stats_interval_s;
   std::string retune_interval_s;
   std::string state_dir;
+  std::string http_listen;
 };
 
 Status FlagError(std::string_view flag, std::string_view text,
@@ -177,7 +178,10 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       "also re-tune this often; 0 = only by query count")(
       "state-dir", po::value(&flags->state_dir)->default_value(""),
       "self-tuning: directory where the learned tuning persists across "
-      "restarts and reloads; empty = off");
+      "restarts and reloads; empty = off")(
+      "http-listen", po::value(&flags->http_listen)->default_value(""),
+      "HOST:PORT for /metrics and the status page; port 0 lets the OS pick "
+      "(the chosen port is printed); empty = off");
 }
 
 // The state dir must exist (locatord does not create directories), and only
@@ -229,6 +233,13 @@ Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
                           &config->retune_interval_s);
   }
   if (status.ok()) status = ReadStateDir(flags, &engine);
+  if (status.ok() && !flags.http_listen.empty()) {
+    status = ParseListenAddress(flags.http_listen, &config->http_host,
+                                &config->http_port);
+    if (!status.ok()) {
+      return FlagError("http-listen", flags.http_listen, status.message());
+    }
+  }
   return status;
 }
 

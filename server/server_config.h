@@ -48,6 +48,12 @@ struct ServerConfig {
   double stats_interval_s = 0;
   // --retune-interval-s: period of time-based re-tunes; 0 = off.
   double retune_interval_s = 0;
+  // --http-listen HOST:PORT of the metrics and status page server; port 0
+  // lets the OS pick. Off (empty host) by default.
+  std::string http_host;
+  int http_port = 0;
+
+  bool http_enabled() const { return !http_host.empty(); }
 };
 
 // Parses locatord's command line into `config`. With --help, sets `help` to

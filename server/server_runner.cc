@@ -19,7 +19,10 @@ ServerRunner::ServerRunner(std::string_view program)
 
 std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
     std::string_view program, const ServingConfig& config,
-    const std::vector<grpc::Service*>& services) {
+    const std::vector<grpc::Service*>& services,
+    std::vector<
+        std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
+        interceptors) {
   // The signal handlers are installed (by the constructor) before the
   // listening line goes out: whoever reads that line may signal at once.
   std::unique_ptr<ServerRunner> created(new ServerRunner(program));
@@ -33,6 +36,7 @@ std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
   builder.SetMaxReceiveMessageSize(static_cast<int>(config.max_message_bytes));
   builder.SetMaxSendMessageSize(static_cast<int>(config.max_message_bytes));
   for (grpc::Service* service : services) builder.RegisterService(service);
+  builder.experimental().SetInterceptorCreators(std::move(interceptors));
   created->server_ = builder.BuildAndStart();
   if (created->server_ == nullptr || port == 0) {
     std::cerr << program << ": cannot listen on " << config.ListenAddress()

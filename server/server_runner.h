@@ -40,11 +40,15 @@ class ServerRunner {
  public:
   static constexpr std::chrono::seconds kDrainDeadline{10};
 
-  // Starts `services` on config's address as described above. If the
-  // address cannot be bound, says so on stderr and exits with code 1.
+  // Starts `services` on config's address as described above, with
+  // `interceptors` seeing every call. If the address cannot be bound, says
+  // so on stderr and exits with code 1.
   static std::unique_ptr<ServerRunner> StartOrExit(
       std::string_view program, const ServingConfig& config,
-      const std::vector<grpc::Service*>& services);
+      const std::vector<grpc::Service*>& services,
+      std::vector<std::unique_ptr<
+          grpc::experimental::ServerInterceptorFactoryInterface>>
+          interceptors = {});
 
   ServerRunner(const ServerRunner&) = delete;
   ServerRunner& operator=(const ServerRunner&) = delete;

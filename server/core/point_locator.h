@@ -59,6 +59,10 @@ struct TuningSummary {
   // Bytes of the tuning structures (the published snapshot).
   size_t memory_bytes = 0;
   PersistenceSummary persistence;
+  // Queries answered since the strategy was created in cells it had tuned
+  // for (hot) and elsewhere (fallback). Self-tuning only; 0 for the others.
+  uint64_t hot_queries = 0;
+  uint64_t fallback_queries = 0;
 };
 
 class PointLocator {

@@ -63,7 +63,13 @@ void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
   const uint64_t before =
       since_tune_.fetch_add(queries, std::memory_order_relaxed);
   const uint64_t now = before + queries;
-  if (cold > 0) cold_hits_.fetch_add(cold, std::memory_order_relaxed);
+  if (cold > 0) {
+    cold_hits_.fetch_add(cold, std::memory_order_relaxed);
+    fallback_queries_.fetch_add(cold, std::memory_order_relaxed);
+  }
+  if (queries > cold) {
+    hot_queries_.fetch_add(queries - cold, std::memory_order_relaxed);
+  }
   const uint64_t every = options_.retune_every;
   if (before < every && now >= every) {
     RequestRetune();
@@ -194,6 +200,8 @@ TuningSummary SelfTuningLocator::Summary() const {
   s.memory_bytes = snap->memory_bytes + histogram_.MemoryBytes();
   std::lock_guard<std::mutex> lock(persistence_mu_);
   s.persistence = persistence_;
+  s.hot_queries = hot_queries_.load(std::memory_order_relaxed);
+  s.fallback_queries = fallback_queries_.load(std::memory_order_relaxed);
   return s;
 }
 

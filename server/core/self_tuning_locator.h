@@ -104,6 +104,9 @@ class SelfTuningLocator : public PointLocator {
   mutable SnapshotSlot<TuningSnapshot> snapshot_;  // published by re-tunes
   mutable std::atomic<uint64_t> since_tune_{0};
   mutable std::atomic<uint64_t> cold_hits_{0};
+  // Lifetime counts for Summary(): queries in hot and in cold cells.
+  mutable std::atomic<uint64_t> hot_queries_{0};
+  mutable std::atomic<uint64_t> fallback_queries_{0};
 
   // Background mode: RequestRetune() bumps requests_, the thread re-tunes.
   mutable std::atomic<uint64_t> requests_{0};

@@ -70,6 +70,10 @@ class Triangulation {
   const BoundingBox& bounding_box() const { return box_; }
   // Bytes held by the CGAL containers and the adapter's index.
   size_t MemoryBytes() const;
+  // Finite edges, as endpoint pairs: all of them if there are at most
+  // `max_edges`, else every k-th of CGAL's edge order (k as small as keeps
+  // the count within `max_edges`). Deterministic; O(edges).
+  std::vector<std::array<Point2, 2>> SampleEdges(size_t max_edges) const;
 
   bool IsInfinite(Face_handle f) const { return dt_.is_infinite(f); }
   // The vertex that input point `i` (0 <= i < input_points()) became.

@@ -198,6 +198,26 @@ TEST(TriangulationTest, ValuesInterpolateLinearly) {
   EXPECT_FALSE(t->ReferenceLocate({2, 2}).has_value);
 }
 
+TEST(TriangulationTest, SampleEdgesTakesAllOrAnEvenShareOfRealEdges) {
+  constexpr int k = 50;
+  auto t = BuildTriangulation(test::GridDataset(k));
+  ASSERT_NE(t, nullptr);
+  const size_t edges = t->num_vertices() + t->num_triangles() - 1;
+  EXPECT_EQ(t->SampleEdges(edges).size(), edges);
+  EXPECT_EQ(t->SampleEdges(10 * edges).size(), edges);
+  EXPECT_TRUE(t->SampleEdges(0).empty());
+  const auto sample = t->SampleEdges(1000);
+  EXPECT_LE(sample.size(), 1000u);
+  EXPECT_GE(sample.size(), 500u);
+  // Grid edges: unit axis-parallel segments or unit-square diagonals.
+  for (const auto& [a, b] : sample) {
+    const double dx = std::abs(a.x - b.x);
+    const double dy = std::abs(a.y - b.y);
+    EXPECT_TRUE((dx == 1 || dx == 0) && (dy == 1 || dy == 0) && dx + dy > 0)
+        << a.x << "," << a.y << " - " << b.x << "," << b.y;
+  }
+}
+
 TEST(TriangulationTest, MemoryBytesGrowsWithN) {
   auto small = BuildTriangulation(GenerateUniform(1000, 1));
   auto large = BuildTriangulation(GenerateUniform(20000, 1));

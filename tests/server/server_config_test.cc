@@ -42,6 +42,7 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   EXPECT_EQ(config.stats_interval_s, 0);
   EXPECT_EQ(config.retune_interval_s, 0);
   EXPECT_EQ(config.engine.tuning.state_dir, "");
+  EXPECT_FALSE(config.http_enabled());
 }
 
 TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
@@ -96,6 +97,7 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
   EXPECT_THAT(help, HasSubstr("--dataset"));
   EXPECT_THAT(help, HasSubstr("--budget"));
   EXPECT_THAT(help, HasSubstr("--retune-interval-s"));
+  EXPECT_THAT(help, HasSubstr("--http-listen"));
 }
 
 TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
@@ -119,6 +121,8 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--listen", ":50051"},
       {"--listen", "localhost:65536"},
       {"--listen", "localhost:http"},
+      {"--http-listen", "8080"},
+      {"--http-listen", "localhost:65536"},
       {"--strategy", "fastest"},
       {"--dataset", ""},
   };
@@ -162,6 +166,17 @@ TEST(ServerConfigTest, ByteFlagsTakeUnitSuffixes) {
   ServerConfig config;
   ASSERT_TRUE(Parse({"--max-message-bytes", "1GiB"}, &config).ok());
   EXPECT_EQ(config.serving.max_message_bytes, size_t{1} << 30);
+}
+
+TEST(ServerConfigTest, HttpListenTurnsTheStatusServerOn) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--http-listen", "0.0.0.0:0"}, &config).ok());
+  EXPECT_TRUE(config.http_enabled());
+  EXPECT_EQ(config.http_host, "0.0.0.0");
+  EXPECT_EQ(config.http_port, 0);
+  ASSERT_TRUE(Parse({"--http-listen", "[::1]:9090"}, &config).ok());
+  EXPECT_EQ(config.http_host, "[::1]");
+  EXPECT_EQ(config.http_port, 9090);
 }
 
 TEST(ServerConfigTest, ListenAddressSplitsAtTheLastColon) {
