@@ -1,7 +1,7 @@
 // locator: command-line client of a locator.v1.Locator server.
 //
 //   locator [--target HOST:PORT] [--deadline-ms N] [--json] [--retry]
-//           [--chunk N] COMMAND [ARGS]
+//           [--chunk N] [--token-file F] [--tls-ca F ...] COMMAND [ARGS]
 //
 // Flags may stand anywhere on the line. Only long flags exist, so a negative
 // coordinate ("locate -0.5 2") is never taken for one. Exit codes are
@@ -53,6 +53,7 @@ Command FindCommand(std::string_view name) {
 
 int Main(int argc, char** argv) {
   ChannelOptions channel;
+  ChannelSecurityFlags security;
   CliSettings settings;
   int64_t deadline_ms = 5000;
   int64_t chunk = static_cast<int64_t>(settings.chunk);
@@ -71,6 +72,7 @@ int Main(int argc, char** argv) {
        "retry calls that fail with UNAVAILABLE, with backoff")  //
       ("chunk", po::value(&chunk)->default_value(chunk),
        "points per LocateBatch call of `batch`");
+  AddChannelSecurityFlags(&security, &flags);
   po::options_description all;
   all.add(flags).add_options()("words", po::value(&words));
   po::positional_options_description positional;
@@ -113,6 +115,10 @@ int Main(int argc, char** argv) {
   }
   if (!problem.empty()) return ReportUsageError(settings, problem);
   settings.chunk = static_cast<size_t>(chunk);
+  if (Status loaded = LoadChannelSecurity(security, &channel.security);
+      !loaded.ok()) {
+    return ReportInputError(loaded.message());
+  }
 
   LocatorClient client(CreateLocatorChannel(channel),
                        std::chrono::milliseconds(deadline_ms));

@@ -54,7 +54,9 @@ Status BuildEngine(const ServerConfig& config,
   LogLine() << "loading dataset " << config.dataset;
   const auto load_start = std::chrono::steady_clock::now();
   Dataset dataset;
-  if (Status status = LoadDataset(config.dataset, &dataset); !status.ok()) {
+  if (Status status =
+          LoadDataset(config.dataset, &dataset, config.dataset_limits);
+      !status.ok()) {
     return status;
   }
   LogLine() << "loaded " << dataset.points.size() << " points in "
@@ -101,9 +103,14 @@ int Main(int argc, char** argv) {
 
   LocatorService service(LocatorServiceOptions{
       .batch_threads = config.serving.threads,
-      .max_batch_points = config.serving.max_batch_points});
+      .max_batch_points = config.serving.max_batch_points,
+      .default_deadline = config.serving.transport.default_deadline,
+      .access = config.access});
   const std::unique_ptr<ServerRunner> runner =
       ServerRunner::StartOrExit(kProgram, config.serving, {&service});
+  runner->OnDrain([&service](std::chrono::system_clock::time_point deadline) {
+    service.Drain(deadline);
+  });
 
   // The build runs off the loop so that signals are handled meanwhile; its
   // outcome is handed to the loop, which owns every state change. The thread
@@ -114,7 +121,13 @@ int Main(int argc, char** argv) {
     const Status status = BuildEngine(config, &engine);
     boost::asio::post(runner->io_context(), [&, status, engine] {
       if (!status.ok()) {
-        LogLine() << "cannot serve the dataset: " << status.ToString();
+        // Parse errors name the file and line themselves; whole-dataset
+        // problems (too few points, all collinear) need the spec said.
+        LogLine() << "cannot serve dataset '" << config.dataset
+                  << "': " << status.ToString()
+                  << (status.code() == Status::Code::kResourceExhausted
+                          ? " (see --max-dataset-points)"
+                          : "");
         runner->Stop(1);
         return;
       }

@@ -22,6 +22,7 @@ struct ServingFlags {
   std::string max_message_bytes;
   std::string threads;
   std::string max_batch_points;
+  TransportFlags transport;
 };
 
 struct EngineFlags {
@@ -54,6 +55,7 @@ void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
       po::value(&flags->max_batch_points)
           ->default_value(std::to_string(defaults.max_batch_points)),
       "larger LocateBatch requests fail with RESOURCE_EXHAUSTED");
+  AddTransportFlags(defaults.transport, &flags->transport, description);
 }
 
 Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
@@ -75,9 +77,13 @@ Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
     return status;
   }
   // A protobuf repeated field holds at most INT_MAX elements.
-  return ParseCountAs("max-batch-points", flags.max_batch_points, 1,
-                      std::numeric_limits<int>::max(),
-                      &config->max_batch_points);
+  if (Status status = ParseCountAs("max-batch-points", flags.max_batch_points,
+                                   1, std::numeric_limits<int>::max(),
+                                   &config->max_batch_points);
+      !status.ok()) {
+    return status;
+  }
+  return ReadTransportFlags(flags.transport, &config->transport);
 }
 
 void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
@@ -218,23 +224,35 @@ Status ParseServerConfig(int argc, const char* const argv[],
                          ServerConfig* config, std::string* help) {
   const ServerConfig defaults;
   std::string dataset;
+  std::string max_dataset_points;
   ServingFlags serving;
   EngineFlags engine;
+  AccessFlags access;
   po::options_description description("locatord flags");
   description.add_options()(
       "dataset", po::value(&dataset)->default_value(defaults.dataset),
-      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED]");
+      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED]")(
+      "max-dataset-points",
+      po::value(&max_dataset_points)
+          ->default_value(std::to_string(defaults.dataset_limits.max_points)),
+      "larger datasets fail before they are triangulated (~200 bytes per "
+      "point once built)");
   AddServingFlags(defaults.serving, &serving, &description);
   AddEngineFlags(defaults, &engine, &description);
+  AddAccessFlags(&access, &description);
 
   Status status = ParseCommandLine(argc, argv, "locatord", description, help);
   if (!status.ok() || !help->empty()) return status;
   if (dataset.empty())
     return FlagError("dataset", dataset, "must not be empty");
   config->dataset = dataset;
-  status = ReadServingFlags(serving, &config->serving);
-  if (!status.ok()) return status;
-  return ReadEngineFlags(engine, config);
+  status = ParseCountAs("max-dataset-points", max_dataset_points, 3,
+                        std::numeric_limits<uint32_t>::max(),
+                        &config->dataset_limits.max_points);
+  if (status.ok()) status = ReadServingFlags(serving, &config->serving);
+  if (status.ok()) status = ReadEngineFlags(engine, config);
+  if (status.ok()) status = ReadAccessFlags(access, &config->access);
+  return status;
 }
 
 Status ParseNoopServerConfig(int argc, const char* const argv[],

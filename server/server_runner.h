@@ -2,12 +2,14 @@
 // process around it (signals, periodic work, shutdown).
 //
 // StartOrExit() builds the server with the default health service and
-// reflection, marks it NOT_SERVING, starts it and prints "<program>
+// reflection, TLS and the connection limits of the config's
+// TransportConfig, marks it NOT_SERVING, starts it and prints "<program>
 // listening on HOST:PORT" (the port actually bound) on stdout. RunAndExit()
 // then drives the loop on the calling thread until SIGINT or SIGTERM, or
-// until Stop(): the server goes NOT_SERVING, new calls are refused,
-// in-flight calls get kDrainDeadline to complete, and the process exits with
-// the exit code.
+// until Stop(): the server goes NOT_SERVING, the OnDrain() hooks run (the
+// services refuse new calls and wait for theirs to end), gRPC shuts down,
+// in-flight calls get what is left of kDrainDeadline to complete, and the
+// process exits with the exit code.
 //
 // Owns the server, the io_context, its signal set and timers. Thread-safety:
 // SetServing() may be called from any thread; RunEvery() and Stop() only on
@@ -53,6 +55,12 @@ class ServerRunner {
   // locator.v1.Locator.
   void SetServing(bool serving);
 
+  // Calls `hook` on the loop thread when the drain starts, before gRPC's
+  // shutdown, with the drain's deadline; it may block until then.
+  using DrainHook =
+      std::function<void(std::chrono::system_clock::time_point deadline)>;
+  void OnDrain(DrainHook hook);
+
   // Calls `tick` on the loop thread every `seconds` until the loop stops.
   void RunEvery(double seconds, std::function<void()> tick);
 
@@ -76,6 +84,7 @@ class ServerRunner {
   boost::asio::io_context io_context_;
   boost::asio::signal_set signals_;
   std::list<boost::asio::steady_timer> timers_;  // stable addresses
+  std::vector<DrainHook> drain_hooks_;
   std::unique_ptr<grpc::Server> server_;
   int exit_code_ = 0;
 };

@@ -36,6 +36,7 @@ struct RawFlags {
   int64_t window = 16;
   int64_t cost_window = 500;
   int64_t seed = 1;
+  ChannelSecurityFlags security;
 };
 
 po::options_description Flags(LoadOptions& options, RawFlags& raw) {
@@ -92,6 +93,7 @@ po::options_description Flags(LoadOptions& options, RawFlags& raw) {
        "queries per window of the server's mean cost")  //
       ("format", po::value(&raw.format)->default_value(raw.format),
        "text | json (one summary object)");
+  AddChannelSecurityFlags(&raw.security, &flags);
   return flags;
 }
 
@@ -213,6 +215,9 @@ Status ParseLoadOptions(const std::vector<std::string>& args,
   if (status.ok()) {
     status = SetRunLength(raw, parsed.count("duration") > 0,
                           parsed.count("queries") > 0, &options->length);
+  }
+  if (status.ok()) {
+    status = LoadChannelSecurity(raw.security, &options->channel.security);
   }
   if (!status.ok()) return status;
   if (!(options->rate >= 0) || !std::isfinite(options->rate)) {

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "tests/client/run_binary.h"
+#include "tests/testing/run_binary.h"
 #include "tests/testing/server_process.h"
 
 namespace locator {
