@@ -1,7 +1,7 @@
 // locator: command-line client of a locator.v1.Locator server.
 //
 //   locator [--target HOST:PORT] [--deadline-ms N] [--json] [--retry]
-//           [--chunk N] COMMAND [ARGS]
+//           [--chunk N] [--token-file F] [--tls-ca F ...] COMMAND [ARGS]
 //
 // Flags may stand anywhere on the line. Only long flags exist, so a negative
 // coordinate ("locate -0.5 2") is never taken for one. Exit codes are
@@ -62,6 +62,7 @@ Command FindCommand(std::string_view name) {
 
 int Main(int argc, char** argv) {
   ChannelOptions channel;
+  ChannelSecurityFlags security;
   CliSettings settings;
   int64_t deadline_ms = 5000;
   int64_t chunk = static_cast<int64_t>(settings.chunk);
@@ -83,6 +84,7 @@ int Main(int argc, char** argv) {
       ("dataset", po::value(&settings.dataset),
        "`reload`: a dataset file path or generator spec, as the server's "
        "--dataset takes it");
+  AddChannelSecurityFlags(&security, &flags);
   po::options_description all;
   all.add(flags).add_options()("words", po::value(&words));
   po::positional_options_description positional;
@@ -130,6 +132,10 @@ int Main(int argc, char** argv) {
   // A reload waits for a whole triangulation to be built.
   if (command == RunReload && parsed["deadline-ms"].defaulted()) {
     deadline_ms = kReloadDeadlineMs;
+  }
+  if (Status loaded = LoadChannelSecurity(security, &channel.security);
+      !loaded.ok()) {
+    return ReportInputError(loaded.message());
   }
 
   LocatorClient client(CreateLocatorChannel(channel),

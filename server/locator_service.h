@@ -1,16 +1,17 @@
 // LocatorService: the locator.v1.Locator gRPC service (callback API) over an
 // Engine that is published once the dataset has been triangulated.
 //
-// Owns the BatchLocator (and with it the batch worker pool). The engine is
-// shared: every call copies the reference under a mutex when it starts, so
-// an engine stays alive until the calls using it have finished. (Not
-// std::atomic<std::shared_ptr>: libstdc++ 12's spins on a lock bit; see
-// server/core/snapshot_slot.h.) Until Publish(), every RPC answers
-// UNAVAILABLE "dataset is still loading".
+// Owns the BatchLocator (and with it the batch worker pool) and the
+// AccessPolicy. The engine is shared: every call copies the reference under
+// a mutex when it starts, so an engine stays alive until the calls using it
+// have finished. (Not std::atomic<std::shared_ptr>: libstdc++ 12's spins on
+// a lock bit; see server/core/snapshot_slot.h.)
 //
-// Also owns the EngineReloader that builds engines for StartReload() (the
-// Reload RPC, SIGHUP, the first build) off the calling thread and publishes
-// them. Each Publish() starts a new generation (the first engine is 1).
+// Every handler starts with Admit(), which refuses, in this order: calls
+// started after Drain() began (UNAVAILABLE "server is shutting down"; see
+// DrainGate), calls the AccessPolicy does not allow (UNAUTHENTICATED /
+// PERMISSION_DENIED), and, until Publish(), every call (UNAVAILABLE "dataset
+// is still loading").
 //
 // Thread-safety: all methods may be called concurrently, Publish() included.
 
@@ -19,6 +20,7 @@
 
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -27,10 +29,13 @@
 #include <string>
 
 #include "locator/v1/locator.grpc.pb.h"
+#include "server/access_policy.h"
 #include "server/batch_locator.h"
 #include "server/core/engine.h"
 #include "server/core/status.h"
+#include "server/drain_gate.h"
 #include "server/engine_reloader.h"
+#include "server/security_config.h"
 
 namespace locator {
 
@@ -39,6 +44,11 @@ struct LocatorServiceOptions {
   size_t batch_threads = 1;
   // LocateBatch requests with more points fail with RESOURCE_EXHAUSTED.
   size_t max_batch_points = 1'000'000;
+  // The deadline of a LocateBatch or LocateStream whose client set none
+  // (zero: none).
+  std::chrono::milliseconds default_deadline{0};
+  // Tokens and redaction.
+  AccessConfig access;
   // Builds the engine for a dataset spec ("": the configured dataset), given
   // the engine serving now (null before the first); runs on the reload
   // thread. Unset: reloads fail with FAILED_PRECONDITION.
@@ -63,6 +73,24 @@ class LocatorService final : public v1::Locator::CallbackService {
   // `done` there with the outcome (see EngineReloader::Start).
   // FailedPrecondition "reload in progress" while another build runs.
   Status StartReload(const std::string& dataset, EngineReloader::Done done);
+
+  // Refuses new calls from now on (UNAVAILABLE) and waits until the calls
+  // already admitted have ended or `deadline` passes. Called when the server
+  // starts draining, before gRPC's shutdown.
+  void Drain(std::chrono::system_clock::time_point deadline);
+
+  // What an admitted call runs with. Whatever finishes the call holds it:
+  // the ticket keeps the call counted as in flight.
+  struct Admission {
+    std::shared_ptr<Engine> engine;
+    uint64_t generation = 0;  // of `engine`
+    DrainGate::Ticket ticket;
+  };
+
+  // OK if a call with `context` may run an RPC of `scope` now, with
+  // `*admission` set; otherwise the refusal to finish it with (see above).
+  grpc::Status Admit(const grpc::CallbackServerContext& context,
+                     AccessPolicy::Scope scope, Admission* admission);
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
                                    const v1::LocateRequest* request,
@@ -89,10 +117,10 @@ class LocatorService final : public v1::Locator::CallbackService {
                                    v1::ReloadResponse* response) override;
 
  private:
-  // engine() and its generation (how many engines were published), read
-  // together.
-  std::shared_ptr<Engine> engine(uint64_t* generation) const;
-
+  const std::chrono::milliseconds default_deadline_;
+  const bool redact_;
+  const AccessPolicy access_;
+  DrainGate drain_gate_;
   mutable std::mutex engine_mu_;
   std::shared_ptr<Engine> engine_;  // guarded by engine_mu_
   uint64_t generation_ = 0;         // guarded by engine_mu_

@@ -82,7 +82,9 @@ Status LoadAndTriangulate(const ServerConfig& config,
   LogLine() << "loading dataset " << dataset_spec;
   const auto load_start = std::chrono::steady_clock::now();
   Dataset dataset;
-  if (Status status = LoadDataset(dataset_spec, &dataset); !status.ok()) {
+  if (Status status =
+          LoadDataset(dataset_spec, &dataset, config.dataset_limits);
+      !status.ok()) {
     return status;
   }
   LogLine() << "loaded " << dataset.points.size() << " points in "
@@ -161,7 +163,13 @@ void ServeOrExit(const Status& built, const Engine* engine,
                  const ServerConfig& config, const LocatorService& service,
                  StatusServer* status_server, ServerRunner* runner) {
   if (!built.ok()) {
-    LogLine() << "cannot serve the dataset: " << built.ToString();
+    // Parse errors name the file and line themselves; whole-dataset
+    // problems (too few points, all collinear) need the spec said.
+    LogLine() << "cannot serve dataset '" << config.dataset
+              << "': " << built.ToString()
+              << (built.code() == Status::Code::kResourceExhausted
+                      ? " (see --max-dataset-points)"
+                      : "");
     runner->Stop(1);
     return;
   }
@@ -181,6 +189,8 @@ int Main(int argc, char** argv) {
   LocatorService service(LocatorServiceOptions{
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points,
+      .default_deadline = config.serving.transport.default_deadline,
+      .access = config.access,
       .build_engine = [&config](const std::string& spec, Engine* serving,
                                 std::shared_ptr<Engine>* engine) {
         return BuildEngine(config, spec, serving, engine);
@@ -208,6 +218,9 @@ int Main(int argc, char** argv) {
     std::cout << kProgram << " http listening on " << config.http_host << ":"
               << status_server->port() << std::endl;
   }
+  runner->OnDrain([&service](std::chrono::system_clock::time_point deadline) {
+    service.Drain(deadline);
+  });
   runner->OnHangup([&] { ReloadOnHangup(config, service); });
   runner->BeforeExit([&service] {
     if (std::shared_ptr<Engine> engine = service.engine()) {

@@ -2,14 +2,16 @@
 // process around it (signals, periodic work, shutdown).
 //
 // StartOrExit() builds the server with the default health service and
-// reflection, marks it NOT_SERVING, starts it and prints "<program>
+// reflection, TLS and the connection limits of the config's
+// TransportConfig, marks it NOT_SERVING, starts it and prints "<program>
 // listening on HOST:PORT" (the port actually bound) on stdout. RunAndExit()
 // then drives the loop on the calling thread until SIGINT or SIGTERM, or
-// until Stop(): the server goes NOT_SERVING, new calls are refused,
-// in-flight calls get kDrainDeadline to complete, the BeforeExit() hook
-// runs, and the process exits with the exit code. SIGHUP never ends the
-// process: it calls the OnHangup() handler (e.g. a reload), or is logged
-// and ignored without one.
+// until Stop(): the server goes NOT_SERVING, the OnDrain() hooks run (the
+// services refuse new calls and wait for theirs to end), gRPC shuts down,
+// in-flight calls get what is left of kDrainDeadline to complete, the
+// BeforeExit() hook runs, and the process exits with the exit code. SIGHUP
+// never ends the process: it calls the OnHangup() handler (e.g. a reload),
+// or is logged and ignored without one.
 //
 // Owns the server, the io_context, its signal sets and timers.
 // Thread-safety: SetServing() may be called from any thread; RunEvery() and
@@ -59,6 +61,12 @@ class ServerRunner {
   // locator.v1.Locator.
   void SetServing(bool serving);
 
+  // Calls `hook` on the loop thread when the drain starts, before gRPC's
+  // shutdown, with the drain's deadline; it may block until then.
+  using DrainHook =
+      std::function<void(std::chrono::system_clock::time_point deadline)>;
+  void OnDrain(DrainHook hook);
+
   // Calls `tick` on the loop thread every `seconds` until the loop stops.
   void RunEvery(double seconds, std::function<void()> tick);
 
@@ -94,6 +102,7 @@ class ServerRunner {
   std::function<void()> hangup_handler_;
   std::function<void()> before_exit_;
   std::list<boost::asio::steady_timer> timers_;  // stable addresses
+  std::vector<DrainHook> drain_hooks_;
   std::unique_ptr<grpc::Server> server_;
   int exit_code_ = 0;
 };

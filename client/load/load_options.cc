@@ -39,6 +39,7 @@ struct RawFlags {
   int64_t window = 16;
   int64_t cost_window = 500;
   int64_t seed = 1;
+  ChannelSecurityFlags security;
 };
 
 po::options_description Flags(LoadOptions& options, RawFlags& raw) {
@@ -105,6 +106,7 @@ po::options_description Flags(LoadOptions& options, RawFlags& raw) {
       ("phase-signal", po::bool_switch(&options.phase_signal),
        "each SIGUSR1 starts a new phase; the report breaks calls, failures "
        "and latency down by phase");
+  AddChannelSecurityFlags(&raw.security, &flags);
   return flags;
 }
 
@@ -226,6 +228,9 @@ Status ParseLoadOptions(const std::vector<std::string>& args,
   if (status.ok()) {
     status = SetRunLength(raw, parsed.count("duration") > 0,
                           parsed.count("queries") > 0, &options->length);
+  }
+  if (status.ok()) {
+    status = LoadChannelSecurity(raw.security, &options->channel.security);
   }
   if (!status.ok()) return status;
   if (!(options->rate >= 0) || !std::isfinite(options->rate)) {

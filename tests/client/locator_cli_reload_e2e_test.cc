@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "locator/v1/locator.pb.h"
-#include "tests/client/run_binary.h"
+#include "tests/testing/run_binary.h"
 #include "tests/testing/server_process.h"
 
 namespace locator {

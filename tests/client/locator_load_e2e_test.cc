@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/client/run_binary.h"
 #include "tests/client/svg_check.h"
+#include "tests/testing/run_binary.h"
 #include "tests/testing/server_process.h"
 
 namespace locator {

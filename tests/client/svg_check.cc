@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "tests/client/run_binary.h"
+#include "tests/testing/run_binary.h"
 
 namespace locator::testing {
 

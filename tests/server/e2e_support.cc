@@ -148,19 +148,25 @@ std::vector<Point2> TestQueries() {
 
 Status StartLocatord(const std::string& dataset,
                      const std::vector<std::string>& flags,
-                     std::unique_ptr<testing::ServerProcess>* server) {
+                     std::unique_ptr<testing::ServerProcess>* server,
+                     const ChannelSecurity& client_security) {
   std::vector<std::string> args = {"--dataset", dataset, "--listen",
                                    "127.0.0.1:0"};
   args.insert(args.end(), flags.begin(), flags.end());
-  return testing::ServerProcess::Start(LOCATORD_PATH, args, server);
+  return testing::ServerProcess::Start(LOCATORD_PATH, args, server,
+                                       client_security);
 }
 
 std::unique_ptr<v1::Locator::Stub> NewStub(
     const testing::ServerProcess& server) {
-  grpc::ChannelArguments arguments;
-  arguments.SetMaxReceiveMessageSize(64 << 20);
-  return v1::Locator::NewStub(grpc::CreateCustomChannel(
-      server.target(), grpc::InsecureChannelCredentials(), arguments));
+  return NewStub(server, server.client_security());
+}
+
+std::unique_ptr<v1::Locator::Stub> NewStub(const testing::ServerProcess& server,
+                                           const ChannelSecurity& security) {
+  return v1::Locator::NewStub(CreateLocatorChannel({.target = server.target(),
+                                                    .own_connection = true,
+                                                    .security = security}));
 }
 
 v1::LocateRequest LocateRequestFor(const Point2& q) {
