@@ -180,16 +180,16 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
   // The reload thread finishes the call; the admission it holds until then
   // keeps a drain waiting for the build.
-  const Status started = StartReload(
-      request->dataset(),
-      [reactor, response, call](const Status& status,
-                                std::shared_ptr<Engine> engine,
-                                uint64_t generation) {
-        if (status.ok()) {
-          ToReloadResponse(engine->Stats(), generation, response);
-        }
-        reactor->Finish(ToGrpcStatus(status));
-      });
+  const Status started =
+      StartReload(request->dataset(),
+                  [reactor, response, call](const Status& status,
+                                            std::shared_ptr<Engine> engine,
+                                            uint64_t generation) {
+                    if (status.ok()) {
+                      ToReloadResponse(engine->Stats(), generation, response);
+                    }
+                    reactor->Finish(ToGrpcStatus(status));
+                  });
   if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
   return reactor;
 }

@@ -170,14 +170,13 @@ TEST(QueryHistogramTest, DrainConcurrentWithAddsLosesNothing) {
     });
   }
   std::vector<double> total;
-  int drains = 0;
-  while (running.load() > 0) {
+  // Drains at least once even if a loaded machine runs every adder to the
+  // end before this loop starts.
+  do {
     h.Drain(&total);
-    ++drains;
-  }
+  } while (running.load() > 0);
   for (std::thread& t : threads) t.join();
   h.Drain(&total);
-  EXPECT_GT(drains, 0);
   EXPECT_EQ(Sum(total), double{kThreads} * kPerThread);
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -267,6 +268,26 @@ std::string ScaleName(const ::testing::TestParamInfo<double>& info) {
 INSTANTIATE_TEST_SUITE_P(Scales, ExtremeScaleTest,
                          ::testing::Values(1.0, 1e150, 1e-150, 1e300, 1e-200),
                          ScaleName);
+
+// A needle spanning 450 orders of magnitude: in long double its area
+// cancels to 0 (or worse), so the barycentrics come from exact rationals.
+// Expected values computed with Python's fractions.Fraction.
+TEST(TriangulationTest, NeedleTriangleBarycentricsAreExact) {
+  auto t = BuildTriangulation(
+      PointsDataset({{1e150, -3e150}, {7e-150, 5e-151}, {4e-300, 0}}));
+  ASSERT_NE(t, nullptr);
+  const LocateResult r = t->ReferenceLocate({9e-200, -3e-200});
+  ASSERT_EQ(r.type, LocationType::kFace);
+  std::array<double, 3> by_input_id{};
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(std::isfinite(r.barycentric[i])) << i;
+    by_input_id[r.vertex_ids[i]] = r.barycentric[i];
+  }
+  EXPECT_GE(by_input_id[0], 0);
+  EXPECT_LT(by_input_id[0], 1e-300);
+  EXPECT_NEAR(by_input_id[1], 1.116279069767442e-50, 1e-62);
+  EXPECT_DOUBLE_EQ(by_input_id[2], 1.0);
+}
 
 // The square (0,0) (2,0) (2,2) (0,2) with its centre (1,1): four triangles
 // around vertex 4.
