@@ -146,10 +146,12 @@ TEST(LocatordReloadTest, SighupReloadsTheConfiguredDataset) {
   ASSERT_EQ(stats.generation(), 2u) << server->StderrText();
   EXPECT_EQ(stats.dataset().input_points(), 2500u);
   EXPECT_THAT(server->StderrText(), HasSubstr("SIGHUP: reloading " + path));
-  EXPECT_THAT(server->StderrText(),
-              HasSubstr("reloaded: serving " +
-                        std::to_string(stats.dataset().triangles()) +
-                        " triangles as generation 2"));
+  // The outcome is logged just after the new engine is published.
+  const std::string logged = "reloaded: serving " +
+                             std::to_string(stats.dataset().triangles()) +
+                             " triangles as generation 2";
+  EXPECT_THAT(server->WaitForStderr(logged, std::chrono::seconds(30)),
+              HasSubstr(logged));
   ExpectAnswersAgree(*stub, path);
 }
 

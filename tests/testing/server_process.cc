@@ -195,6 +195,18 @@ std::string ServerProcess::StderrText() const {
   return text.str();
 }
 
+std::string ServerProcess::WaitForStderr(const std::string& text,
+                                         std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  std::string seen = StderrText();
+  while (seen.find(text) == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    seen = StderrText();
+  }
+  return seen;
+}
+
 Status ServerProcess::Failure(const std::string& what) const {
   std::ostringstream message;
   message << "server (pid " << pid_ << ") " << what;

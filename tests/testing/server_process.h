@@ -81,6 +81,10 @@ class ServerProcess {
   std::optional<int> WaitForExit(std::chrono::milliseconds timeout);
   // Everything the child has written to stderr so far.
   std::string StderrText() const;
+  // Polls stderr until it contains `text` or `timeout` passes; returns
+  // StderrText() either way (for the caller's assertion and message).
+  std::string WaitForStderr(const std::string& text,
+                            std::chrono::milliseconds timeout);
 
  private:
   ServerProcess() = default;
