@@ -83,6 +83,17 @@ int RunRetune(LocatorClient& client, const CliSettings& settings,
       });
 }
 
+int RunReload(LocatorClient& client, const CliSettings& settings,
+              const CliArgs& args) {
+  if (!TakesNoArguments(settings, "reload", args)) return kExitUsage;
+  return CallAndPrint<v1::ReloadResponse>(
+      settings,
+      [&](v1::ReloadResponse* response) {
+        return client.Reload(settings.dataset, response);
+      },
+      FormatReload);
+}
+
 int RunHealth(LocatorClient& client, const CliSettings& settings,
               const CliArgs& args) {
   if (!TakesNoArguments(settings, "health", args)) return kExitUsage;

@@ -31,10 +31,13 @@ inline constexpr int kExitRpcError = 1;
 inline constexpr int kExitUsage = 2;
 
 struct CliSettings {
-  // Print one JSON object instead of text (locate, stats, retune, health).
+  // Print one JSON object instead of text (locate, stats, retune, reload,
+  // health).
   bool json = false;
   // Points per LocateBatch call of `batch`.
   size_t chunk = 10'000;
+  // The dataset `reload` asks for ("": the server's configured one).
+  std::string dataset;
   // Printed after a usage error.
   std::string usage;
 };
@@ -52,6 +55,9 @@ int RunStats(LocatorClient& client, const CliSettings& settings,
              const CliArgs& args);
 // `retune`.
 int RunRetune(LocatorClient& client, const CliSettings& settings,
+              const CliArgs& args);
+// `reload` (with --dataset SPEC).
+int RunReload(LocatorClient& client, const CliSettings& settings,
               const CliArgs& args);
 // `health`.
 int RunHealth(LocatorClient& client, const CliSettings& settings,

@@ -54,6 +54,39 @@ std::string Join(const Values& values, Format format) {
   return joined;
 }
 
+// The lines describing a served dataset.
+std::string FormatDataset(const v1::DatasetStats& dataset) {
+  std::string out;
+  AppendLine("dataset",
+             dataset.source().empty() ? "(redacted)" : dataset.source(), &out);
+  AppendLine("points",
+             StrCat({std::to_string(dataset.input_points()), " read, ",
+                     std::to_string(dataset.vertices()), " vertices, ",
+                     std::to_string(dataset.duplicates_merged()),
+                     " duplicates merged, ",
+                     std::to_string(dataset.triangles()), " triangles"}),
+             &out);
+  AppendLine("bounds", FormatBox(dataset.bounding_box()), &out);
+  AppendLine("values", dataset.has_values() ? "yes" : "no", &out);
+  AppendLine("build", StrCat({FormatDouble(dataset.build_seconds()), " s"}),
+             &out);
+  return out;
+}
+
+// The state file line of a tuning: where, whether restored, why not.
+std::string FormatPersistence(const v1::TuningPersistence& persistence) {
+  std::string state = persistence.state_path();
+  if (persistence.restored_from_state()) state += " (restored)";
+  if (!persistence.load_error().empty()) {
+    state += StrCat({" (ignored: ", persistence.load_error(), ")"});
+  }
+  state += StrCat({"; ", std::to_string(persistence.saves()), " saves"});
+  if (!persistence.save_error().empty()) {
+    state += StrCat({"; last save failed: ", persistence.save_error()});
+  }
+  return state;
+}
+
 }  // namespace
 
 std::string FormatDouble(double value) {
@@ -117,21 +150,12 @@ std::string FormatLocate(const v1::LocateResponse& response) {
 }
 
 std::string FormatStats(const v1::GetStatsResponse& stats) {
-  const v1::DatasetStats& dataset = stats.dataset();
-  std::string out;
-  AppendLine("dataset",
-             dataset.source().empty() ? "(redacted)" : dataset.source(), &out);
-  AppendLine("points",
-             StrCat({std::to_string(dataset.input_points()), " read, ",
-                     std::to_string(dataset.vertices()), " vertices, ",
-                     std::to_string(dataset.duplicates_merged()),
-                     " duplicates merged, ",
-                     std::to_string(dataset.triangles()), " triangles"}),
-             &out);
-  AppendLine("bounds", FormatBox(dataset.bounding_box()), &out);
-  AppendLine("values", dataset.has_values() ? "yes" : "no", &out);
-  AppendLine("build", StrCat({FormatDouble(dataset.build_seconds()), " s"}),
-             &out);
+  std::string out = FormatDataset(stats.dataset());
+  AppendLine(
+      "generation",
+      StrCat({std::to_string(stats.generation()),
+              stats.reload_in_progress() ? " (reload in progress)" : ""}),
+      &out);
   AppendLine("strategy", stats.strategy(), &out);
   AppendLine(
       "serving",
@@ -161,7 +185,16 @@ std::string FormatTuning(const v1::TuningStats& tuning) {
     AppendLine(i == 0 ? "hot regions" : "", FormatBox(tuning.hot_regions(i)),
                &out);
   }
+  if (!tuning.persistence().state_path().empty()) {
+    AppendLine("state", FormatPersistence(tuning.persistence()), &out);
+  }
   return out;
+}
+
+std::string FormatReload(const v1::ReloadResponse& response) {
+  std::string out = FormatDataset(response.dataset());
+  AppendLine("generation", std::to_string(response.generation()), &out);
+  return out + FormatTuning(response.tuning());
 }
 
 std::string BatchCsvHeader() {

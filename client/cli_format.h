@@ -30,6 +30,7 @@ std::string MessageToJson(const google::protobuf::Message& message);
 std::string FormatLocate(const v1::LocateResponse& response);
 std::string FormatStats(const v1::GetStatsResponse& stats);
 std::string FormatTuning(const v1::TuningStats& tuning);
+std::string FormatReload(const v1::ReloadResponse& response);
 
 // The CSV header of `locator batch` output, newline included.
 std::string BatchCsvHeader();

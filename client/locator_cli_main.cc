@@ -1,7 +1,7 @@
 // locator: command-line client of a locator.v1.Locator server.
 //
 //   locator [--target HOST:PORT] [--deadline-ms N] [--json] [--retry]
-//           [--chunk N] COMMAND [ARGS]
+//           [--chunk N] [--token-file F] [--tls-ca F ...] COMMAND [ARGS]
 //
 // Flags may stand anywhere on the line. Only long flags exist, so a negative
 // coordinate ("locate -0.5 2") is never taken for one. Exit codes are
@@ -34,11 +34,19 @@ commands:
                  x,y,type,triangle_id,v0,v1,v2,b0,b1,b2,value,cost
   stats          dataset, strategy, serving and tuning statistics
   retune         re-tune the server now; prints the new tuning
+  reload         make the server load --dataset SPEC (default: its own
+                 --dataset, read again) and serve it; waits until it serves
+                 (up to 10 minutes unless --deadline-ms says otherwise) and
+                 prints the new dataset, generation and tuning
   health         SERVING or NOT_SERVING; exit code 0 only when SERVING
 
 exit codes: 0 ok, 1 RPC error (or not SERVING), 2 usage error
 
 )";
+
+// The default deadline of `reload`: building a triangulation of tens of
+// millions of points takes minutes.
+constexpr int64_t kReloadDeadlineMs = 10 * 60 * 1000;
 
 using Command = int (*)(LocatorClient&, const CliSettings&, const CliArgs&);
 
@@ -47,12 +55,14 @@ Command FindCommand(std::string_view name) {
   if (name == "batch") return RunBatch;
   if (name == "stats") return RunStats;
   if (name == "retune") return RunRetune;
+  if (name == "reload") return RunReload;
   if (name == "health") return RunHealth;
   return nullptr;
 }
 
 int Main(int argc, char** argv) {
   ChannelOptions channel;
+  ChannelSecurityFlags security;
   CliSettings settings;
   int64_t deadline_ms = 5000;
   int64_t chunk = static_cast<int64_t>(settings.chunk);
@@ -66,11 +76,15 @@ int Main(int argc, char** argv) {
       ("deadline-ms", po::value(&deadline_ms)->default_value(deadline_ms),
        "deadline of every call, in milliseconds")  //
       ("json", po::bool_switch(&settings.json),
-       "print one JSON object (locate, stats, retune, health)")  //
+       "print one JSON object (locate, stats, retune, reload, health)")  //
       ("retry", po::bool_switch(&channel.retry_unavailable),
        "retry calls that fail with UNAVAILABLE, with backoff")  //
       ("chunk", po::value(&chunk)->default_value(chunk),
-       "points per LocateBatch call of `batch`");
+       "points per LocateBatch call of `batch`")  //
+      ("dataset", po::value(&settings.dataset),
+       "`reload`: a dataset file path or generator spec, as the server's "
+       "--dataset takes it");
+  AddChannelSecurityFlags(&security, &flags);
   po::options_description all;
   all.add(flags).add_options()("words", po::value(&words));
   po::positional_options_description positional;
@@ -110,9 +124,19 @@ int Main(int argc, char** argv) {
     problem = "--deadline-ms must be positive";
   } else if (chunk <= 0) {
     problem = "--chunk must be positive";
+  } else if (parsed.count("dataset") && command != RunReload) {
+    problem = "--dataset is for reload only";
   }
   if (!problem.empty()) return ReportUsageError(settings, problem);
   settings.chunk = static_cast<size_t>(chunk);
+  // A reload waits for a whole triangulation to be built.
+  if (command == RunReload && parsed["deadline-ms"].defaulted()) {
+    deadline_ms = kReloadDeadlineMs;
+  }
+  if (Status loaded = LoadChannelSecurity(security, &channel.security);
+      !loaded.ok()) {
+    return ReportInputError(loaded.message());
+  }
 
   LocatorClient client(CreateLocatorChannel(channel),
                        std::chrono::milliseconds(deadline_ms));

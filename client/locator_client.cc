@@ -3,43 +3,6 @@
 #include <utility>
 
 namespace locator {
-namespace {
-
-// Retries UNAVAILABLE only: it means the call never reached a live server
-// (connection refused or reset while it restarts), so even Retune is safe to
-// send again. Backoff 50 ms doubling to 1 s covers a typical restart.
-constexpr char kRetryServiceConfig[] = R"json({
-  "methodConfig": [{
-    "name": [{"service": "locator.v1.Locator"},
-             {"service": "grpc.health.v1.Health"}],
-    "retryPolicy": {
-      "maxAttempts": 5,
-      "initialBackoff": "0.05s",
-      "maxBackoff": "1s",
-      "backoffMultiplier": 2,
-      "retryableStatusCodes": ["UNAVAILABLE"]
-    }
-  }]
-})json";
-
-}  // namespace
-
-std::shared_ptr<grpc::Channel> CreateLocatorChannel(
-    const ChannelOptions& options) {
-  grpc::ChannelArguments args;
-  args.SetMaxReceiveMessageSize(options.max_message_bytes);
-  args.SetMaxSendMessageSize(options.max_message_bytes);
-  if (options.retry_unavailable) {
-    args.SetServiceConfigJSON(kRetryServiceConfig);
-  }
-  if (options.own_connection) {
-    // Channels with equal arguments share subchannels (and so one TCP
-    // connection) through the global pool; a local pool gives each its own.
-    args.SetInt(GRPC_ARG_USE_LOCAL_SUBCHANNEL_POOL, 1);
-  }
-  return grpc::CreateCustomChannel(options.target,
-                                   grpc::InsecureChannelCredentials(), args);
-}
 
 void SetDeadlineFromNow(grpc::ClientContext* context,
                         std::chrono::milliseconds timeout) {
@@ -138,6 +101,15 @@ grpc::Status LocatorClient::Retune(v1::RetuneResponse* response) {
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
   return stub_->Retune(&context, v1::RetuneRequest(), response);
+}
+
+grpc::Status LocatorClient::Reload(const std::string& dataset,
+                                   v1::ReloadResponse* response) {
+  v1::ReloadRequest request;
+  request.set_dataset(dataset);
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->Reload(&context, request, response);
 }
 
 grpc::Status LocatorClient::CheckHealth(HealthStatus* status) {

@@ -1,5 +1,6 @@
 // LocatorClient: the one client of locator.v1.Locator that the `locator` CLI
-// and the `locator-load` driver share, and the channel it talks over.
+// and the `locator-load` driver share (the channel it talks over is built by
+// client/channel_options.h).
 //
 // Owns a Locator stub and a health checker on a shared channel, and the
 // per-call deadline. Every call it starts, blocking or callback, gets a
@@ -22,28 +23,12 @@
 #include <string>
 #include <string_view>
 
+#include "client/channel_options.h"
 #include "client/health_check.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/core/geometry.h"
 
 namespace locator {
-
-struct ChannelOptions {
-  std::string target = "127.0.0.1:50051";
-  // Limit on messages in both directions; large batches need more than
-  // gRPC's default of 4 MiB.
-  int max_message_bytes = 64 << 20;
-  // Retry calls that fail with UNAVAILABLE (a restarting server), with
-  // exponential backoff, through a gRPC service config.
-  bool retry_unavailable = false;
-  // Open a TCP connection of this channel's own instead of sharing one with
-  // other channels to the same target.
-  bool own_connection = false;
-};
-
-// A plaintext channel to options.target (the servers speak no TLS).
-std::shared_ptr<grpc::Channel> CreateLocatorChannel(
-    const ChannelOptions& options);
 
 // Sets `context`'s deadline to `timeout` from now.
 void SetDeadlineFromNow(grpc::ClientContext* context,
@@ -89,6 +74,8 @@ class LocatorClient {
   grpc::Status GetStats(v1::GetStatsResponse* response);
   // Re-tunes the server now.
   grpc::Status Retune(v1::RetuneResponse* response);
+  // Makes the server load `dataset` ("": its configured one) and serve it.
+  grpc::Status Reload(const std::string& dataset, v1::ReloadResponse* response);
   // Asks the standard health service about the server as a whole.
   grpc::Status CheckHealth(HealthStatus* status);
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "server/call_deadline.h"
 #include "server/core/engine.h"
 #include "server/proto_convert.h"
 #include "server/status_mapping.h"
@@ -15,20 +16,8 @@
 namespace locator {
 namespace {
 
-bool DeadlinePassed(const grpc::CallbackServerContext& context) {
-  return std::chrono::system_clock::now() >= context.deadline();
-}
-
-// Once false it stays false: cancellation and a passed deadline are final.
-bool ShouldKeepGoing(const grpc::CallbackServerContext& context) {
-  return !context.IsCancelled() && !DeadlinePassed(context);
-}
-
-grpc::Status InterruptedStatus(const grpc::CallbackServerContext& context) {
-  if (DeadlinePassed(context)) {
-    return grpc::Status(grpc::StatusCode::DEADLINE_EXCEEDED,
-                        "deadline passed while locating the batch");
-  }
+grpc::Status InterruptedStatus(const CallDeadline& deadline) {
+  if (deadline.Passed()) return deadline.ExceededStatus("locating the batch");
   return grpc::Status(grpc::StatusCode::CANCELLED,
                       "call cancelled while locating the batch");
 }
@@ -39,6 +28,7 @@ grpc::Status InterruptedStatus(const grpc::CallbackServerContext& context) {
 // the others' results, hence the acquire-release countdown.
 struct BatchLocator::Call {
   grpc::CallbackServerContext* context = nullptr;
+  CallDeadline deadline;
   grpc::ServerUnaryReactor* reactor = nullptr;
   const v1::LocateBatchRequest* request = nullptr;
   v1::LocateBatchResponse* response = nullptr;
@@ -56,8 +46,10 @@ struct BatchLocator::Call {
   }
 };
 
-BatchLocator::BatchLocator(size_t threads, size_t max_batch_points)
+BatchLocator::BatchLocator(size_t threads, size_t max_batch_points,
+                           std::chrono::milliseconds default_deadline)
     : max_batch_points_(max_batch_points),
+      default_deadline_(default_deadline),
       pool_(threads > 1 ? threads - 1 : 0) {}
 
 Status BatchLocator::Validate(const v1::LocateBatchRequest& request) const {
@@ -102,12 +94,16 @@ grpc::ServerUnaryReactor* BatchLocator::Serve(
   const size_t shards = ShardCount(points);
   auto call = std::make_shared<Call>();
   call->context = context;
+  call->deadline = CallDeadline::For(*context, default_deadline_);
   call->reactor = reactor;
   call->request = &request;
   call->response = response;
   call->columns = SizeBatchColumns(request, points, response);
   call->locate_batch = std::move(locate_batch);
-  call->keep_going = [context] { return ShouldKeepGoing(*context); };
+  // Once false it stays false: cancellation and a passed deadline are final.
+  call->keep_going = [context, deadline = call->deadline] {
+    return !context->IsCancelled() && !deadline.Passed();
+  };
   call->shards_left.store(shards, std::memory_order_relaxed);
 
   // Shard s covers [s * points / shards, (s + 1) * points / shards).
@@ -166,7 +162,7 @@ void BatchLocator::Complete(Call* call) {
     call->reactor->Finish(grpc::Status::OK);
   } else if (!call->keep_going()) {
     // Whatever failed, the client has gone or stopped waiting.
-    call->reactor->Finish(InterruptedStatus(*call->context));
+    call->reactor->Finish(InterruptedStatus(call->deadline));
   } else {
     call->reactor->Finish(ToGrpcStatus(failure));
   }

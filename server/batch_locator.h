@@ -16,6 +16,7 @@
 
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -42,8 +43,11 @@ class BatchLocator {
       const std::function<bool()>& keep_going)>;
 
   // Splits large batches across `threads` threads (the caller plus
-  // threads - 1 pool workers) and rejects batches above `max_batch_points`.
-  BatchLocator(size_t threads, size_t max_batch_points);
+  // threads - 1 pool workers), rejects batches above `max_batch_points` and
+  // stops a batch whose client set no deadline after `default_deadline`
+  // (zero: never).
+  BatchLocator(size_t threads, size_t max_batch_points,
+               std::chrono::milliseconds default_deadline);
 
   BatchLocator(const BatchLocator&) = delete;
   BatchLocator& operator=(const BatchLocator&) = delete;
@@ -51,8 +55,8 @@ class BatchLocator {
   // Serves one LocateBatch call: validates `request` (xs/ys lengths, the
   // point limit, finite coordinates), locates its points with `locate_batch`
   // into `response` while the call is neither cancelled nor past its
-  // deadline, and finishes the returned reactor with the outcome (CANCELLED
-  // or DEADLINE_EXCEEDED when interrupted).
+  // deadline (see CallDeadline), and finishes the returned reactor with the
+  // outcome (CANCELLED or DEADLINE_EXCEEDED when interrupted).
   grpc::ServerUnaryReactor* Serve(grpc::CallbackServerContext* context,
                                   const v1::LocateBatchRequest& request,
                                   LocateBatchFn locate_batch,
@@ -73,6 +77,7 @@ class BatchLocator {
   static void Complete(Call* call);
 
   const size_t max_batch_points_;
+  const std::chrono::milliseconds default_deadline_;
   WorkerPool pool_;
 };
 

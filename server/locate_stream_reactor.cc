@@ -7,8 +7,12 @@
 
 namespace locator {
 
-LocateStreamReactor::LocateStreamReactor(LocateFn locate)
-    : locate_(std::move(locate)) {
+LocateStreamReactor::LocateStreamReactor(
+    grpc::CallbackServerContext* context,
+    std::chrono::milliseconds default_deadline, LocateFn locate)
+    : context_(context),
+      deadline_(CallDeadline::For(*context, default_deadline)),
+      locate_(std::move(locate)) {
   {
     // The reactions run on other threads; they see this construction (and
     // what locate_ refers to) through mu_, like all other state. gRPC orders
@@ -16,6 +20,12 @@ LocateStreamReactor::LocateStreamReactor(LocateFn locate)
     // see.
     std::lock_guard<std::mutex> lock(mu_);
     reading_ = true;
+    if (deadline_.ServerEnforced()) alarms_pending_ = 1;
+  }
+  // gRPC enforces a deadline the client set; the server's default is ours.
+  if (deadline_.ServerEnforced()) {
+    deadline_alarm_.Set(deadline_.when,
+                        [this](bool fired) { OnDeadline(fired); });
   }
   StartRead(&request_);
 }
@@ -63,7 +73,63 @@ void LocateStreamReactor::OnWriteDone(bool ok) {
   Start(actions);
 }
 
-void LocateStreamReactor::OnDone() { delete this; }
+void LocateStreamReactor::OnDone() {
+  bool delete_now;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    done_ = true;
+    delete_now = DoneLocked();
+  }
+  if (delete_now) {
+    delete this;
+    return;
+  }
+  // The pending callbacks run with fired == false; the last one deletes.
+  deadline_alarm_.Cancel();
+  stuck_write_alarm_.Cancel();
+}
+
+void LocateStreamReactor::OnDeadline(bool fired) {
+  Actions actions;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    if (fired && !finished_) {
+      if (!outcome_) outcome_ = deadline_.ExceededStatus("streaming");
+      // Answers not yet being written are dropped: the stream is over.
+      answers_.resize(writing_ ? 1 : 0);
+      if (writing_) {
+        ++alarms_pending_;
+        stuck_write_alarm_.Set(
+            std::chrono::system_clock::now() + kStuckWriteGrace,
+            [this](bool stuck) { OnStuckWrite(stuck); });
+      }
+      actions = NextActionsLocked();
+    }
+  }
+  // Safe without gRPC's reference: this alarm's count keeps the reactor.
+  Start(actions);
+  ReleaseAlarm();
+}
+
+void LocateStreamReactor::OnStuckWrite(bool fired) {
+  {
+    // Under mu_, so that OnDone() (which ends the context's life) waits.
+    // TryCancel() runs no reaction on this thread: gRPC schedules them.
+    std::lock_guard<std::mutex> lock(mu_);
+    if (fired && !finished_) context_->TryCancel();
+  }
+  ReleaseAlarm();
+}
+
+void LocateStreamReactor::ReleaseAlarm() {
+  bool delete_now;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    --alarms_pending_;
+    delete_now = DoneLocked();
+  }
+  if (delete_now) delete this;
+}
 
 LocateStreamReactor::Actions LocateStreamReactor::NextActionsLocked() {
   Actions actions;

@@ -12,15 +12,25 @@
 // cancelled call always surfaces as a failed operation and then finishes:
 // OnCancel() needs no action of its own.
 //
-// Owns itself: deletes itself in OnDone(). Thread-safety: gRPC may run the
-// read and write reactions concurrently; all state is guarded by mu_, and
-// gRPC operations are started after mu_ is released.
+// A stream whose client set no deadline gets the server's default (see
+// CallDeadline), enforced by an alarm: when it fires the stream stops
+// reading, drops the answers not yet sent and finishes with
+// DEADLINE_EXCEEDED. If an answer is still being written then (the client
+// may not be reading, so the status could never reach it behind the answer)
+// and is not written within kStuckWriteGrace, the call is cancelled.
+//
+// Owns itself: deletes itself once OnDone() has run and no alarm callback
+// is pending. Thread-safety: gRPC may run the read and write reactions and
+// the alarm callbacks concurrently; all state is guarded by mu_, and gRPC
+// operations are started after mu_ is released.
 
 #ifndef LOCATOR_SERVER_LOCATE_STREAM_REACTOR_H_
 #define LOCATOR_SERVER_LOCATE_STREAM_REACTOR_H_
 
+#include <grpcpp/alarm.h>
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -28,6 +38,7 @@
 #include <optional>
 
 #include "locator/v1/locator.pb.h"
+#include "server/call_deadline.h"
 #include "server/core/geometry.h"
 #include "server/core/locate_result.h"
 #include "server/core/status.h"
@@ -38,12 +49,17 @@ class LocateStreamReactor final
     : public grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse> {
  public:
   static constexpr size_t kMaxQueuedAnswers = 64;
+  static constexpr std::chrono::seconds kStuckWriteGrace{1};
 
   // Locates one point: Engine::Locate, or the no-op server's canned answer.
   using LocateFn = std::function<Status(const Point2& point, LocateResult*)>;
 
-  // Starts reading; every point is answered with `locate`.
-  explicit LocateStreamReactor(LocateFn locate);
+  // Starts reading the stream of `context`; every point is answered with
+  // `locate`; `default_deadline` (zero: none) bounds a stream whose client
+  // set no deadline.
+  LocateStreamReactor(grpc::CallbackServerContext* context,
+                      std::chrono::milliseconds default_deadline,
+                      LocateFn locate);
 
   void OnReadDone(bool ok) override;
   void OnWriteDone(bool ok) override;
@@ -62,7 +78,17 @@ class LocateStreamReactor final
   // answer before it is written.
   Actions NextActionsLocked();
   void Start(const Actions& actions);
+  // Alarm callbacks: `fired` is false when the alarm was cancelled.
+  void OnDeadline(bool fired);
+  void OnStuckWrite(bool fired);
+  // Ends an alarm callback: deletes the reactor if it was the last thing
+  // keeping it.
+  void ReleaseAlarm();
+  // Under mu_: whether the reactor may be deleted now.
+  bool DoneLocked() const { return done_ && alarms_pending_ == 0; }
 
+  grpc::CallbackServerContext* const context_;
+  const CallDeadline deadline_;
   const LocateFn locate_;
   v1::LocateRequest request_;  // filled by the single outstanding read
 
@@ -73,6 +99,10 @@ class LocateStreamReactor final
   // The stream's outcome, set once no more points will be read.
   std::optional<grpc::Status> outcome_;
   bool finished_ = false;
+  bool done_ = false;       // OnDone() has run
+  int alarms_pending_ = 0;  // alarm callbacks still to run
+  grpc::Alarm deadline_alarm_;
+  grpc::Alarm stuck_write_alarm_;
 };
 
 }  // namespace locator

@@ -4,6 +4,7 @@
 
 #include "server/locate_stream_reactor.h"
 #include "server/proto_convert.h"
+#include "server/stats_redaction.h"
 #include "server/status_mapping.h"
 
 namespace locator {
@@ -32,11 +33,28 @@ grpc::ServerUnaryReactor* FinishNow(grpc::CallbackServerContext* context,
 }  // namespace
 
 LocatorService::LocatorService(const LocatorServiceOptions& options)
-    : batch_locator_(options.batch_threads, options.max_batch_points) {}
+    : default_deadline_(options.default_deadline),
+      redact_(options.access.redact),
+      access_(options.access.data_token, options.access.admin_token),
+      batch_locator_(options.batch_threads, options.max_batch_points,
+                     options.default_deadline),
+      reloader_(
+          [this, build = options.build_engine](const std::string& dataset,
+                                               std::shared_ptr<Engine>* built) {
+            if (!build) {
+              return Status::FailedPrecondition("this server cannot reload");
+            }
+            const std::shared_ptr<Engine> serving = engine();
+            return build(dataset, serving.get(), built);
+          },
+          [this](std::shared_ptr<Engine> engine) {
+            return Publish(std::move(engine));
+          }) {}
 
-void LocatorService::Publish(std::shared_ptr<Engine> engine) {
+uint64_t LocatorService::Publish(std::shared_ptr<Engine> engine) {
   std::lock_guard<std::mutex> lock(engine_mu_);
   engine_ = std::move(engine);
+  return ++generation_;
 }
 
 std::shared_ptr<Engine> LocatorService::engine() const {
@@ -44,13 +62,44 @@ std::shared_ptr<Engine> LocatorService::engine() const {
   return engine_;
 }
 
+Status LocatorService::StartReload(const std::string& dataset,
+                                   EngineReloader::Done done) {
+  return reloader_.Start(dataset, std::move(done));
+}
+
+void LocatorService::Drain(std::chrono::system_clock::time_point deadline) {
+  drain_gate_.Close();
+  drain_gate_.WaitUntilIdle(deadline);
+}
+
+grpc::Status LocatorService::Admit(const grpc::CallbackServerContext& context,
+                                   AccessPolicy::Scope scope,
+                                   Admission* admission) {
+  admission->ticket = drain_gate_.Enter();
+  if (admission->ticket == nullptr) {
+    return ToGrpcStatus(Refusal::kShuttingDown, "server is shutting down");
+  }
+  if (grpc::Status denied = access_.Check(context, scope); !denied.ok()) {
+    return denied;
+  }
+  {
+    std::lock_guard<std::mutex> lock(engine_mu_);
+    admission->engine = engine_;
+    admission->generation = generation_;
+  }
+  return admission->engine != nullptr ? grpc::Status::OK : LoadingStatus();
+}
+
 grpc::ServerUnaryReactor* LocatorService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
     v1::LocateResponse* response) {
-  std::shared_ptr<Engine> engine = this->engine();
-  if (engine == nullptr) return FinishNow(context, LoadingStatus());
+  Admission call;
+  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
+      !refused.ok()) {
+    return FinishNow(context, refused);
+  }
   LocateResult result;
-  const Status status = engine->Locate(
+  const Status status = call.engine->Locate(
       Point2{request->point().x(), request->point().y()}, &result);
   if (status.ok()) ToLocateResponse(result, response);
   return FinishNow(context, ToGrpcStatus(status));
@@ -59,48 +108,90 @@ grpc::ServerUnaryReactor* LocatorService::Locate(
 grpc::ServerUnaryReactor* LocatorService::LocateBatch(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
     v1::LocateBatchResponse* response) {
-  std::shared_ptr<Engine> engine = this->engine();
-  if (engine == nullptr) return FinishNow(context, LoadingStatus());
+  Admission call;
+  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
+      !refused.ok()) {
+    return FinishNow(context, refused);
+  }
+  // The function (and with it the admission) lives until the batch ends.
   return batch_locator_.Serve(
       context, *request,
-      [engine](std::span<const Point2> points,
-               std::vector<LocateResult>* results,
-               const std::function<bool()>& keep_going) {
-        return engine->LocateBatch(points, results, keep_going);
+      [call](std::span<const Point2> points, std::vector<LocateResult>* results,
+             const std::function<bool()>& keep_going) {
+        return call.engine->LocateBatch(points, results, keep_going);
       },
       response);
 }
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
-LocatorService::LocateStream(grpc::CallbackServerContext* /*context*/) {
-  std::shared_ptr<Engine> engine = this->engine();
-  if (engine == nullptr) {
-    return new RejectedStreamReactor(LoadingStatus());
+LocatorService::LocateStream(grpc::CallbackServerContext* context) {
+  Admission call;
+  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
+      !refused.ok()) {
+    return new RejectedStreamReactor(refused);
   }
+  // The reactor holds the function (and with it the admission) until done.
   return new LocateStreamReactor(
-      [engine](const Point2& point, LocateResult* result) {
-        return engine->Locate(point, result);
+      context, default_deadline_,
+      [call](const Point2& point, LocateResult* result) {
+        return call.engine->Locate(point, result);
       });
 }
 
 grpc::ServerUnaryReactor* LocatorService::GetStats(
     grpc::CallbackServerContext* context,
     const v1::GetStatsRequest* /*request*/, v1::GetStatsResponse* response) {
-  std::shared_ptr<Engine> engine = this->engine();
-  if (engine == nullptr) return FinishNow(context, LoadingStatus());
-  ToGetStatsResponse(engine->Stats(), response);
+  Admission call;
+  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
+      !refused.ok()) {
+    return FinishNow(context, refused);
+  }
+  ToGetStatsResponse(call.engine->Stats(), response);
+  response->set_generation(call.generation);
+  response->set_reload_in_progress(reloader_.in_progress());
+  if (redact_) RedactStats(response);
   return FinishNow(context, grpc::Status::OK);
 }
 
 grpc::ServerUnaryReactor* LocatorService::Retune(
     grpc::CallbackServerContext* context, const v1::RetuneRequest* /*request*/,
     v1::RetuneResponse* response) {
-  std::shared_ptr<Engine> engine = this->engine();
-  if (engine == nullptr) return FinishNow(context, LoadingStatus());
-  engine->Retune();
-  ToTuningStats(engine->Stats().tuning, /*include_histogram=*/false,
+  Admission call;
+  if (grpc::Status refused =
+          Admit(*context, AccessPolicy::Scope::kAdmin, &call);
+      !refused.ok()) {
+    return FinishNow(context, refused);
+  }
+  call.engine->Retune();
+  ToTuningStats(call.engine->Stats().tuning, /*include_histogram=*/false,
                 response->mutable_tuning());
   return FinishNow(context, grpc::Status::OK);
+}
+
+grpc::ServerUnaryReactor* LocatorService::Reload(
+    grpc::CallbackServerContext* context, const v1::ReloadRequest* request,
+    v1::ReloadResponse* response) {
+  Admission call;
+  if (grpc::Status refused =
+          Admit(*context, AccessPolicy::Scope::kAdmin, &call);
+      !refused.ok()) {
+    return FinishNow(context, refused);
+  }
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  // The reload thread finishes the call; the admission it holds until then
+  // keeps a drain waiting for the build.
+  const Status started =
+      StartReload(request->dataset(),
+                  [reactor, response, call](const Status& status,
+                                            std::shared_ptr<Engine> engine,
+                                            uint64_t generation) {
+                    if (status.ok()) {
+                      ToReloadResponse(engine->Stats(), generation, response);
+                    }
+                    reactor->Finish(ToGrpcStatus(status));
+                  });
+  if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
+  return reactor;
 }
 
 }  // namespace locator

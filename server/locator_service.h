@@ -1,12 +1,17 @@
 // LocatorService: the locator.v1.Locator gRPC service (callback API) over an
 // Engine that is published once the dataset has been triangulated.
 //
-// Owns the BatchLocator (and with it the batch worker pool). The engine is
-// shared: every call copies the reference under a mutex when it starts, so
-// an engine stays alive until the calls using it have finished. (Not
-// std::atomic<std::shared_ptr>: libstdc++ 12's spins on a lock bit; see
-// server/core/snapshot_slot.h.) Until Publish(), every RPC answers
-// UNAVAILABLE "dataset is still loading".
+// Owns the BatchLocator (and with it the batch worker pool) and the
+// AccessPolicy. The engine is shared: every call copies the reference under
+// a mutex when it starts, so an engine stays alive until the calls using it
+// have finished. (Not std::atomic<std::shared_ptr>: libstdc++ 12's spins on
+// a lock bit; see server/core/snapshot_slot.h.)
+//
+// Every handler starts with Admit(), which refuses, in this order: calls
+// started after Drain() began (UNAVAILABLE "server is shutting down"; see
+// DrainGate), calls the AccessPolicy does not allow (UNAUTHENTICATED /
+// PERMISSION_DENIED), and, until Publish(), every call (UNAVAILABLE "dataset
+// is still loading").
 //
 // Thread-safety: all methods may be called concurrently, Publish() included.
 
@@ -15,13 +20,22 @@
 
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <string>
 
 #include "locator/v1/locator.grpc.pb.h"
+#include "server/access_policy.h"
 #include "server/batch_locator.h"
 #include "server/core/engine.h"
+#include "server/core/status.h"
+#include "server/drain_gate.h"
+#include "server/engine_reloader.h"
+#include "server/security_config.h"
 
 namespace locator {
 
@@ -30,6 +44,17 @@ struct LocatorServiceOptions {
   size_t batch_threads = 1;
   // LocateBatch requests with more points fail with RESOURCE_EXHAUSTED.
   size_t max_batch_points = 1'000'000;
+  // The deadline of a LocateBatch or LocateStream whose client set none
+  // (zero: none).
+  std::chrono::milliseconds default_deadline{0};
+  // Tokens and redaction.
+  AccessConfig access;
+  // Builds the engine for a dataset spec ("": the configured dataset), given
+  // the engine serving now (null before the first); runs on the reload
+  // thread. Unset: reloads fail with FAILED_PRECONDITION.
+  std::function<Status(const std::string& dataset, Engine* serving,
+                       std::shared_ptr<Engine>* built)>
+      build_engine;
 };
 
 class LocatorService final : public v1::Locator::CallbackService {
@@ -37,11 +62,35 @@ class LocatorService final : public v1::Locator::CallbackService {
   explicit LocatorService(const LocatorServiceOptions& options);
 
   // Starts answering with `engine`; calls already running keep the engine
-  // they started with.
-  void Publish(std::shared_ptr<Engine> engine);
+  // they started with. Returns its generation.
+  uint64_t Publish(std::shared_ptr<Engine> engine);
 
   // The engine new calls use, or null while the dataset is loading.
   std::shared_ptr<Engine> engine() const;
+
+  // Builds an engine for `dataset` ("": the configured one) with
+  // options.build_engine on the reload thread and publishes it; then calls
+  // `done` there with the outcome (see EngineReloader::Start).
+  // FailedPrecondition "reload in progress" while another build runs.
+  Status StartReload(const std::string& dataset, EngineReloader::Done done);
+
+  // Refuses new calls from now on (UNAVAILABLE) and waits until the calls
+  // already admitted have ended or `deadline` passes. Called when the server
+  // starts draining, before gRPC's shutdown.
+  void Drain(std::chrono::system_clock::time_point deadline);
+
+  // What an admitted call runs with. Whatever finishes the call holds it:
+  // the ticket keeps the call counted as in flight.
+  struct Admission {
+    std::shared_ptr<Engine> engine;
+    uint64_t generation = 0;  // of `engine`
+    DrainGate::Ticket ticket;
+  };
+
+  // OK if a call with `context` may run an RPC of `scope` now, with
+  // `*admission` set; otherwise the refusal to finish it with (see above).
+  grpc::Status Admit(const grpc::CallbackServerContext& context,
+                     AccessPolicy::Scope scope, Admission* admission);
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
                                    const v1::LocateRequest* request,
@@ -61,11 +110,22 @@ class LocatorService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Retune(grpc::CallbackServerContext* context,
                                    const v1::RetuneRequest* request,
                                    v1::RetuneResponse* response) override;
+  // Finishes when the new engine serves or the build failed (see
+  // StartReload); the callback thread is not held meanwhile.
+  grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
+                                   const v1::ReloadRequest* request,
+                                   v1::ReloadResponse* response) override;
 
  private:
+  const std::chrono::milliseconds default_deadline_;
+  const bool redact_;
+  const AccessPolicy access_;
+  DrainGate drain_gate_;
   mutable std::mutex engine_mu_;
   std::shared_ptr<Engine> engine_;  // guarded by engine_mu_
+  uint64_t generation_ = 0;         // guarded by engine_mu_
   BatchLocator batch_locator_;
+  EngineReloader reloader_;
 };
 
 }  // namespace locator

@@ -14,11 +14,13 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
+#include "server/http/status_server.h"
 #include "server/locator_service.h"
 #include "server/server_config.h"
 #include "server/server_runner.h"
@@ -48,13 +50,41 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+// Writes `engine`'s learned tuning to the state dir if it changed since the
+// last save. A failure is logged; serving goes on.
+void SaveTuningStateOrWarn(Engine& engine, std::string_view when) {
+  const Status status = engine.SaveTuningState();
+  if (!status.ok()) {
+    LogLine() << "warning: cannot save the tuning state " << when << ": "
+              << status.ToString();
+  }
+}
+
+// Says where a new engine's tuning came from, and why a state file in the
+// state dir was ignored.
+void LogTuningState(const Engine& engine) {
+  const PersistenceSummary p = engine.Stats().tuning.persistence;
+  if (p.state_path.empty()) return;
+  if (p.restored_from_state) {
+    LogLine() << "restored the tuning state from " << p.state_path;
+  } else if (!p.load_error.empty()) {
+    LogLine() << "warning: ignoring the tuning state " << p.state_path << ": "
+              << p.load_error;
+  } else {
+    LogLine() << "no tuning state at " << p.state_path << " yet";
+  }
+}
+
 // Loads the dataset and triangulates it, logging progress.
-Status BuildEngine(const ServerConfig& config,
-                   std::shared_ptr<Engine>* engine) {
-  LogLine() << "loading dataset " << config.dataset;
+Status LoadAndTriangulate(const ServerConfig& config,
+                          const std::string& dataset_spec,
+                          std::shared_ptr<Engine>* engine) {
+  LogLine() << "loading dataset " << dataset_spec;
   const auto load_start = std::chrono::steady_clock::now();
   Dataset dataset;
-  if (Status status = LoadDataset(config.dataset, &dataset); !status.ok()) {
+  if (Status status =
+          LoadDataset(dataset_spec, &dataset, config.dataset_limits);
+      !status.ok()) {
     return status;
   }
   LogLine() << "loaded " << dataset.points.size() << " points in "
@@ -69,13 +99,49 @@ Status BuildEngine(const ServerConfig& config,
   LogLine() << "built " << info.triangles << " triangles over " << info.vertices
             << " vertices (" << info.duplicates_merged
             << " duplicates merged) in " << info.build_seconds << " s";
+  LogTuningState(*created);
   *engine = std::move(created);
   return Status::OK();
 }
 
+// Builds the engine for `spec` ("": --dataset) at start and on reloads.
+// Before a reload it saves the serving engine's tuning, so that reloading
+// the same points continues from it.
+Status BuildEngine(const ServerConfig& config, const std::string& spec,
+                   Engine* serving, std::shared_ptr<Engine>* engine) {
+  if (serving != nullptr) SaveTuningStateOrWarn(*serving, "before the reload");
+  const Status status =
+      LoadAndTriangulate(config, spec.empty() ? config.dataset : spec, engine);
+  if (!status.ok() && serving != nullptr) {
+    LogLine() << "reload failed, still serving the previous dataset: "
+              << status.ToString();
+  }
+  return status;
+}
+
+// SIGHUP reloads the configured dataset, like a Reload RPC without one.
+void ReloadOnHangup(const ServerConfig& config, LocatorService& service) {
+  LogLine() << "SIGHUP: reloading " << config.dataset;
+  const Status started = service.StartReload(
+      "", [](const Status& status, std::shared_ptr<Engine> engine,
+             uint64_t generation) {
+        if (!status.ok()) return;  // BuildEngine said why
+        LogLine() << "reloaded: serving " << engine->dataset_info().triangles
+                  << " triangles as generation " << generation;
+      });
+  if (!started.ok()) LogLine() << "SIGHUP ignored: " << started.message();
+}
+
 // Periodic work acts on whichever engine the service currently publishes.
 void StartPeriodicWork(const ServerConfig& config,
-                       const LocatorService& service, ServerRunner* runner) {
+                       const LocatorService& service, StatusServer* status,
+                       ServerRunner* runner) {
+  if (status != nullptr) {
+    // The first sample is the baseline the first interval is measured from.
+    status->SampleHistory();
+    runner->RunEvery(StatusServer::kHistorySeconds,
+                     [status] { status->SampleHistory(); });
+  }
   if (config.stats_interval_s > 0) {
     runner->RunEvery(config.stats_interval_s, [&service] {
       const EngineStats stats = service.engine()->Stats();
@@ -91,6 +157,27 @@ void StartPeriodicWork(const ServerConfig& config,
   }
 }
 
+// On the loop thread, once the first engine is built (and published) or
+// its build failed.
+void ServeOrExit(const Status& built, const Engine* engine,
+                 const ServerConfig& config, const LocatorService& service,
+                 StatusServer* status_server, ServerRunner* runner) {
+  if (!built.ok()) {
+    // Parse errors name the file and line themselves; whole-dataset
+    // problems (too few points, all collinear) need the spec said.
+    LogLine() << "cannot serve dataset '" << config.dataset
+              << "': " << built.ToString()
+              << (built.code() == Status::Code::kResourceExhausted
+                      ? " (see --max-dataset-points)"
+                      : "");
+    runner->Stop(1);
+    return;
+  }
+  runner->SetServing(true);
+  LogLine() << "serving " << engine->dataset_info().triangles << " triangles";
+  StartPeriodicWork(config, service, status_server, runner);
+}
+
 int Main(int argc, char** argv) {
   ServerConfig config;
   std::string help;
@@ -101,30 +188,59 @@ int Main(int argc, char** argv) {
 
   LocatorService service(LocatorServiceOptions{
       .batch_threads = config.serving.threads,
-      .max_batch_points = config.serving.max_batch_points});
-  const std::unique_ptr<ServerRunner> runner =
-      ServerRunner::StartOrExit(kProgram, config.serving, {&service});
+      .max_batch_points = config.serving.max_batch_points,
+      .default_deadline = config.serving.transport.default_deadline,
+      .access = config.access,
+      .build_engine = [&config](const std::string& spec, Engine* serving,
+                                std::shared_ptr<Engine>* engine) {
+        return BuildEngine(config, spec, serving, engine);
+      }});
+  // With --http-listen, every gRPC call is counted for /metrics.
+  std::unique_ptr<StatusServer> status_server;
+  std::vector<
+      std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
+      interceptors;
+  if (config.http_enabled()) {
+    status_server =
+        std::make_unique<StatusServer>([&service] { return service.engine(); });
+    interceptors.push_back(status_server->NewInterceptorFactory());
+  }
+  const std::unique_ptr<ServerRunner> runner = ServerRunner::StartOrExit(
+      kProgram, config.serving, {&service}, std::move(interceptors));
+  if (status_server != nullptr) {
+    if (Status listening =
+            status_server->Listen(config.http_host, config.http_port);
+        !listening.ok()) {
+      std::cerr << kProgram << ": " << listening.message() << std::endl;
+      runner->Stop(1);
+      runner->RunAndExit();
+    }
+    std::cout << kProgram << " http listening on " << config.http_host << ":"
+              << status_server->port() << std::endl;
+  }
+  runner->OnDrain([&service](std::chrono::system_clock::time_point deadline) {
+    service.Drain(deadline);
+  });
+  runner->OnHangup([&] { ReloadOnHangup(config, service); });
+  runner->BeforeExit([&service] {
+    if (std::shared_ptr<Engine> engine = service.engine()) {
+      SaveTuningStateOrWarn(*engine, "at exit");
+    }
+  });
 
-  // The build runs off the loop so that signals are handled meanwhile; its
-  // outcome is handed to the loop, which owns every state change. The thread
-  // is never joined: the process ends in RunAndExit(), without unwinding
-  // this frame, so what the thread refers to here outlives it.
-  std::thread([&] {
-    std::shared_ptr<Engine> engine;
-    const Status status = BuildEngine(config, &engine);
-    boost::asio::post(runner->io_context(), [&, status, engine] {
-      if (!status.ok()) {
-        LogLine() << "cannot serve the dataset: " << status.ToString();
-        runner->Stop(1);
-        return;
-      }
-      service.Publish(engine);
-      runner->SetServing(true);
-      LogLine() << "serving " << engine->dataset_info().triangles
-                << " triangles";
-      StartPeriodicWork(config, service, runner.get());
-    });
-  }).detach();
+  // The first build is a reload from nothing, which nothing can refuse. It
+  // runs off the loop so that signals are handled meanwhile, and hands its
+  // outcome to the loop, which owns every state change of the process. What
+  // the callbacks refer to here outlives them: the process ends in
+  // RunAndExit() without unwinding this frame.
+  service.StartReload(
+      "", [&](const Status& status, std::shared_ptr<Engine> engine,
+              uint64_t /*generation*/) {
+        boost::asio::post(runner->io_context(), [&, status, engine] {
+          ServeOrExit(status, engine.get(), config, service,
+                      status_server.get(), runner.get());
+        });
+      });
   runner->RunAndExit();
 }
 

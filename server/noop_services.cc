@@ -32,7 +32,9 @@ LocateResult CannedAnswer(const Point2& q) {
 }
 
 NoopLocatorService::NoopLocatorService(const ServingConfig& config)
-    : batch_locator_(config.threads, config.max_batch_points) {}
+    : default_deadline_(config.transport.default_deadline),
+      batch_locator_(config.threads, config.max_batch_points,
+                     config.transport.default_deadline) {}
 
 grpc::ServerUnaryReactor* NoopLocatorService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
@@ -58,11 +60,12 @@ grpc::ServerUnaryReactor* NoopLocatorService::LocateBatch(
 }
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
-NoopLocatorService::LocateStream(grpc::CallbackServerContext* /*context*/) {
-  return new LocateStreamReactor([](const Point2& point, LocateResult* result) {
-    *result = CannedAnswer(point);
-    return Status::OK();
-  });
+NoopLocatorService::LocateStream(grpc::CallbackServerContext* context) {
+  return new LocateStreamReactor(context, default_deadline_,
+                                 [](const Point2& point, LocateResult* result) {
+                                   *result = CannedAnswer(point);
+                                   return Status::OK();
+                                 });
 }
 
 grpc::ServerUnaryReactor* NoopLocatorService::GetStats(

@@ -14,6 +14,8 @@
 
 #include <grpcpp/grpcpp.h>
 
+#include <chrono>
+
 #include "bench_proto/nested_batch.grpc.pb.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/batch_locator.h"
@@ -28,7 +30,8 @@ LocateResult CannedAnswer(const Point2& q);
 
 class NoopLocatorService final : public v1::Locator::CallbackService {
  public:
-  // Uses config's batch threads and point limit, like locatord.
+  // Uses config's batch threads, point limit and default deadline, like
+  // locatord. No access control: it is a yardstick, not a service.
   explicit NoopLocatorService(const ServingConfig& config);
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
@@ -50,6 +53,7 @@ class NoopLocatorService final : public v1::Locator::CallbackService {
                                    v1::RetuneResponse* response) override;
 
  private:
+  const std::chrono::milliseconds default_deadline_;
   BatchLocator batch_locator_;
 };
 

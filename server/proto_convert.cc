@@ -43,6 +43,17 @@ T* ResizedColumn(google::protobuf::RepeatedField<T>* column, size_t size) {
   return column->mutable_data();
 }
 
+void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
+  dataset->set_source(info.source);
+  dataset->set_input_points(info.input_points);
+  dataset->set_vertices(info.vertices);
+  dataset->set_duplicates_merged(info.duplicates_merged);
+  dataset->set_triangles(info.triangles);
+  ToProtoBox(info.bounding_box, dataset->mutable_bounding_box());
+  dataset->set_has_values(info.has_values);
+  dataset->set_build_seconds(info.build_seconds);
+}
+
 }  // namespace
 
 void ToLocateResponse(const LocateResult& result,
@@ -143,21 +154,19 @@ void ToTuningStats(const TuningSummary& summary, bool include_histogram,
     ToProtoPoint(start, tuning->add_start_points());
   }
   tuning->set_start_point_count(summary.start_point_count);
+  const PersistenceSummary& persistence = summary.persistence;
+  v1::TuningPersistence* out = tuning->mutable_persistence();
+  out->set_state_path(persistence.state_path);
+  out->set_restored_from_state(persistence.restored_from_state);
+  out->set_load_error(persistence.load_error);
+  out->set_saves(persistence.saves);
+  out->set_save_error(persistence.save_error);
 }
 
 void ToGetStatsResponse(const EngineStats& stats,
                         v1::GetStatsResponse* response) {
   const DatasetInfo& info = stats.dataset;
-  v1::DatasetStats* dataset = response->mutable_dataset();
-  dataset->set_source(info.source);
-  dataset->set_input_points(info.input_points);
-  dataset->set_vertices(info.vertices);
-  dataset->set_duplicates_merged(info.duplicates_merged);
-  dataset->set_triangles(info.triangles);
-  ToProtoBox(info.bounding_box, dataset->mutable_bounding_box());
-  dataset->set_has_values(info.has_values);
-  dataset->set_build_seconds(info.build_seconds);
-
+  ToDatasetStats(info, response->mutable_dataset());
   response->set_strategy(stats.strategy);
   response->set_queries_served(stats.queries);
   response->set_mean_cost_lifetime(stats.mean_cost_lifetime);
@@ -169,6 +178,14 @@ void ToGetStatsResponse(const EngineStats& stats,
   v1::MemoryStats* memory = response->mutable_memory();
   memory->set_triangulation_bytes(info.triangulation_bytes);
   memory->set_tuning_bytes(stats.tuning.memory_bytes);
+}
+
+void ToReloadResponse(const EngineStats& stats, uint64_t generation,
+                      v1::ReloadResponse* response) {
+  ToDatasetStats(stats.dataset, response->mutable_dataset());
+  response->set_generation(generation);
+  ToTuningStats(stats.tuning, /*include_histogram=*/false,
+                response->mutable_tuning());
 }
 
 }  // namespace locator

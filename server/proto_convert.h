@@ -50,9 +50,15 @@ uint64_t WriteBatchAnswers(std::span<const LocateResult> results, size_t offset,
 void ToTuningStats(const TuningSummary& summary, bool include_histogram,
                    v1::TuningStats* tuning);
 
-// Fills `response` with everything GetStats reports.
+// Fills `response` with everything GetStats reports about the engine (the
+// service adds its generation and reload state).
 void ToGetStatsResponse(const EngineStats& stats,
                         v1::GetStatsResponse* response);
+
+// Fills `response` for a Reload that made the engine with `stats` serve as
+// `generation`.
+void ToReloadResponse(const EngineStats& stats, uint64_t generation,
+                      v1::ReloadResponse* response);
 
 }  // namespace locator
 

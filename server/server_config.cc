@@ -4,12 +4,12 @@
 #include <array>
 #include <boost/program_options.hpp>
 #include <charconv>
-#include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <sstream>
 
-#include "server/core/byte_size.h"
+#include "server/flag_parsing.h"
 
 namespace locator {
 namespace {
@@ -23,6 +23,7 @@ struct ServingFlags {
   std::string max_message_bytes;
   std::string threads;
   std::string max_batch_points;
+  TransportFlags transport;
 };
 
 struct EngineFlags {
@@ -33,70 +34,9 @@ struct EngineFlags {
   std::string budget;
   std::string stats_interval_s;
   std::string retune_interval_s;
+  std::string state_dir;
+  std::string http_listen;
 };
-
-Status FlagError(std::string_view flag, std::string_view text,
-                 std::string_view problem) {
-  std::ostringstream msg;
-  msg << "--" << flag << " '" << text << "': " << problem;
-  return Status::InvalidArgument(msg.str());
-}
-
-Status ParseCount(std::string_view flag, std::string_view text, uint64_t min,
-                  uint64_t max, uint64_t* out) {
-  uint64_t value = 0;
-  const auto [end, error] =
-      std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() ||
-      text.empty()) {
-    return FlagError(flag, text, "not a whole number");
-  }
-  if (value < min || value > max) {
-    std::ostringstream range;
-    range << "must be between " << min << " and " << max;
-    return FlagError(flag, text, range.str());
-  }
-  *out = value;
-  return Status::OK();
-}
-
-template <typename T>
-Status ParseCountAs(std::string_view flag, std::string_view text, uint64_t min,
-                    uint64_t max, T* out) {
-  uint64_t value = 0;
-  Status status = ParseCount(flag, text, min, max, &value);
-  if (status.ok()) *out = static_cast<T>(value);
-  return status;
-}
-
-Status ParseSeconds(std::string_view flag, std::string_view text, double* out) {
-  double value = 0;
-  const auto [end, error] =
-      std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() ||
-      !std::isfinite(value) || value < 0) {
-    return FlagError(flag, text, "not a number of seconds >= 0");
-  }
-  *out = value;
-  return Status::OK();
-}
-
-Status ParseByteFlag(std::string_view flag, std::string_view text, uint64_t min,
-                     uint64_t max, size_t* out) {
-  size_t bytes = 0;
-  if (Status status = ParseByteSize(text, &bytes); !status.ok()) {
-    // The message already quotes the text.
-    return Status::InvalidArgument("--" + std::string(flag) + ": " +
-                                   status.message());
-  }
-  if (bytes < min || bytes > max) {
-    std::ostringstream range;
-    range << "must be between " << min << " and " << max << " bytes";
-    return FlagError(flag, text, range.str());
-  }
-  *out = bytes;
-  return Status::OK();
-}
 
 void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
                      po::options_description* description) {
@@ -118,6 +58,7 @@ void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
       po::value(&flags->max_batch_points)
           ->default_value(std::to_string(defaults.max_batch_points)),
       "larger LocateBatch requests fail with RESOURCE_EXHAUSTED");
+  AddTransportFlags(defaults.transport, &flags->transport, description);
 }
 
 Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
@@ -139,9 +80,13 @@ Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
     return status;
   }
   // A protobuf repeated field holds at most INT_MAX elements.
-  return ParseCountAs("max-batch-points", flags.max_batch_points, 1,
-                      std::numeric_limits<int>::max(),
-                      &config->max_batch_points);
+  if (Status status = ParseCountAs("max-batch-points", flags.max_batch_points,
+                                   1, std::numeric_limits<int>::max(),
+                                   &config->max_batch_points);
+      !status.ok()) {
+    return status;
+  }
+  return ReadTransportFlags(flags.transport, &config->transport);
 }
 
 void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
@@ -172,7 +117,29 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       "log a stats line this often; 0 = never")(
       "retune-interval-s",
       po::value(&flags->retune_interval_s)->default_value("0"),
-      "also re-tune this often; 0 = only by query count");
+      "also re-tune this often; 0 = only by query count")(
+      "state-dir", po::value(&flags->state_dir)->default_value(""),
+      "self-tuning: directory where the learned tuning persists across "
+      "restarts and reloads; empty = off")(
+      "http-listen", po::value(&flags->http_listen)->default_value(""),
+      "HOST:PORT for /metrics and the status page; port 0 lets the OS pick "
+      "(the chosen port is printed); empty = off");
+}
+
+// The state dir must exist (locatord does not create directories), and only
+// the self-tuning strategy has state to keep.
+Status ReadStateDir(const EngineFlags& flags, EngineOptions* engine) {
+  if (flags.state_dir.empty()) return Status::OK();
+  std::error_code error;
+  if (!std::filesystem::is_directory(flags.state_dir, error)) {
+    return FlagError("state-dir", flags.state_dir, "not a directory");
+  }
+  if (engine->strategy != "self-tuning") {
+    return FlagError("state-dir", flags.state_dir,
+                     "only the self-tuning strategy keeps state");
+  }
+  engine->tuning.state_dir = flags.state_dir;
+  return Status::OK();
 }
 
 Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
@@ -206,6 +173,14 @@ Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
   if (status.ok()) {
     status = ParseSeconds("retune-interval-s", flags.retune_interval_s,
                           &config->retune_interval_s);
+  }
+  if (status.ok()) status = ReadStateDir(flags, &engine);
+  if (status.ok() && !flags.http_listen.empty()) {
+    status = ParseListenAddress(flags.http_listen, &config->http_host,
+                                &config->http_port);
+    if (!status.ok()) {
+      return FlagError("http-listen", flags.http_listen, status.message());
+    }
   }
   return status;
 }
@@ -282,23 +257,35 @@ Status ParseServerConfig(int argc, const char* const argv[],
                          ServerConfig* config, std::string* help) {
   const ServerConfig defaults;
   std::string dataset;
+  std::string max_dataset_points;
   ServingFlags serving;
   EngineFlags engine;
+  AccessFlags access;
   po::options_description description("locatord flags");
   description.add_options()(
       "dataset", po::value(&dataset)->default_value(defaults.dataset),
-      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED]");
+      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED]")(
+      "max-dataset-points",
+      po::value(&max_dataset_points)
+          ->default_value(std::to_string(defaults.dataset_limits.max_points)),
+      "larger datasets fail before they are triangulated (~200 bytes per "
+      "point once built)");
   AddServingFlags(defaults.serving, &serving, &description);
   AddEngineFlags(defaults, &engine, &description);
+  AddAccessFlags(&access, &description);
 
   Status status = ParseCommandLine(argc, argv, "locatord", description, help);
   if (!status.ok() || !help->empty()) return status;
   if (dataset.empty())
     return FlagError("dataset", dataset, "must not be empty");
   config->dataset = dataset;
-  status = ReadServingFlags(serving, &config->serving);
-  if (!status.ok()) return status;
-  return ReadEngineFlags(engine, config);
+  status = ParseCountAs("max-dataset-points", max_dataset_points, 3,
+                        std::numeric_limits<uint32_t>::max(),
+                        &config->dataset_limits.max_points);
+  if (status.ok()) status = ReadServingFlags(serving, &config->serving);
+  if (status.ok()) status = ReadEngineFlags(engine, config);
+  if (status.ok()) status = ReadAccessFlags(access, &config->access);
+  return status;
 }
 
 Status ParseNoopServerConfig(int argc, const char* const argv[],

@@ -15,8 +15,10 @@
 #include <string_view>
 #include <thread>
 
+#include "server/core/dataset.h"
 #include "server/core/engine.h"
 #include "server/core/status.h"
+#include "server/security_config.h"
 
 namespace locator {
 
@@ -31,6 +33,8 @@ struct ServingConfig {
   size_t threads = std::max(1u, std::thread::hardware_concurrency());
   // --max-batch-points: larger LocateBatch requests get RESOURCE_EXHAUSTED.
   size_t max_batch_points = 1'000'000;
+  // TLS, connection limits, keepalive and the default deadline.
+  TransportConfig transport;
 
   // "HOST:PORT" as given to --listen.
   std::string ListenAddress() const;
@@ -41,13 +45,24 @@ struct ServerConfig {
   ServingConfig serving;
   // --dataset: a file path or generator spec (see LoadDataset).
   std::string dataset = "uniform:1000000:1";
-  // --strategy, --grid, --warmup, --retune-every, --budget; the server always
-  // re-tunes in the background.
+  // --max-dataset-points: a larger dataset fails before it is triangulated
+  // (each point costs ~200 bytes resident once triangulated).
+  DatasetLimits dataset_limits{.max_points = 10'000'000};
+  // --token-file, --admin-token-file, --redact.
+  AccessConfig access;
+  // --strategy, --grid, --warmup, --retune-every, --budget, --state-dir; the
+  // server always re-tunes in the background.
   EngineOptions engine;
   // --stats-interval-s: period of the stats log line; 0 = off.
   double stats_interval_s = 0;
   // --retune-interval-s: period of time-based re-tunes; 0 = off.
   double retune_interval_s = 0;
+  // --http-listen HOST:PORT of the metrics and status page server; port 0
+  // lets the OS pick. Off (empty host) by default.
+  std::string http_host;
+  int http_port = 0;
+
+  bool http_enabled() const { return !http_host.empty(); }
 };
 
 // Parses locatord's command line into `config`. With --help, sets `help` to

@@ -11,13 +11,59 @@
 #include "locator/v1/locator.grpc.pb.h"
 
 namespace locator {
+namespace {
+
+std::shared_ptr<grpc::ServerCredentials> Credentials(const TlsConfig& tls) {
+  if (!tls.enabled()) return grpc::InsecureServerCredentials();
+  grpc::SslServerCredentialsOptions options(
+      tls.client_ca_pem.empty()
+          ? GRPC_SSL_DONT_REQUEST_CLIENT_CERTIFICATE
+          : GRPC_SSL_REQUEST_AND_REQUIRE_CLIENT_CERTIFICATE_AND_VERIFY);
+  options.pem_root_certs = tls.client_ca_pem;
+  options.pem_key_cert_pairs.push_back(
+      {tls.private_key_pem, tls.cert_chain_pem});
+  return grpc::SslServerCredentials(options);
+}
+
+void SetConnectionLimits(const TransportConfig& transport,
+                         grpc::ServerBuilder* builder) {
+  builder->AddChannelArgument(GRPC_ARG_MAX_CONCURRENT_STREAMS,
+                              transport.max_concurrent_streams);
+  // With bandwidth-delay probing, gRPC grows a stream's receive window to
+  // many megabytes, and a client that writes without reading its answers
+  // fills it: 4 such streams grew the server by ~50 MB. Without it each
+  // stream's window stays at the 64 KiB lookahead, so a connection buffers
+  // at most max_concurrent_streams x 64 KiB. (1M-point batches over
+  // loopback ran as fast either way.)
+  builder->AddChannelArgument(GRPC_ARG_HTTP2_BDP_PROBE, 0);
+  builder->AddChannelArgument(GRPC_ARG_KEEPALIVE_TIME_MS,
+                              transport.keepalive_time_ms);
+  builder->AddChannelArgument(GRPC_ARG_KEEPALIVE_TIMEOUT_MS,
+                              transport.keepalive_timeout_ms);
+  // Pooled clients keep idle connections warm through load balancers; they
+  // may, at the minimum interval. The server's own pings then also find
+  // dead peers on idle connections.
+  builder->AddChannelArgument(GRPC_ARG_KEEPALIVE_PERMIT_WITHOUT_CALLS, 1);
+  builder->AddChannelArgument(
+      GRPC_ARG_HTTP2_MIN_RECV_PING_INTERVAL_WITHOUT_DATA_MS,
+      transport.min_ping_interval_ms);
+  builder->AddChannelArgument(GRPC_ARG_HTTP2_MAX_PING_STRIKES,
+                              transport.max_ping_strikes);
+}
+
+}  // namespace
 
 ServerRunner::ServerRunner(std::string_view program)
-    : program_(program), signals_(io_context_, SIGINT, SIGTERM) {}
+    : program_(program),
+      signals_(io_context_, SIGINT, SIGTERM),
+      hangup_(io_context_, SIGHUP) {}
 
 std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
     std::string_view program, const ServingConfig& config,
-    const std::vector<grpc::Service*>& services) {
+    const std::vector<grpc::Service*>& services,
+    std::vector<
+        std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
+        interceptors) {
   // The signal handlers are installed (by the constructor) before the
   // listening line goes out: whoever reads that line may signal at once.
   std::unique_ptr<ServerRunner> created(new ServerRunner(program));
@@ -27,10 +73,12 @@ std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
   grpc::ServerBuilder builder;
   int port = 0;
   builder.AddListeningPort(config.ListenAddress(),
-                           grpc::InsecureServerCredentials(), &port);
+                           Credentials(config.transport.tls), &port);
   builder.SetMaxReceiveMessageSize(static_cast<int>(config.max_message_bytes));
   builder.SetMaxSendMessageSize(static_cast<int>(config.max_message_bytes));
+  SetConnectionLimits(config.transport, &builder);
   for (grpc::Service* service : services) builder.RegisterService(service);
+  builder.experimental().SetInterceptorCreators(std::move(interceptors));
   created->server_ = builder.BuildAndStart();
   if (created->server_ == nullptr || port == 0) {
     std::cerr << program << ": cannot listen on " << config.ListenAddress()
@@ -47,6 +95,10 @@ void ServerRunner::SetServing(bool serving) {
   grpc::HealthCheckServiceInterface* health = server_->GetHealthCheckService();
   health->SetServingStatus("", serving);
   health->SetServingStatus(v1::Locator::service_full_name(), serving);
+}
+
+void ServerRunner::OnDrain(DrainHook hook) {
+  drain_hooks_.push_back(std::move(hook));
 }
 
 void ServerRunner::RunEvery(double seconds, std::function<void()> tick) {
@@ -71,13 +123,37 @@ void ServerRunner::ScheduleTick(boost::asio::steady_timer* timer,
 void ServerRunner::Stop(int exit_code) {
   exit_code_ = exit_code;
   SetServing(false);
-  // Blocks the loop until the in-flight calls are done (or cut off at the
-  // deadline); nothing else is left for the loop to do by then.
-  server_->Shutdown(std::chrono::system_clock::now() + kDrainDeadline);
+  // The hooks and Shutdown() block the loop until the in-flight calls are
+  // done (or cut off at the deadline); nothing else is left for the loop to
+  // do by then.
+  const auto deadline = std::chrono::system_clock::now() + kDrainDeadline;
+  for (const DrainHook& hook : drain_hooks_) hook(deadline);
+  server_->Shutdown(deadline);
   io_context_.stop();
 }
 
+void ServerRunner::OnHangup(std::function<void()> handler) {
+  hangup_handler_ = std::move(handler);
+}
+
+void ServerRunner::BeforeExit(std::function<void()> hook) {
+  before_exit_ = std::move(hook);
+}
+
+void ServerRunner::WaitForHangup() {
+  hangup_.async_wait([this](const boost::system::error_code& error, int) {
+    if (error) return;  // cancelled: the loop is stopping
+    if (hangup_handler_) {
+      hangup_handler_();
+    } else {
+      std::cerr << program_ << " received SIGHUP; nothing to do" << std::endl;
+    }
+    WaitForHangup();
+  });
+}
+
 void ServerRunner::RunAndExit() {
+  WaitForHangup();
   signals_.async_wait(
       [this](const boost::system::error_code& error, int signal_number) {
         if (error) return;
@@ -86,10 +162,11 @@ void ServerRunner::RunAndExit() {
         Stop(0);
       });
   io_context_.run();
-  // Every call has been answered and the server is shut down; what is left
-  // holds no state worth saving. Tearing it down would cost time: gRPC's
-  // global shutdown can idle for up to 10 s on an executor thread's poll,
-  // and a triangulation build cannot be interrupted.
+  // Every call has been answered and the server is shut down; the hook saves
+  // whatever state is worth keeping, and the rest is not torn down. That
+  // would cost time: gRPC's global shutdown can idle for up to 10 s on an
+  // executor thread's poll, and a triangulation build cannot be interrupted.
+  if (before_exit_) before_exit_();
   std::cout.flush();
   std::cerr.flush();
   std::_Exit(exit_code_);

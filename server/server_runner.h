@@ -2,17 +2,21 @@
 // process around it (signals, periodic work, shutdown).
 //
 // StartOrExit() builds the server with the default health service and
-// reflection, marks it NOT_SERVING, starts it and prints "<program>
+// reflection, TLS and the connection limits of the config's
+// TransportConfig, marks it NOT_SERVING, starts it and prints "<program>
 // listening on HOST:PORT" (the port actually bound) on stdout. RunAndExit()
 // then drives the loop on the calling thread until SIGINT or SIGTERM, or
-// until Stop(): the server goes NOT_SERVING, new calls are refused,
-// in-flight calls get kDrainDeadline to complete, and the process exits with
-// the exit code.
+// until Stop(): the server goes NOT_SERVING, the OnDrain() hooks run (the
+// services refuse new calls and wait for theirs to end), gRPC shuts down,
+// in-flight calls get what is left of kDrainDeadline to complete, the
+// BeforeExit() hook runs, and the process exits with the exit code. SIGHUP
+// never ends the process: it calls the OnHangup() handler (e.g. a reload),
+// or is logged and ignored without one.
 //
-// Owns the server, the io_context, its signal set and timers. Thread-safety:
-// SetServing() may be called from any thread; RunEvery() and Stop() only on
-// the loop thread (post to io_context() from elsewhere); the rest from the
-// thread that called StartOrExit().
+// Owns the server, the io_context, its signal sets and timers.
+// Thread-safety: SetServing() may be called from any thread; RunEvery() and
+// Stop() only on the loop thread (post to io_context() from elsewhere); the
+// rest from the thread that called StartOrExit().
 
 #ifndef LOCATOR_SERVER_SERVER_RUNNER_H_
 #define LOCATOR_SERVER_SERVER_RUNNER_H_
@@ -38,11 +42,15 @@ class ServerRunner {
  public:
   static constexpr std::chrono::seconds kDrainDeadline{10};
 
-  // Starts `services` on config's address as described above. If the
-  // address cannot be bound, says so on stderr and exits with code 1.
+  // Starts `services` on config's address as described above, with
+  // `interceptors` seeing every call. If the address cannot be bound, says
+  // so on stderr and exits with code 1.
   static std::unique_ptr<ServerRunner> StartOrExit(
       std::string_view program, const ServingConfig& config,
-      const std::vector<grpc::Service*>& services);
+      const std::vector<grpc::Service*>& services,
+      std::vector<std::unique_ptr<
+          grpc::experimental::ServerInterceptorFactoryInterface>>
+          interceptors = {});
 
   ServerRunner(const ServerRunner&) = delete;
   ServerRunner& operator=(const ServerRunner&) = delete;
@@ -53,12 +61,24 @@ class ServerRunner {
   // locator.v1.Locator.
   void SetServing(bool serving);
 
+  // Calls `hook` on the loop thread when the drain starts, before gRPC's
+  // shutdown, with the drain's deadline; it may block until then.
+  using DrainHook =
+      std::function<void(std::chrono::system_clock::time_point deadline)>;
+  void OnDrain(DrainHook hook);
+
   // Calls `tick` on the loop thread every `seconds` until the loop stops.
   void RunEvery(double seconds, std::function<void()> tick);
 
   // Shuts the server down (draining in-flight calls) and makes RunAndExit()
   // exit with `exit_code`.
   void Stop(int exit_code);
+
+  // Calls `handler` on the loop thread on every SIGHUP.
+  void OnHangup(std::function<void()> handler);
+  // Calls `hook` on the loop thread once the server has shut down, right
+  // before the process exits (after a signal or Stop()).
+  void BeforeExit(std::function<void()> hook);
 
   // Runs the loop until a signal (exit code 0) or Stop(), then ends the
   // process at once: objects still alive, including threads other code
@@ -71,11 +91,18 @@ class ServerRunner {
   void ScheduleTick(boost::asio::steady_timer* timer,
                     std::chrono::steady_clock::duration period,
                     std::function<void()> tick);
+  // Waits for the next SIGHUP, handles it and waits again.
+  void WaitForHangup();
 
   const std::string program_;
   boost::asio::io_context io_context_;
   boost::asio::signal_set signals_;
+  // SIGHUP, registered from the start so that it cannot kill the process.
+  boost::asio::signal_set hangup_;
+  std::function<void()> hangup_handler_;
+  std::function<void()> before_exit_;
   std::list<boost::asio::steady_timer> timers_;  // stable addresses
+  std::vector<DrainHook> drain_hooks_;
   std::unique_ptr<grpc::Server> server_;
   int exit_code_ = 0;
 };

@@ -29,11 +29,28 @@ grpc::StatusCode ToGrpcCode(Status::Code code) {
   return grpc::StatusCode::UNKNOWN;
 }
 
+grpc::StatusCode ToGrpcCode(Refusal refusal) {
+  switch (refusal) {
+    case Refusal::kUnauthenticated:
+      return grpc::StatusCode::UNAUTHENTICATED;
+    case Refusal::kPermissionDenied:
+      return grpc::StatusCode::PERMISSION_DENIED;
+    case Refusal::kShuttingDown:
+      // The call never started: a client may retry it on another replica.
+      return grpc::StatusCode::UNAVAILABLE;
+  }
+  return grpc::StatusCode::UNKNOWN;
+}
+
 }  // namespace
 
 grpc::Status ToGrpcStatus(const Status& status) {
   if (status.ok()) return grpc::Status::OK;
   return grpc::Status(ToGrpcCode(status.code()), status.message());
+}
+
+grpc::Status ToGrpcStatus(Refusal refusal, const std::string& message) {
+  return grpc::Status(ToGrpcCode(refusal), message);
 }
 
 }  // namespace locator

@@ -1,4 +1,5 @@
-// The one place where a core Status becomes a gRPC status.
+// The one place where a core Status, or the service's refusal of a call,
+// becomes a gRPC status.
 //
 // Every RPC that fails because the core said so goes through ToGrpcStatus, so
 // a client sees the same code for the same cause whichever RPC it used. The
@@ -10,6 +11,8 @@
 
 #include <grpcpp/support/status.h>
 
+#include <string>
+
 #include "server/core/status.h"
 
 namespace locator {
@@ -18,6 +21,17 @@ namespace locator {
 // InvalidArgument, NotFound, FailedPrecondition, ResourceExhausted and
 // Unavailable to their namesakes; Internal and IOError to INTERNAL.
 grpc::Status ToGrpcStatus(const Status& status);
+
+// Why the service refuses a call before doing any of its work.
+enum class Refusal {
+  kUnauthenticated,   // no well-formed credentials: UNAUTHENTICATED
+  kPermissionDenied,  // credentials this RPC does not accept:
+                      // PERMISSION_DENIED
+  kShuttingDown,      // the server is draining: UNAVAILABLE
+};
+
+// The gRPC status for `refusal`, with `message`.
+grpc::Status ToGrpcStatus(Refusal refusal, const std::string& message);
 
 }  // namespace locator
 

@@ -18,9 +18,12 @@ constexpr char kUsageHead[] =
 Drives a locator server with a bounded load and reports throughput, latency
 percentiles, errors by status code and the server's mean cost per window of
 queries. Exit code: 0 when every call succeeded, 1 when any call failed (the
-report still prints), 2 for a usage error.
+report still prints) or the --plot file could not be written, 2 for a usage
+error.
 
 )";
+
+constexpr double kMinTimelineSeconds = 0.1;
 
 // The flags as parsed, before they are checked and converted. Counts are
 // signed so that a negative value is caught rather than wrapped.
@@ -36,6 +39,7 @@ struct RawFlags {
   int64_t window = 16;
   int64_t cost_window = 500;
   int64_t seed = 1;
+  ChannelSecurityFlags security;
 };
 
 po::options_description Flags(LoadOptions& options, RawFlags& raw) {
@@ -91,7 +95,18 @@ po::options_description Flags(LoadOptions& options, RawFlags& raw) {
        po::value(&raw.cost_window)->default_value(raw.cost_window),
        "queries per window of the server's mean cost")  //
       ("format", po::value(&raw.format)->default_value(raw.format),
-       "text | json (one summary object)");
+       "text | json (one summary object)")  //
+      ("timeline-s",
+       po::value(&options.timeline_seconds)
+           ->default_value(options.timeline_seconds),
+       "seconds per slice of the timeline (JSON report, --plot); >= 0.1")  //
+      ("plot", po::value(&options.plot_path),
+       "write latency (p50, p99) and server cost over time to this SVG "
+       "file")  //
+      ("phase-signal", po::bool_switch(&options.phase_signal),
+       "each SIGUSR1 starts a new phase; the report breaks calls, failures "
+       "and latency down by phase");
+  AddChannelSecurityFlags(&raw.security, &flags);
   return flags;
 }
 
@@ -214,6 +229,9 @@ Status ParseLoadOptions(const std::vector<std::string>& args,
     status = SetRunLength(raw, parsed.count("duration") > 0,
                           parsed.count("queries") > 0, &options->length);
   }
+  if (status.ok()) {
+    status = LoadChannelSecurity(raw.security, &options->channel.security);
+  }
   if (!status.ok()) return status;
   if (!(options->rate >= 0) || !std::isfinite(options->rate)) {
     return Status::InvalidArgument("--rate must be >= 0");
@@ -221,6 +239,11 @@ Status ParseLoadOptions(const std::vector<std::string>& args,
   if (options->rate > 0 && options->mode == LoadMode::kStream) {
     return Status::InvalidArgument(
         "--rate paces calls; streams have no open-loop mode");
+  }
+  // Each slice holds a 16 KiB histogram: bound how many a run can make.
+  if (!(options->timeline_seconds >= kMinTimelineSeconds) ||
+      !std::isfinite(options->timeline_seconds)) {
+    return Status::InvalidArgument("--timeline-s must be at least 0.1");
   }
   if (raw.format != "text" && raw.format != "json") {
     return Status::InvalidArgument("--format must be text or json, not '" +

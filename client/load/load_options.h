@@ -45,6 +45,12 @@ struct LoadOptions {
   int64_t deadline_ms = 5000;
   uint64_t cost_window = 500;
   ReportFormat format = ReportFormat::kText;
+  // Length of a slice of the report's timeline, in seconds.
+  double timeline_seconds = 1;
+  // Write the timeline as an SVG chart to this file (none when empty).
+  std::string plot_path;
+  // SIGUSR1 starts a new phase of the run (phase_signal.h).
+  bool phase_signal = false;
   // --help was given: print LoadUsage() and do nothing else.
   bool help = false;
 

@@ -4,8 +4,10 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <cstdio>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "client/str_cat.h"
 
@@ -61,6 +63,36 @@ Struct& SetObject(Struct& object, std::string_view key) {
   return *(*object.mutable_fields())[std::string(key)].mutable_struct_value();
 }
 
+google::protobuf::ListValue& SetList(Struct& object, std::string_view key) {
+  return *(*object.mutable_fields())[std::string(key)].mutable_list_value();
+}
+
+// {count, mean, p50, p90, p99, p99_9, max} in microseconds.
+void SetLatency(Struct& latency, const LatencyHistogram& histogram) {
+  Set(latency, "count", histogram.count());
+  Set(latency, "mean", histogram.mean());
+  for (const NamedPercentile& p : kPercentiles) {
+    Set(latency, p.name, histogram.Percentile(p.percent));
+  }
+  Set(latency, "max", histogram.max());
+}
+
+// One line per phase, when the run was split into phases.
+std::string PhaseLines(const std::vector<PhaseTotals>& phases) {
+  if (phases.size() < 2) return "";
+  std::string text;
+  for (size_t i = 0; i < phases.size(); ++i) {
+    const PhaseTotals& phase = phases[i];
+    text.append(StrCat({"phase ", std::to_string(i + 1), "     from ",
+                        Fixed(phase.start_seconds, 2), " s: ",
+                        std::to_string(phase.latency.count()), " calls, ",
+                        std::to_string(phase.failed_calls), " failed, p50 ",
+                        FormatMicros(phase.latency.Percentile(50)), ", p99 ",
+                        FormatMicros(phase.latency.Percentile(99)), "\n"}));
+  }
+  return text;
+}
+
 }  // namespace
 
 uint64_t LoadReport::failed_calls() const {
@@ -83,13 +115,16 @@ std::string FormatMicros(uint64_t micros) {
   return StrCat({Fixed(micros / 1e6, 2), " s"});
 }
 
+std::string DescribeRun(const LoadOptions& options) {
+  return StrCat({RunShape(options), "; workload ", options.workload, "; ",
+                 std::to_string(options.channels), " channels to ",
+                 options.channel.target});
+}
+
 std::string FormatReportText(const LoadOptions& options,
                              const LoadReport& report) {
   const RunTotals& totals = report.totals;
-  std::string text =
-      StrCat({"run         ", RunShape(options), "; workload ",
-              options.workload, "; ", std::to_string(options.channels),
-              " channels to ", options.channel.target, "\n"});
+  std::string text = StrCat({"run         ", DescribeRun(options), "\n"});
   text.append(
       StrCat({"measured    ", Fixed(report.measured_seconds, 2),
               " s: ", std::to_string(totals.calls), " calls, ",
@@ -125,6 +160,7 @@ std::string FormatReportText(const LoadOptions& options,
                         " windows; all with --format json)"}));
   }
   text.push_back('\n');
+  text.append(PhaseLines(totals.phases));
   return text;
 }
 
@@ -148,22 +184,37 @@ std::string FormatReportJson(const LoadOptions& options,
   Set(summary, "calls_per_second", report.calls_per_second());
   Set(summary, "points_per_second", report.points_per_second());
 
-  Struct& latency = SetObject(summary, "latency_us");
-  Set(latency, "count", totals.latency.count());
-  Set(latency, "mean", totals.latency.mean());
-  for (const NamedPercentile& p : kPercentiles) {
-    Set(latency, p.name, totals.latency.Percentile(p.percent));
-  }
-  Set(latency, "max", totals.latency.max());
+  SetLatency(SetObject(summary, "latency_us"), totals.latency);
 
   Struct& errors = SetObject(summary, "errors");
   for (const auto& [code, count] : totals.errors) Set(errors, code, count);
 
   Set(summary, "cost_window", totals.cost_window);
-  auto* means =
-      (*summary.mutable_fields())["cost_window_means"].mutable_list_value();
+  google::protobuf::ListValue& means = SetList(summary, "cost_window_means");
   for (double mean : totals.cost_means) {
-    means->add_values()->set_number_value(mean);
+    means.add_values()->set_number_value(mean);
+  }
+
+  google::protobuf::ListValue& phases = SetList(summary, "phases");
+  for (const PhaseTotals& phase : totals.phases) {
+    Struct& entry = *phases.add_values()->mutable_struct_value();
+    Set(entry, "start_seconds", phase.start_seconds);
+    Set(entry, "calls", phase.latency.count());
+    Set(entry, "failed_calls", phase.failed_calls);
+    SetLatency(SetObject(entry, "latency_us"), phase.latency);
+  }
+
+  Set(summary, "timeline_seconds", totals.timeline_seconds);
+  google::protobuf::ListValue& timeline = SetList(summary, "timeline");
+  for (const TimelineSlice& slice : totals.timeline) {
+    Struct& entry = *timeline.add_values()->mutable_struct_value();
+    Set(entry, "start_seconds", slice.start_seconds);
+    Set(entry, "calls", slice.calls);
+    Set(entry, "failed_calls", slice.failed_calls);
+    Set(entry, "p50_us", slice.p50_us);
+    Set(entry, "p99_us", slice.p99_us);
+    Set(entry, "queries", slice.queries);
+    Set(entry, "mean_cost", slice.mean_cost);
   }
 
   std::string json;

@@ -5,8 +5,13 @@
 // batch_size, window, measured_seconds, calls, points, warmup_calls,
 // failed_calls, calls_per_second, points_per_second, latency_us {count,
 // mean, p50, p90, p99, p99_9, max}, errors {CODE: count}, cost_window,
-// cost_window_means [...]. Counts are of measured successful calls, except
-// failed_calls and errors, which include the warm-up.
+// cost_window_means [...], phases [{start_seconds, calls, failed_calls,
+// latency_us {...}}] (one unless --phase-signal split the run),
+// timeline_seconds, timeline [{start_seconds, calls, failed_calls, p50_us,
+// p99_us, queries, mean_cost}]. Counts are of measured successful calls,
+// except failed_calls and errors, which include the warm-up, and the
+// timeline, which covers the warm-up too. Text shows the phases when there
+// are several.
 //
 // Thread-safety: stateless functions.
 
@@ -31,6 +36,9 @@ struct LoadReport {
   double calls_per_second() const;
   double points_per_second() const;
 };
+
+// "unary, closed loop, 64 in flight; workload uniform; 2 channels to T".
+std::string DescribeRun(const LoadOptions& options);
 
 std::string FormatReportText(const LoadOptions& options,
                              const LoadReport& report);

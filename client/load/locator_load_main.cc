@@ -4,7 +4,9 @@
 // It only talks to --target, and every loop stops by itself: at the end of
 // --duration, or after --queries queries (or --time-limit).
 
+#include <atomic>
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -13,9 +15,11 @@
 #include "client/load/call_loops.h"
 #include "client/load/client_pool.h"
 #include "client/load/load_options.h"
+#include "client/load/load_plot.h"
 #include "client/load/load_report.h"
 #include "client/load/locator_calls.h"
 #include "client/load/nested_batch_calls.h"
+#include "client/load/phase_signal.h"
 #include "client/load/progress_line.h"
 #include "client/load/query_source.h"
 #include "client/load/run_budget.h"
@@ -92,6 +96,21 @@ int Main(int argc, char** argv) {
     return kExitOk;
   }
 
+  // Opened first, so that a bad path fails before any call.
+  std::ofstream plot;
+  if (!options.plot_path.empty()) {
+    plot.open(options.plot_path);
+    if (!plot) {
+      std::cerr << "error: cannot write --plot " << options.plot_path << "\n";
+      return kExitUsage;
+    }
+  }
+
+  // Installed before the first call, so that an early SIGUSR1 does not
+  // kill the process (its default action).
+  const std::atomic<uint32_t>* phase_counter =
+      options.phase_signal ? &InstallPhaseSignal() : nullptr;
+
   ClientPool pool(options.channel, options.channels,
                   std::chrono::milliseconds(options.deadline_ms));
   BoundingBox box;
@@ -106,8 +125,15 @@ int Main(int argc, char** argv) {
     return kExitUsage;
   }
 
-  RunRecorder recorder(options.cost_window);
-  RunBudget budget(options.length, LoadClock::now());
+  const LoadClock::time_point start = LoadClock::now();
+  RecorderOptions recording;
+  recording.cost_window = options.cost_window;
+  recording.origin = start;
+  recording.timeline_slice = std::chrono::duration_cast<LoadClock::duration>(
+      std::chrono::duration<double>(options.timeline_seconds));
+  recording.phase_counter = phase_counter;
+  RunRecorder recorder(recording);
+  RunBudget budget(options.length, start);
   {
     ProgressLine progress(recorder);
     Run(options, pool, *source, budget, recorder);
@@ -122,6 +148,13 @@ int Main(int argc, char** argv) {
   std::cout << (options.format == ReportFormat::kJson
                     ? FormatReportJson(options, report)
                     : FormatReportText(options, report));
+  if (plot.is_open()) {
+    plot << RenderLoadPlot(DescribeRun(options), report.totals);
+    if (!plot.flush()) {
+      std::cerr << "error: writing --plot " << options.plot_path << "\n";
+      return kExitCallsFailed;
+    }
+  }
   return report.failed_calls() > 0 ? kExitCallsFailed : kExitOk;
 }
 

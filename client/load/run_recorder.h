@@ -1,6 +1,7 @@
 // RunRecorder: what a load run measures. Latencies and throughput counts of
-// the measured (non-warm-up) calls, failed calls by status code, and the
-// server's cost per window of queries in arrival order.
+// the measured (non-warm-up) calls, failed calls by status code, the
+// server's cost per window of queries in arrival order, the same per phase
+// of the run (see phase_signal.h) and a timeline (timeline.h).
 //
 // Latency is recorded for successful calls only, from the call's start (its
 // scheduled start in an open-loop run) to its completion. Failed calls,
@@ -14,6 +15,8 @@
 
 #include <grpcpp/grpcpp.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -24,6 +27,7 @@
 #include "client/load/cost_windows.h"
 #include "client/load/latency_histogram.h"
 #include "client/load/run_budget.h"
+#include "client/load/timeline.h"
 
 namespace locator {
 
@@ -32,6 +36,14 @@ struct RunInterval {
   LatencyHistogram latency;  // measured successful calls
   uint64_t calls = 0;        // every call that ended, warm-up included
   uint64_t failed_calls = 0;
+};
+
+// Calls that ended in one phase of the run.
+struct PhaseTotals {
+  // When the phase's first call ended, in seconds from the run's start.
+  double start_seconds = 0;
+  LatencyHistogram latency;   // measured successful calls
+  uint64_t failed_calls = 0;  // warm-up included
 };
 
 // Everything a run recorded.
@@ -46,12 +58,26 @@ struct RunTotals {
   std::vector<double> cost_means;
   // When the last measured successful call ended.
   LoadClock::time_point last_end;
+  // At least one; a new one starts whenever the phase counter moves.
+  std::vector<PhaseTotals> phases;
+  double timeline_seconds = 0;  // the length of a timeline slice
+  std::vector<TimelineSlice> timeline;
+};
+
+struct RecorderOptions {
+  // Average the server's cost over windows of this many queries.
+  uint64_t cost_window = 500;
+  // The start of the run, and the timeline's slice length (> 0).
+  LoadClock::time_point origin;
+  LoadClock::duration timeline_slice = std::chrono::seconds(1);
+  // A call belongs to the phase this counter shows when the call ends
+  // (InstallPhaseSignal()); null: the whole run is one phase.
+  const std::atomic<uint32_t>* phase_counter = nullptr;
 };
 
 class RunRecorder {
  public:
-  // Averages the server's cost over windows of `cost_window` queries.
-  explicit RunRecorder(uint64_t cost_window);
+  explicit RunRecorder(const RecorderOptions& options);
 
   // Records a call of claim.points points that started at `start` and ended
   // at `end`. `costs` holds the server's cost of each point it answered.
@@ -64,10 +90,15 @@ class RunRecorder {
   RunTotals Finish();
 
  private:
+  // The phase a call ending at `end` belongs to, added if new.
+  PhaseTotals& PhaseAt(LoadClock::time_point end);
+
+  const RecorderOptions options_;
   std::mutex mutex_;
   RunInterval interval_;  // not yet merged into totals_
   RunTotals totals_;
   CostWindows cost_windows_;
+  Timeline timeline_;
 };
 
 }  // namespace locator

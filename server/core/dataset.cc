@@ -1,18 +1,15 @@
 #include "server/core/dataset.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <system_error>
 #include <type_traits>
 #include <utility>
+
+#include "server/core/file_io.h"
 
 namespace locator {
 namespace {
@@ -176,43 +173,6 @@ Status ParsePoint(const Fields& f, size_t first, bool with_value,
   return Status::OK();
 }
 
-// Reads the whole file in one go: datasets are parsed from memory, which is
-// much faster than line-by-line stream extraction.
-Status ReadFile(const std::string& path, std::string* contents) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    const int err = errno;
-    const std::string msg = Cat("cannot open dataset ", Quoted(path), ": ",
-                                std::generic_category().message(err));
-    return err == ENOENT ? Status::NotFound(msg) : Status::IOError(msg);
-  }
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat st;
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    return Status::IOError(
-        Cat("dataset ", Quoted(path), " is not a readable regular file"));
-  }
-  contents->resize(static_cast<size_t>(st.st_size));
-  size_t done = 0;
-  // read() may return less than asked (large files, signals), hence the loop.
-  while (done < contents->size()) {
-    const ssize_t got =
-        ::read(fd, contents->data() + done, contents->size() - done);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) {
-      return Status::IOError(Cat("cannot read dataset ", Quoted(path), ": ",
-                                 std::generic_category().message(errno)));
-    }
-    if (got == 0) break;  // the file shrank since fstat
-    done += static_cast<size_t>(got);
-  }
-  contents->resize(done);
-  return Status::OK();
-}
-
 Status BadSpec(std::string_view spec, std::string_view what) {
   return Status::InvalidArgument(
       Cat("bad dataset spec ", Quoted(spec), ": ", what));
@@ -278,7 +238,7 @@ Status LoadDataset(const std::string& spec, Dataset* out,
     status = RunGenerator(spec, parts, limits, &ds);
   } else {
     std::string text;
-    status = ReadFile(spec, &text);
+    status = ReadWholeFile(spec, "dataset", &text);
     if (status.ok()) {
       status = spec.ends_with(".node") ? ParseNodeText(text, spec, &ds, limits)
                                        : ParseXyzText(text, spec, &ds, limits);

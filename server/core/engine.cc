@@ -79,6 +79,7 @@ Status Engine::Locate(const Point2& q, LocateResult* result) const {
   if (!s.ok()) return s;
   locator_->Locate(q, result);
   Record(1, result->cost.total());
+  walk_costs_.Add(result->cost.faces_visited);
   return Status::OK();
 }
 
@@ -97,23 +98,35 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
     uint64_t cost = 0;
     for (size_t i = begin; i < end; ++i) cost += (*results)[i].cost.total();
     Record(end - begin, cost);
+    walk_costs_.AddAll(std::span(*results).subspan(begin, end - begin));
   }
   return Status::OK();
 }
 
 void Engine::Retune() { locator_->Retune(); }
 
+Status Engine::SaveTuningState() { return locator_->SaveState(); }
+
 EngineStats Engine::Stats() const {
   EngineStats s;
   s.dataset = info_;
   s.strategy = std::string(locator_->name());
   s.queries = queries_.load(std::memory_order_relaxed);
-  const uint64_t sum = cost_sum_.load(std::memory_order_relaxed);
-  s.mean_cost_lifetime = s.queries ? static_cast<double>(sum) / s.queries : 0;
+  s.total_cost = cost_sum_.load(std::memory_order_relaxed);
+  s.mean_cost_lifetime =
+      s.queries ? static_cast<double>(s.total_cost) / s.queries : 0;
   const double recent = last_window_mean_.load(std::memory_order_relaxed);
   s.mean_cost_recent = recent >= 0 ? recent : s.mean_cost_lifetime;
+  s.walk_costs = walk_costs_.Counts();
   s.tuning = locator_->Summary();
   return s;
+}
+
+const std::vector<std::array<Point2, 2>>& Engine::EdgeSample() const {
+  std::call_once(edge_sample_once_, [this] {
+    edge_sample_ = triangulation_->SampleEdges(kEdgeSampleSize);
+  });
+  return edge_sample_;
 }
 
 }  // namespace locator

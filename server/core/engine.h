@@ -8,11 +8,13 @@
 #ifndef LOCATOR_CORE_ENGINE_H_
 #define LOCATOR_CORE_ENGINE_H_
 
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,6 +24,7 @@
 #include "server/core/point_locator.h"
 #include "server/core/status.h"
 #include "server/core/tuning_options.h"
+#include "server/core/walk_cost_histogram.h"
 
 namespace locator {
 
@@ -54,16 +57,22 @@ struct EngineStats {
   DatasetInfo dataset;
   std::string strategy;
   uint64_t queries = 0;
+  // Sum of the costs of all queries (mean_cost_lifetime * queries, exactly).
+  uint64_t total_cost = 0;
   double mean_cost_lifetime = 0;
   // Mean cost over the most recent completed window of kStatsWindow queries
   // (the lifetime mean until the first window completes).
   double mean_cost_recent = 0;
+  // Faces visited per located query.
+  WalkCostCounts walk_costs;
   TuningSummary tuning;
 };
 
 class Engine {
  public:
   static constexpr uint64_t kStatsWindow = 1000;
+  // Edges returned by EdgeSample().
+  static constexpr size_t kEdgeSampleSize = 3000;
 
   // Triangulates `dataset` and sets up the strategy. Fails with
   // InvalidArgument for fewer than 3 distinct or all-collinear points, or an
@@ -90,8 +99,18 @@ class Engine {
   // Re-tunes the strategy now (no-op for fixed strategies).
   void Retune();
 
+  // Saves the strategy's learned state to its state file now if it changed
+  // since the last save (EngineOptions::tuning.state_dir); OK when nothing
+  // persists. Safe while queries and re-tunes run.
+  Status SaveTuningState();
+
   const DatasetInfo& dataset_info() const { return info_; }
   EngineStats Stats() const;
+
+  // At most kEdgeSampleSize edges of the triangulation, spread evenly over
+  // its edge list, each as its two endpoints: enough to draw the mesh's
+  // outline and density. Computed on the first call, then reused.
+  const std::vector<std::array<Point2, 2>>& EdgeSample() const;
 
  private:
   Engine();
@@ -107,6 +126,10 @@ class Engine {
   mutable std::atomic<uint64_t> window_cost_{0};
   mutable std::atomic<uint64_t> window_count_{0};
   mutable std::atomic<double> last_window_mean_{-1};
+  mutable WalkCostHistogram walk_costs_;
+
+  mutable std::once_flag edge_sample_once_;
+  mutable std::vector<std::array<Point2, 2>> edge_sample_;
 };
 
 }  // namespace locator

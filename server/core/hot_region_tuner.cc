@@ -149,18 +149,43 @@ double HotRegionTuner::ExpectedWalk(const std::vector<double>& weight,
   return walk;
 }
 
+std::vector<double> HotRegionTuner::Shares(double total) const {
+  std::vector<double> share(counts_.size(), 1.0 / counts_.size());
+  if (total > 0) {
+    for (size_t c = 0; c < counts_.size(); ++c) share[c] = counts_[c] / total;
+  }
+  return share;
+}
+
+std::shared_ptr<const TuningSnapshot> HotRegionTuner::Snapshot(
+    uint64_t version) const {
+  const size_t cells = grid_.cells();
+  const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
+  const std::vector<double> share = Shares(total);
+  auto snapshot = std::make_shared<TuningSnapshot>();
+  snapshot->version = version;
+  snapshot->hot.assign(cells, 1);
+  if (total > 0) {
+    for (size_t c = 0; c < cells; ++c)
+      snapshot->hot[c] = share[c] * cells >= 0.5;
+  }
+  snapshot->table = table_;
+  snapshot->histogram = counts_;
+  snapshot->memory_bytes = snapshot->table->MemoryBytes() +
+                           snapshot->hot.capacity() +
+                           snapshot->histogram.capacity() * sizeof(double) +
+                           2 * cells * sizeof(double);  // counts_, points_
+  return snapshot;
+}
+
 std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
   const size_t cells = grid_.cells();
   const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
   const double prior = total > 0 ? kPriorShare : 1.0;
-  std::vector<double> weight(cells), share(cells, 1.0 / cells);
-  auto snapshot = std::make_shared<TuningSnapshot>();
-  snapshot->version = version;
-  snapshot->hot.assign(cells, 1);
+  const std::vector<double> share = Shares(total);
+  std::vector<double> weight(cells);
   for (size_t c = 0; c < cells; ++c) {
-    if (total > 0) share[c] = counts_[c] / total;
     weight[c] = prior / cells + (1 - prior) * (total > 0 ? share[c] : 0.0);
-    if (total > 0) snapshot->hot[c] = share[c] * cells >= 0.5;
   }
   // Traffic that moved within noise keeps the table without planning.
   const std::vector<char> significant = SignificantChanges(total);
@@ -181,13 +206,74 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
     table_ = std::make_shared<StartTable>(t_, grid_, plan, table_.get());
     planned_share_ = share;
   }
-  snapshot->table = table_;
-  snapshot->histogram = counts_;
-  snapshot->memory_bytes = snapshot->table->MemoryBytes() +
-                           snapshot->hot.capacity() +
-                           snapshot->histogram.capacity() * sizeof(double) +
-                           2 * cells * sizeof(double);  // counts_, points_
-  return snapshot;
+  return Snapshot(version);
+}
+
+TuningFingerprint HotRegionTuner::Fingerprint(std::string_view strategy) const {
+  TuningFingerprint fingerprint;
+  fingerprint.dataset_digest = t_.VertexDigest();
+  fingerprint.input_points = t_.input_points();
+  fingerprint.strategy = std::string(strategy);
+  fingerprint.grid_size = static_cast<uint32_t>(grid_.size());
+  fingerprint.grid_box = grid_.box();
+  fingerprint.budget_bytes = budget_;
+  return fingerprint;
+}
+
+void HotRegionTuner::ExportState(TuningState* state) const {
+  state->seen_traffic = seen_traffic_;
+  state->histogram = counts_;
+  state->planned_share = planned_share_;
+  state->resolution.resize(grid_.cells());
+  for (size_t c = 0; c < grid_.cells(); ++c) {
+    state->resolution[c] = table_->resolution(c);
+  }
+  const std::vector<StartTable::Face_handle> faces = table_->Starts();
+  state->starts.resize(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    state->starts[i] = t_.CornerIds(faces[i]);
+  }
+}
+
+Status HotRegionTuner::Restore(
+    const TuningState& state, uint64_t version,
+    std::shared_ptr<const TuningSnapshot>* snapshot) {
+  const size_t cells = grid_.cells();
+  if (state.histogram.size() != cells || state.planned_share.size() != cells ||
+      state.resolution.size() != cells) {
+    return Status::InvalidArgument(
+        "tuning state sized for " + std::to_string(state.resolution.size()) +
+        " cells, the grid has " + std::to_string(cells));
+  }
+  uint64_t implied = 0;
+  for (uint32_t r : state.resolution) {
+    if (r < 1 || r > kMaxStoredResolution) {
+      return Status::InvalidArgument("tuning state sub-grid resolution " +
+                                     std::to_string(r));
+    }
+    implied += r == 1 ? 1 : uint64_t{r} * r;
+  }
+  if (state.starts.size() != implied) {
+    return Status::InvalidArgument(
+        "tuning state has " + std::to_string(state.starts.size()) +
+        " starts, its resolutions need " + std::to_string(implied));
+  }
+  std::vector<StartTable::Face_handle> faces(state.starts.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const auto& ids = state.starts[i];
+    if (!t_.FaceWithCorners(ids, &faces[i])) {
+      return Status::InvalidArgument(
+          "tuning state start " + std::to_string(i) + ": vertices " +
+          std::to_string(ids[0]) + ", " + std::to_string(ids[1]) + ", " +
+          std::to_string(ids[2]) + " are not a triangle of this dataset");
+    }
+  }
+  table_ = std::make_shared<StartTable>(grid_, state.resolution, faces);
+  counts_ = state.histogram;
+  planned_share_ = state.planned_share;
+  seen_traffic_ = state.seen_traffic;
+  *snapshot = Snapshot(version);
+  return Status::OK();
 }
 
 }  // namespace locator

@@ -32,12 +32,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "server/core/query_histogram.h"
 #include "server/core/start_table.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
+#include "server/core/tuning_state.h"
 
 namespace locator {
 
@@ -83,9 +85,26 @@ class HotRegionTuner {
   // Plans and builds the next snapshot from the histogram.
   std::shared_ptr<const TuningSnapshot> Build(uint64_t version);
 
+  // What a state learned by this tuner means: the dataset, `strategy`, the
+  // grid and the budget.
+  TuningFingerprint Fingerprint(std::string_view strategy) const;
+  // Fills the learned parts of *state (histogram, plan, starts by vertex
+  // id); the owner fills the version and re-tune count.
+  void ExportState(TuningState* state) const;
+  // Takes over `state` (exported by a tuner with the same fingerprint) and
+  // sets *snapshot to the snapshot it was tuned to, as `version`.
+  // InvalidArgument, leaving the tuner unchanged, if a size disagrees with
+  // the grid or a start's ids name no triangle of this dataset.
+  Status Restore(const TuningState& state, uint64_t version,
+                 std::shared_ptr<const TuningSnapshot>* snapshot);
+
   size_t budget_bytes() const { return budget_; }
 
  private:
+  // counts_ as shares of their total (uniform when there is no traffic).
+  std::vector<double> Shares(double total) const;
+  // The snapshot of table_ and counts_, as `version`.
+  std::shared_ptr<const TuningSnapshot> Snapshot(uint64_t version) const;
   std::vector<uint32_t> PlanResolution(const std::vector<double>& weight) const;
   // significant[c]: cell c's count departs from the share the current
   // table was planned for by more than Poisson noise (all, without a table).

@@ -20,8 +20,24 @@
 
 #include "server/core/geometry.h"
 #include "server/core/locate_result.h"
+#include "server/core/status.h"
 
 namespace locator {
+
+// How a strategy's learned state persists across restarts (self-tuning
+// with TuningOptions::state_dir).
+struct PersistenceSummary {
+  // The state file; empty when nothing persists.
+  std::string state_path;
+  // Whether the tuning was restored from it when the strategy was built.
+  bool restored_from_state = false;
+  // Why an existing state file was not used; empty otherwise.
+  std::string load_error;
+  // State files written so far, and why the last write failed ("" if it
+  // did not).
+  uint64_t saves = 0;
+  std::string save_error;
+};
 
 // What a strategy has learned, for GetStats and the status page.
 struct TuningSummary {
@@ -42,6 +58,11 @@ struct TuningSummary {
   uint64_t start_point_count = 0;
   // Bytes of the tuning structures (the published snapshot).
   size_t memory_bytes = 0;
+  PersistenceSummary persistence;
+  // Queries answered since the strategy was created in cells it had tuned
+  // for (hot) and elsewhere (fallback). Self-tuning only; 0 for the others.
+  uint64_t hot_queries = 0;
+  uint64_t fallback_queries = 0;
 };
 
 class PointLocator {
@@ -67,6 +88,10 @@ class PointLocator {
   // Re-tunes now from the traffic seen so far (no-op for fixed strategies).
   // Returns once the new snapshot is published.
   virtual void Retune() {}
+
+  // Writes the learned state to the strategy's state file now, if it
+  // changed since the last save. OK when the strategy persists nothing.
+  virtual Status SaveState() { return Status::OK(); }
 };
 
 }  // namespace locator

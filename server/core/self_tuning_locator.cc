@@ -27,7 +27,12 @@ SelfTuningLocator::SelfTuningLocator(const Triangulation& t,
           HotRegionTuner::CoarseGridSize(HotRegionTuner::Budget(t, options),
                                          options.grid_size))),
       tuner_(t, histogram_.grid(), options, histogram_.MemoryBytes()) {
-  snapshot_.Publish(tuner_.Build(1));
+  if (!options_.state_dir.empty()) {
+    store_ = std::make_unique<const TuningStateStore>(
+        options_.state_dir, tuner_.Fingerprint(name()));
+    persistence_.state_path = store_->path();
+  }
+  if (!RestoreState()) snapshot_.Publish(tuner_.Build(1));
   if (options_.background) {
     tuner_thread_ = std::thread([this] { TunerLoop(); });
   }
@@ -58,7 +63,13 @@ void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
   const uint64_t before =
       since_tune_.fetch_add(queries, std::memory_order_relaxed);
   const uint64_t now = before + queries;
-  if (cold > 0) cold_hits_.fetch_add(cold, std::memory_order_relaxed);
+  if (cold > 0) {
+    cold_hits_.fetch_add(cold, std::memory_order_relaxed);
+    fallback_queries_.fetch_add(cold, std::memory_order_relaxed);
+  }
+  if (queries > cold) {
+    hot_queries_.fetch_add(queries - cold, std::memory_order_relaxed);
+  }
   const uint64_t every = options_.retune_every;
   if (before < every && now >= every) {
     RequestRetune();
@@ -106,8 +117,58 @@ void SelfTuningLocator::TunerLoop() {
     requests_.wait(seen, std::memory_order_acquire);
     seen = requests_.load(std::memory_order_acquire);
     if (stopping_.load()) return;
-    Retune();
+    std::lock_guard<std::mutex> lock(tune_mu_);
+    RetuneLocked();
+    if (store_ &&
+        std::chrono::steady_clock::now() - last_save_ >= kMinSaveInterval) {
+      // A failure is recorded in the summary; the next re-tune tries again.
+      SaveLocked();
+    }
   }
+}
+
+bool SelfTuningLocator::RestoreState() {
+  if (!store_) return false;
+  TuningState state;
+  std::shared_ptr<const TuningSnapshot> snapshot;
+  Status status = store_->Load(&state);
+  if (status.ok()) {
+    status = tuner_.Restore(state, state.snapshot_version, &snapshot);
+  }
+  std::lock_guard<std::mutex> lock(persistence_mu_);
+  if (!status.ok()) {
+    // No file yet is the normal first start, not a problem to report.
+    if (status.code() != Status::Code::kNotFound) {
+      persistence_.load_error = status.message();
+    }
+    return false;
+  }
+  snapshot_.Publish(std::move(snapshot));
+  retunes_.store(state.retune_count, std::memory_order_relaxed);
+  saved_version_ = state.snapshot_version;
+  persistence_.restored_from_state = true;
+  return true;
+}
+
+Status SelfTuningLocator::SaveState() {
+  std::lock_guard<std::mutex> lock(tune_mu_);
+  return SaveLocked();
+}
+
+Status SelfTuningLocator::SaveLocked() {
+  const std::shared_ptr<const TuningSnapshot> snapshot = snapshot_.Current();
+  if (!store_ || snapshot->version == saved_version_) return Status::OK();
+  TuningState state;
+  tuner_.ExportState(&state);
+  state.snapshot_version = snapshot->version;
+  state.retune_count = retunes_.load(std::memory_order_relaxed);
+  const Status status = store_->Save(state);
+  last_save_ = std::chrono::steady_clock::now();
+  if (status.ok()) saved_version_ = snapshot->version;
+  std::lock_guard<std::mutex> lock(persistence_mu_);
+  persistence_.saves += status.ok() ? 1 : 0;
+  persistence_.save_error = status.ok() ? "" : status.message();
+  return status;
 }
 
 void SelfTuningLocator::Retune() {
@@ -137,6 +198,10 @@ TuningSummary SelfTuningLocator::Summary() const {
   s.start_points = snap->table->SampleStartPoints(kSummaryStartPoints);
   s.start_point_count = snap->table->start_count();
   s.memory_bytes = snap->memory_bytes + histogram_.MemoryBytes();
+  std::lock_guard<std::mutex> lock(persistence_mu_);
+  s.persistence = persistence_;
+  s.hot_queries = hot_queries_.load(std::memory_order_relaxed);
+  s.fallback_queries = fallback_queries_.load(std::memory_order_relaxed);
   return s;
 }
 

@@ -17,11 +17,19 @@
 // histogram shards; it never waits for the tuner. Re-tunes are serialised
 // by a mutex only the tuner holds: inline in the query that triggers one
 // (options.background == false, deterministic) or on a background thread.
+//
+// Persistence (options.state_dir set): the constructor restores the state
+// stored for this dataset and configuration, if any and usable, so the
+// first query is answered as tuned as the last one before a restart. The
+// background tuner thread saves after a re-tune, at most once per
+// kMinSaveInterval, under the tuner mutex and never on the read path;
+// SaveState() saves now (a clean shutdown, a reload).
 
 #ifndef LOCATOR_CORE_SELF_TUNING_LOCATOR_H_
 #define LOCATOR_CORE_SELF_TUNING_LOCATOR_H_
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -33,6 +41,7 @@
 #include "server/core/snapshot_slot.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
+#include "server/core/tuning_state_store.h"
 
 namespace locator {
 
@@ -50,8 +59,17 @@ class SelfTuningLocator : public PointLocator {
   std::string_view name() const override { return "self-tuning"; }
   TuningSummary Summary() const override;
   void Retune() override;
+  Status SaveState() override;
+
+  static constexpr std::chrono::seconds kMinSaveInterval{1};
 
  private:
+  // Publishes the stored state if there is a usable one; true if it did.
+  // Records why a stored state was not usable.
+  bool RestoreState();
+  // Saves unless the published snapshot is the one last saved. Requires
+  // tune_mu_.
+  Status SaveLocked();
   // Locates q with `snap` and counts it in the histogram; true if q fell in
   // a cold cell.
   bool LocateIn(const TuningSnapshot& snap, const Point2& q,
@@ -76,9 +94,19 @@ class SelfTuningLocator : public PointLocator {
   mutable std::vector<double> fresh_;  // guarded by tune_mu_
   mutable std::atomic<uint64_t> retunes_{0};
 
+  // Persistence; null store when nothing persists.
+  std::unique_ptr<const TuningStateStore> store_;
+  uint64_t saved_version_ = 1;  // guarded by tune_mu_; 1: the untuned plan
+  std::chrono::steady_clock::time_point last_save_;  // guarded by tune_mu_
+  mutable std::mutex persistence_mu_;
+  PersistenceSummary persistence_;  // guarded by persistence_mu_
+
   mutable SnapshotSlot<TuningSnapshot> snapshot_;  // published by re-tunes
   mutable std::atomic<uint64_t> since_tune_{0};
   mutable std::atomic<uint64_t> cold_hits_{0};
+  // Lifetime counts for Summary(): queries in hot and in cold cells.
+  mutable std::atomic<uint64_t> hot_queries_{0};
+  mutable std::atomic<uint64_t> fallback_queries_{0};
 
   // Background mode: RequestRetune() bumps requests_, the thread re-tunes.
   mutable std::atomic<uint64_t> requests_{0};

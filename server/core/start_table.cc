@@ -55,6 +55,41 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
   }
 }
 
+StartTable::StartTable(const GridGeometry& grid,
+                       const std::vector<uint32_t>& resolution,
+                       std::span<const Face_handle> starts)
+    : grid_(grid), cells_(grid.cells()) {
+  size_t next = 0;
+  for (size_t index = 0; index < cells_.size(); ++index) {
+    Cell& cell = cells_[index];
+    const uint32_t r = std::max<uint32_t>(1, resolution[index]);
+    cell.resolution = r;
+    if (r == 1) {
+      cell.face = starts[next++];
+      continue;
+    }
+    auto leaves = std::make_shared_for_overwrite<Face_handle[]>(r * r);
+    std::copy_n(starts.begin() + next, size_t{r} * r, leaves.get());
+    next += size_t{r} * r;
+    leaf_count_ += size_t{r} * r;
+    cell.leaves = std::move(leaves);
+  }
+}
+
+std::vector<StartTable::Face_handle> StartTable::Starts() const {
+  std::vector<Face_handle> starts;
+  starts.reserve(start_count());
+  for (const Cell& cell : cells_) {
+    if (cell.resolution == 1) {
+      starts.push_back(cell.face);
+    } else {
+      const size_t n = size_t{cell.resolution} * cell.resolution;
+      starts.insert(starts.end(), cell.leaves.get(), cell.leaves.get() + n);
+    }
+  }
+  return starts;
+}
+
 size_t StartTable::start_count() const {
   size_t direct = 0;
   for (const Cell& c : cells_) direct += c.resolution == 1;

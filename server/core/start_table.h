@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "server/core/geometry.h"
@@ -43,7 +44,17 @@ class StartTable {
              const std::vector<uint32_t>& resolution,
              const StartTable* previous = nullptr);
 
+  // A table with the given resolutions whose starts are `starts`, cell by
+  // cell in row-major order, a refined cell's r x r sub-cells row-major (as
+  // Starts() lists them). Precondition: starts.size() is the number of
+  // starts the resolutions imply, and every face is a finite face of the
+  // triangulation the table will be used with.
+  StartTable(const GridGeometry& grid, const std::vector<uint32_t>& resolution,
+             std::span<const Face_handle> starts);
+
   uint32_t resolution(size_t cell) const { return cells_[cell].resolution; }
+  // Every stored start, in the order the constructor above takes them.
+  std::vector<Face_handle> Starts() const;
 
   // The start face for q; adds the table reads made to *lookups.
   Face_handle Start(const Point2& q, uint32_t* lookups) const {

@@ -1,10 +1,16 @@
 #include "server/core/triangulation.h"
 
+#include <CGAL/Exact_rational.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <utility>
+
+#include "server/core/fnv_hash.h"
 
 namespace locator {
 
@@ -18,22 +24,60 @@ bool Contains(const std::array<int64_t, 3>& ids, int64_t id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
+// Barycentric coordinates of q in (a, b, c) from exact rationals: the slow
+// path of Barycentric(), for triangles whose area long double cannot
+// resolve. The face is non-degenerate (CGAL's orientation is exact), so the
+// area is not zero.
+std::array<double, 3> ExactBarycentric(const Point2& a, const Point2& b,
+                                       const Point2& c, const Point2& q) {
+  using Exact = CGAL::Exact_rational;
+  // The return type is spelled out: with `auto`, an expression-template
+  // number type would return references to the lambda's temporaries.
+  auto cross = [](const Point2& o, const Point2& u, const Point2& v) -> Exact {
+    return (Exact(u.x) - o.x) * (Exact(v.y) - o.y) -
+           (Exact(u.y) - o.y) * (Exact(v.x) - o.x);
+  };
+  const Exact area = cross(a, b, c);
+  const Exact ba = cross(q, b, c) / area;
+  const Exact bb = cross(q, c, a) / area;
+  const Exact bc = Exact(1) - ba - bb;
+  return {CGAL::to_double(ba), CGAL::to_double(bb), CGAL::to_double(bc)};
+}
+
 // Barycentric coordinates of q in (a, b, c); the location type then pins
 // the exact zeros and ones. In long double, because the cross products
 // square coordinate differences: in double they overflow beyond ~1e154 and
-// underflow below ~1e-154, and inf/inf or 0/0 would answer NaN.
+// underflow below ~1e-154, and inf/inf or 0/0 would answer NaN. When the
+// area is within long double's rounding error of its terms (a needle
+// triangle spanning 1e-300..1e150), it may be 0 or have the wrong sign, so
+// the answer comes from ExactBarycentric instead.
 std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
                                   const Point2& c, const Point2& q) {
   using Real = long double;
-  auto cross = [](const Point2& o, const Point2& u, const Point2& v) {
-    return (Real{u.x} - o.x) * (Real{v.y} - o.y) -
-           (Real{u.y} - o.y) * (Real{v.x} - o.x);
+  auto cross = [](const Point2& o, const Point2& u, const Point2& v,
+                  Real* magnitude) {
+    const Real left = (Real{u.x} - o.x) * (Real{v.y} - o.y);
+    const Real right = (Real{u.y} - o.y) * (Real{v.x} - o.x);
+    if (magnitude != nullptr) *magnitude = std::abs(left) + std::abs(right);
+    return left - right;
   };
-  const Real area = cross(a, b, c);
-  const Real ba = cross(q, b, c) / area;
-  const Real bb = cross(q, c, a) / area;
-  return {static_cast<double>(ba), static_cast<double>(bb),
-          static_cast<double>(1 - ba - bb)};
+  Real magnitude = 0;
+  const Real area = cross(a, b, c, &magnitude);
+  // Each difference and product rounds once: a relative error of a few
+  // epsilon per term; 8 epsilon leaves a margin.
+  constexpr Real kRelativeError = 8 * std::numeric_limits<Real>::epsilon();
+  if (!(std::abs(area) > kRelativeError * magnitude)) {
+    return ExactBarycentric(a, b, c, q);
+  }
+  const Real ba = cross(q, b, c, nullptr) / area;
+  const Real bb = cross(q, c, a, nullptr) / area;
+  const std::array<double, 3> result = {static_cast<double>(ba),
+                                        static_cast<double>(bb),
+                                        static_cast<double>(1 - ba - bb)};
+  for (const double coordinate : result) {
+    if (!std::isfinite(coordinate)) return ExactBarycentric(a, b, c, q);
+  }
+  return result;
 }
 
 }  // namespace
@@ -127,6 +171,26 @@ size_t Triangulation::MemoryBytes() const {
          by_input_.capacity() * sizeof(Vertex_handle);
 }
 
+std::vector<std::array<Point2, 2>> Triangulation::SampleEdges(
+    size_t max_edges) const {
+  std::vector<std::array<Point2, 2>> sample;
+  if (max_edges == 0) return sample;
+  // Euler's formula for a triangulated point set: V - E + (F + 1) = 2.
+  const size_t edges = num_vertices() + num_triangles() - 1;
+  const size_t stride = (edges + max_edges - 1) / max_edges;
+  sample.reserve(std::min(edges, max_edges));
+  size_t index = 0;
+  for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end();
+       ++e, ++index) {
+    if (index % stride != 0) continue;
+    const Face_handle f = e->first;
+    const int i = e->second;
+    sample.push_back({FromCgal(f->vertex(dt_.cw(i))->point()),
+                      FromCgal(f->vertex(dt_.ccw(i))->point())});
+  }
+  return sample;
+}
+
 bool Triangulation::VertexPoint(int64_t id, Point2* p) const {
   if (id < 0 || static_cast<size_t>(id) >= by_input_.size()) return false;
   const Vertex_handle v = by_input_[id];
@@ -144,6 +208,48 @@ Triangulation::Face_handle Triangulation::FiniteFaceAt(Vertex_handle v) const {
 Triangulation::Face_handle Triangulation::DefaultStart() const {
   const Face_handle inf = dt_.infinite_face();
   return inf->neighbor(inf->index(dt_.infinite_vertex()));
+}
+
+uint64_t Triangulation::VertexDigest() const {
+  Fnv1a64 hash;
+  for (size_t id = 0; id < by_input_.size(); ++id) {
+    const Vertex_handle v = by_input_[id];
+    if (static_cast<size_t>(v->info().id) != id) continue;  // merged
+    hash.AddU64(id);
+    hash.AddDouble(v->point().x());
+    hash.AddDouble(v->point().y());
+  }
+  return hash.digest();
+}
+
+std::array<uint32_t, 3> Triangulation::CornerIds(Face_handle f) const {
+  std::array<uint32_t, 3> ids;
+  for (int i = 0; i < 3; ++i) {
+    ids[i] = static_cast<uint32_t>(f->vertex(i)->info().id);
+  }
+  return ids;
+}
+
+bool Triangulation::FaceWithCorners(const std::array<uint32_t, 3>& ids,
+                                    Face_handle* face) const {
+  std::array<Vertex_handle, 3> corners;
+  for (int i = 0; i < 3; ++i) {
+    if (ids[i] >= by_input_.size()) return false;
+    corners[i] = by_input_[ids[i]];
+    if (corners[i]->info().id != ids[i]) return false;  // merged
+  }
+  // The face is among those around its first corner.
+  auto f = dt_.incident_faces(corners[0]);
+  const auto end = f;
+  do {
+    const int i = f->index(corners[0]);
+    if (!dt_.is_infinite(f) && f->vertex(Ccw(i)) == corners[1] &&
+        f->vertex(Cw(i)) == corners[2]) {
+      *face = f;
+      return true;
+    }
+  } while (++f != end);
+  return false;
 }
 
 void Triangulation::Describe(Face_handle f, LocationType type, int feature,

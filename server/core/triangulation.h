@@ -23,6 +23,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -69,6 +70,10 @@ class Triangulation {
   const BoundingBox& bounding_box() const { return box_; }
   // Bytes held by the CGAL containers and the adapter's index.
   size_t MemoryBytes() const;
+  // Finite edges, as endpoint pairs: all of them if there are at most
+  // `max_edges`, else every k-th of CGAL's edge order (k as small as keeps
+  // the count within `max_edges`). Deterministic; O(edges).
+  std::vector<std::array<Point2, 2>> SampleEdges(size_t max_edges) const;
 
   bool IsInfinite(Face_handle f) const { return dt_.is_infinite(f); }
   // The vertex that input point `i` (0 <= i < input_points()) became.
@@ -79,6 +84,16 @@ class Triangulation {
   Face_handle FiniteFaceAt(Vertex_handle v) const;
   // Where CGAL's locate() starts without a hint: a finite hull face.
   Face_handle DefaultStart() const;
+  // Fnv1a64 over every distinct vertex's (id, x, y) in id order: equal for
+  // triangulations of the same points, whatever file they came from.
+  uint64_t VertexDigest() const;
+  // The stable ids of f's corners, counter-clockwise.
+  std::array<uint32_t, 3> CornerIds(Face_handle f) const;
+  // The finite face whose corners are `ids` in counter-clockwise order
+  // (starting at any corner); false if there is none, e.g. an id is out of
+  // range or was merged into an earlier point.
+  bool FaceWithCorners(const std::array<uint32_t, 3>& ids,
+                       Face_handle* face) const;
 
   // Fills `out` (all but cost) for q located at `type` in the finite face f.
   // `feature` is the edge index for kEdge and kOutsideConvexHull (the hull

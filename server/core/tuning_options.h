@@ -36,6 +36,11 @@ struct TuningOptions {
   bool background = false;
   // Seed for the strategies' sampling.
   uint64_t seed = 1;
+  // self-tuning: directory where the learned state persists, one file per
+  // dataset fingerprint (see TuningStateStore); empty: nothing persists. It
+  // is restored at construction and, with `background`, saved by the tuner
+  // thread after re-tunes (at most once per second).
+  std::string state_dir;
 };
 
 // Grids above this make the per-cell arrays outgrow any sane budget.

@@ -30,6 +30,9 @@ TEST(LoadOptionsTest, Defaults) {
   EXPECT_EQ(options.deadline_ms, 5000);
   EXPECT_EQ(options.cost_window, 500u);
   EXPECT_EQ(options.format, ReportFormat::kText);
+  EXPECT_EQ(options.timeline_seconds, 1);
+  EXPECT_TRUE(options.plot_path.empty());
+  EXPECT_FALSE(options.phase_signal);
   EXPECT_EQ(options.points_per_call(), 1u);
   EXPECT_FALSE(options.help);
 }
@@ -65,7 +68,12 @@ TEST(LoadOptionsTest, ParsesEveryFlag) {
                                           "--format",
                                           "json",
                                           "--rate",
-                                          "50"},
+                                          "50",
+                                          "--timeline-s",
+                                          "0.25",
+                                          "--plot",
+                                          "run.svg",
+                                          "--phase-signal"},
                                          &options);
   ASSERT_TRUE(status.ok()) << status.ToString();
   EXPECT_EQ(options.channel.target, "127.0.0.1:9");
@@ -85,6 +93,9 @@ TEST(LoadOptionsTest, ParsesEveryFlag) {
   EXPECT_EQ(options.cost_window, 100u);
   EXPECT_EQ(options.format, ReportFormat::kJson);
   EXPECT_EQ(options.rate, 50);
+  EXPECT_EQ(options.timeline_seconds, 0.25);
+  EXPECT_EQ(options.plot_path, "run.svg");
+  EXPECT_TRUE(options.phase_signal);
 }
 
 TEST(LoadOptionsTest, WarmupIsInSecondsForTimedRuns) {
@@ -135,6 +146,10 @@ TEST(LoadOptionsTest, RejectsBadValues) {
   EXPECT_NE(ErrorOf({"--time-limit", "0"}).find("--time-limit"),
             std::string::npos);
   EXPECT_NE(ErrorOf({"--warmup", "-1"}).find("--warmup"), std::string::npos);
+  EXPECT_NE(ErrorOf({"--timeline-s", "0.01"}).find("--timeline-s"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf({"--timeline-s", "nan"}).find("--timeline-s"),
+            std::string::npos);
 }
 
 TEST(LoadOptionsTest, RejectsConflictingFlags) {

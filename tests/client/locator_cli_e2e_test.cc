@@ -4,6 +4,7 @@
 
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
@@ -15,8 +16,9 @@
 #include "client/locator_client.h"
 #include "locator/v1/locator.pb.h"
 #include "server/core/dataset.h"
-#include "tests/client/run_binary.h"
+#include "tests/testing/run_binary.h"
 #include "tests/testing/server_process.h"
+#include "tests/testing/test_pki.h"
 
 namespace locator {
 namespace {
@@ -28,8 +30,11 @@ using testing::ServerProcess;
 constexpr int kDatasetPoints = 300;
 constexpr int kBatchRows = 25;
 
+// A file of this process's own: ctest runs each test in a process of its
+// own, several at once, and they must not rewrite each other's files.
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "locator_cli_e2e_" + name;
+  const std::string path = ::testing::TempDir() + "locator_cli_e2e_" +
+                           std::to_string(getpid()) + "_" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -230,6 +235,100 @@ TEST_F(LocatorCliTest, HealthIsServing) {
   const BinaryResult result = Locator({"health"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.out, "SERVING\n");
+}
+
+TEST_F(LocatorCliTest, UnusableTokenFileIsAUsageErrorNamingIt) {
+  const BinaryResult result =
+      Locator({"--token-file", "/no/such/token", "stats"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--token-file '/no/such/token': cannot open"),
+            std::string::npos)
+      << result.err;
+}
+
+// A locatord with TLS and both tokens; the CLI sends what its flags say.
+class LocatorCliSecurityTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    ASSERT_TRUE(testing::TestPki::Create(&pki_).ok());
+    data_token_ = WriteFile("data_token", "cli-data-token\n");
+    admin_token_ = WriteFile("admin_token", "cli-admin-token\n");
+    std::vector<std::string> args = {
+        "--dataset",    "uniform:500:1", "--listen",           "127.0.0.1:0",
+        "--token-file", data_token_,     "--admin-token-file", admin_token_};
+    const std::vector<std::string> tls = pki_->ServerFlags(/*mutual=*/true);
+    args.insert(args.end(), tls.begin(), tls.end());
+    ChannelSecurity security = pki_->ClientSecurity(/*client_cert=*/true);
+    security.bearer_token = "cli-data-token";
+    const Status status =
+        ServerProcess::Start(LOCATORD_PATH, args, &server_, security);
+    ASSERT_TRUE(status.ok()) << status.ToString();
+  }
+  static void TearDownTestSuite() {
+    server_.reset();
+    pki_.reset();
+  }
+
+  // `locator --target <server> <TLS flags> args...`.
+  static BinaryResult Locator(const std::vector<std::string>& args) {
+    std::vector<std::string> all = {"--target", server_->target(),
+                                    "--tls-server-name", "localhost"};
+    const std::vector<std::string> tls =
+        pki_->ClientFlags(/*client_cert=*/true);
+    all.insert(all.end(), tls.begin(), tls.end());
+    all.insert(all.end(), args.begin(), args.end());
+    return RunBinary(LOCATOR_PATH, all);
+  }
+
+  static std::unique_ptr<testing::TestPki> pki_;
+  static std::unique_ptr<ServerProcess> server_;
+  static std::string data_token_;
+  static std::string admin_token_;
+};
+
+std::unique_ptr<testing::TestPki> LocatorCliSecurityTest::pki_;
+std::unique_ptr<ServerProcess> LocatorCliSecurityTest::server_;
+std::string LocatorCliSecurityTest::data_token_;
+std::string LocatorCliSecurityTest::admin_token_;
+
+TEST_F(LocatorCliSecurityTest, TokenFileIsSentOnEveryCall) {
+  const BinaryResult stats = Locator({"--token-file", data_token_, "stats"});
+  EXPECT_EQ(stats.exit_code, 0) << stats.err;
+  const BinaryResult anonymous = Locator({"locate", "0.5", "0.5"});
+  EXPECT_EQ(anonymous.exit_code, 1);
+  EXPECT_EQ(anonymous.err.rfind("error: UNAUTHENTICATED: ", 0), 0u)
+      << anonymous.err;
+  const BinaryResult retune = Locator({"--token-file", data_token_, "retune"});
+  EXPECT_EQ(retune.exit_code, 1);
+  EXPECT_EQ(retune.err.rfind("error: PERMISSION_DENIED: ", 0), 0u)
+      << retune.err;
+  EXPECT_EQ(Locator({"--token-file", admin_token_, "retune"}).exit_code, 0);
+  // Health is open to probes without a token.
+  EXPECT_EQ(Locator({"health"}).exit_code, 0);
+}
+
+TEST_F(LocatorCliSecurityTest, PlaintextToTlsServerIsUnavailable) {
+  const BinaryResult result =
+      RunBinary(LOCATOR_PATH, {"--target", server_->target(), "--token-file",
+                               data_token_, "--deadline-ms", "5000", "stats"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.err.rfind("error: UNAVAILABLE: ", 0), 0u) << result.err;
+}
+
+TEST_F(LocatorCliSecurityTest, LoadDriverSendsTokenOverMutualTls) {
+  std::vector<std::string> args = {"--target",      server_->target(),
+                                   "--token-file",  data_token_,
+                                   "--queries",     "2000",
+                                   "--concurrency", "4"};
+  const std::vector<std::string> tls = pki_->ClientFlags(/*client_cert=*/true);
+  args.insert(args.end(), tls.begin(), tls.end());
+  // Exit code 0: every call (GetStats for the bounding box, then the load)
+  // succeeded.
+  const BinaryResult result = RunBinary(LOCATOR_LOAD_PATH, args);
+  EXPECT_EQ(result.exit_code, 0) << result.err << result.out;
+  // Without the token, every call fails.
+  args.erase(args.begin() + 2, args.begin() + 4);
+  EXPECT_NE(RunBinary(LOCATOR_LOAD_PATH, args).exit_code, 0);
 }
 
 }  // namespace

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -228,6 +230,48 @@ TEST_F(EngineTest, StatsCountQueriesAndCosts) {
                       0.0) /
       Engine::kStatsWindow;
   EXPECT_DOUBLE_EQ(s.mean_cost_recent, first_window);
+}
+
+TEST_F(EngineTest, StatsCountWalkCostsOfUnaryAndBatchQueries) {
+  const std::vector<Point2> queries = MixedQueries(700);
+  std::vector<uint64_t> expected(WalkCostHistogram::kUpperBounds.size() + 1);
+  uint64_t faces = 0;
+  uint64_t cost = 0;
+  const auto count = [&](const LocateResult& r) {
+    const auto& bounds = WalkCostHistogram::kUpperBounds;
+    ++expected[std::lower_bound(bounds.begin(), bounds.end(),
+                                r.cost.faces_visited) -
+               bounds.begin()];
+    faces += r.cost.faces_visited;
+    cost += r.cost.total();
+  };
+  LocateResult r;
+  for (size_t i = 0; i < 200; ++i) {
+    ASSERT_TRUE(engine_->Locate(queries[i], &r).ok());
+    count(r);
+  }
+  std::vector<LocateResult> batch;
+  ASSERT_TRUE(
+      engine_->LocateBatch(std::span(queries).subspan(200), &batch).ok());
+  for (const LocateResult& answer : batch) count(answer);
+
+  const EngineStats s = engine_->Stats();
+  EXPECT_EQ(s.walk_costs.counts, expected);
+  EXPECT_EQ(s.walk_costs.faces_sum, faces);
+  EXPECT_EQ(s.total_cost, cost);
+  EXPECT_EQ(s.tuning.hot_queries + s.tuning.fallback_queries, 700u);
+}
+
+TEST_F(EngineTest, EdgeSampleIsBoundedAndLiesInTheBox) {
+  const auto& sample = engine_->EdgeSample();
+  EXPECT_LE(sample.size(), Engine::kEdgeSampleSize);
+  EXPECT_GE(sample.size(), Engine::kEdgeSampleSize / 2);
+  const BoundingBox& box = engine_->dataset_info().bounding_box;
+  for (const auto& [a, b] : sample) {
+    EXPECT_TRUE(box.Contains(a) && box.Contains(b));
+  }
+  // Computed once: the same vector every time.
+  EXPECT_EQ(&engine_->EdgeSample(), &sample);
 }
 
 TEST_F(EngineTest, StatsDescribeTheDataset) {

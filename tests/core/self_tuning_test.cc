@@ -149,7 +149,14 @@ TEST_F(LearningTest, LearnsTheOneClusterHotSpot) {
   EXPECT_TRUE(
       test::SomeRegionCovers(s.hot_regions, test::OneClusterSquare(box())));
 
+  // Once tuned, the cluster's queries land in hot cells.
+  EXPECT_EQ(s.hot_queries + s.fallback_queries, 6000u);
   const std::span<const Point2> last(all.begin() + 6000, all.end());
+  Feed(*self_tuning, last);
+  const TuningSummary after = self_tuning->Summary();
+  EXPECT_EQ(after.hot_queries + after.fallback_queries, 7000u);
+  EXPECT_GT(double(after.hot_queries - s.hot_queries), 0.95 * last.size());
+
   const double tuned = MeanCost(*self_tuning, last);
   EXPECT_LE(tuned, 6.0);
   EXPECT_LT(tuned, MeanCost(*jump, last));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -198,6 +199,26 @@ TEST(TriangulationTest, ValuesInterpolateLinearly) {
   EXPECT_FALSE(t->ReferenceLocate({2, 2}).has_value);
 }
 
+TEST(TriangulationTest, SampleEdgesTakesAllOrAnEvenShareOfRealEdges) {
+  constexpr int k = 50;
+  auto t = BuildTriangulation(test::GridDataset(k));
+  ASSERT_NE(t, nullptr);
+  const size_t edges = t->num_vertices() + t->num_triangles() - 1;
+  EXPECT_EQ(t->SampleEdges(edges).size(), edges);
+  EXPECT_EQ(t->SampleEdges(10 * edges).size(), edges);
+  EXPECT_TRUE(t->SampleEdges(0).empty());
+  const auto sample = t->SampleEdges(1000);
+  EXPECT_LE(sample.size(), 1000u);
+  EXPECT_GE(sample.size(), 500u);
+  // Grid edges: unit axis-parallel segments or unit-square diagonals.
+  for (const auto& [a, b] : sample) {
+    const double dx = std::abs(a.x - b.x);
+    const double dy = std::abs(a.y - b.y);
+    EXPECT_TRUE((dx == 1 || dx == 0) && (dy == 1 || dy == 0) && dx + dy > 0)
+        << a.x << "," << a.y << " - " << b.x << "," << b.y;
+  }
+}
+
 TEST(TriangulationTest, MemoryBytesGrowsWithN) {
   auto small = BuildTriangulation(GenerateUniform(1000, 1));
   auto large = BuildTriangulation(GenerateUniform(20000, 1));
@@ -247,6 +268,26 @@ std::string ScaleName(const ::testing::TestParamInfo<double>& info) {
 INSTANTIATE_TEST_SUITE_P(Scales, ExtremeScaleTest,
                          ::testing::Values(1.0, 1e150, 1e-150, 1e300, 1e-200),
                          ScaleName);
+
+// A needle spanning 450 orders of magnitude: in long double its area
+// cancels to 0 (or worse), so the barycentrics come from exact rationals.
+// Expected values computed with Python's fractions.Fraction.
+TEST(TriangulationTest, NeedleTriangleBarycentricsAreExact) {
+  auto t = BuildTriangulation(
+      PointsDataset({{1e150, -3e150}, {7e-150, 5e-151}, {4e-300, 0}}));
+  ASSERT_NE(t, nullptr);
+  const LocateResult r = t->ReferenceLocate({9e-200, -3e-200});
+  ASSERT_EQ(r.type, LocationType::kFace);
+  std::array<double, 3> by_input_id{};
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(std::isfinite(r.barycentric[i])) << i;
+    by_input_id[r.vertex_ids[i]] = r.barycentric[i];
+  }
+  EXPECT_GE(by_input_id[0], 0);
+  EXPECT_LT(by_input_id[0], 1e-300);
+  EXPECT_NEAR(by_input_id[1], 1.116279069767442e-50, 1e-62);
+  EXPECT_DOUBLE_EQ(by_input_id[2], 1.0);
+}
 
 // The square (0,0) (2,0) (2,2) (0,2) with its centre (1,1): four triangles
 // around vertex 4.

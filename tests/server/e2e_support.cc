@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 namespace locator::e2e {
 namespace {
@@ -146,19 +148,25 @@ std::vector<Point2> TestQueries() {
 
 Status StartLocatord(const std::string& dataset,
                      const std::vector<std::string>& flags,
-                     std::unique_ptr<testing::ServerProcess>* server) {
+                     std::unique_ptr<testing::ServerProcess>* server,
+                     const ChannelSecurity& client_security) {
   std::vector<std::string> args = {"--dataset", dataset, "--listen",
                                    "127.0.0.1:0"};
   args.insert(args.end(), flags.begin(), flags.end());
-  return testing::ServerProcess::Start(LOCATORD_PATH, args, server);
+  return testing::ServerProcess::Start(LOCATORD_PATH, args, server,
+                                       client_security);
 }
 
 std::unique_ptr<v1::Locator::Stub> NewStub(
     const testing::ServerProcess& server) {
-  grpc::ChannelArguments arguments;
-  arguments.SetMaxReceiveMessageSize(64 << 20);
-  return v1::Locator::NewStub(grpc::CreateCustomChannel(
-      server.target(), grpc::InsecureChannelCredentials(), arguments));
+  return NewStub(server, server.client_security());
+}
+
+std::unique_ptr<v1::Locator::Stub> NewStub(const testing::ServerProcess& server,
+                                           const ChannelSecurity& security) {
+  return v1::Locator::NewStub(CreateLocatorChannel({.target = server.target(),
+                                                    .own_connection = true,
+                                                    .security = security}));
 }
 
 v1::LocateRequest LocateRequestFor(const Point2& q) {
@@ -179,6 +187,17 @@ v1::GetStatsResponse GetStats(v1::Locator::Stub& stub) {
   v1::GetStatsResponse stats;
   const grpc::Status status = stub.GetStats(&context, {}, &stats);
   EXPECT_TRUE(status.ok()) << status.error_message();
+  return stats;
+}
+
+v1::GetStatsResponse WaitForStats(
+    v1::Locator::Stub& stub,
+    const std::function<bool(const v1::GetStatsResponse&)>& done) {
+  v1::GetStatsResponse stats = GetStats(stub);
+  for (int attempt = 0; attempt < 500 && !done(stats); ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    stats = GetStats(stub);
+  }
   return stats;
 }
 

@@ -14,11 +14,13 @@
 #define LOCATOR_TESTS_SERVER_E2E_SUPPORT_H_
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "client/locator_client.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/core/dataset.h"
 #include "server/core/geometry.h"
@@ -52,12 +54,19 @@ class TestDatasetFile {
 std::vector<Point2> TestQueries();
 
 // Starts the locatord under test on 127.0.0.1:0 serving `dataset`, with
-// `flags` added; waits until it is SERVING.
+// `flags` added; waits until it is SERVING (probing with `client_security`,
+// the credentials the server accepts).
 Status StartLocatord(const std::string& dataset,
                      const std::vector<std::string>& flags,
-                     std::unique_ptr<testing::ServerProcess>* server);
+                     std::unique_ptr<testing::ServerProcess>* server,
+                     const ChannelSecurity& client_security = {});
+// A stub on a channel of its own (its own TCP connection, as a separate
+// client would have) to `server`, with the server's client credentials or
+// with `security`.
 std::unique_ptr<v1::Locator::Stub> NewStub(
     const testing::ServerProcess& server);
+std::unique_ptr<v1::Locator::Stub> NewStub(const testing::ServerProcess& server,
+                                           const ChannelSecurity& security);
 
 // `q` as a Locate or LocateStream request.
 v1::LocateRequest LocateRequestFor(const Point2& q);
@@ -66,6 +75,10 @@ grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
                        v1::LocateResponse* response);
 // Calls GetStats; a failed call is a test failure (and an empty answer).
 v1::GetStatsResponse GetStats(v1::Locator::Stub& stub);
+// Polls GetStats until `done` holds or ~10 s pass; returns the last answer.
+v1::GetStatsResponse WaitForStats(
+    v1::Locator::Stub& stub,
+    const std::function<bool(const v1::GetStatsResponse&)>& done);
 
 // An answer that came over the wire, as the core would have returned it.
 LocateResult FromLocateResponse(const v1::LocateResponse& response);

@@ -1,13 +1,11 @@
 // locatord end to end: the real binary on a dataset file, answers checked
-// against CGAL's own locate() in-process, and every bad input's status code.
+// against CGAL's own locate() in-process. Bad inputs and their status codes
+// are the table of bad_input_table_test.cc and bad_dataset_table_test.cc.
 
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cmath>
-#include <limits>
 #include <memory>
 #include <string>
 #include <thread>
@@ -20,11 +18,7 @@
 namespace locator::e2e {
 namespace {
 
-using ::testing::HasSubstr;
-
 constexpr size_t kBatchSize = 2500;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class LocatordTest : public ::testing::Test {
  protected:
@@ -206,60 +200,6 @@ TEST_F(LocatordTest, StreamAnswersMatchReferenceInOrder) {
             "");
 }
 
-TEST_F(LocatordTest, NonFiniteUnaryPointIsInvalidArgument) {
-  for (const Point2& q : {Point2{kNaN, 1}, Point2{1, kInf}, Point2{-kInf, 0}}) {
-    v1::LocateResponse response;
-    const grpc::Status status = LocateOne(*stub_, q, &response);
-    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-    EXPECT_THAT(status.error_message(), HasSubstr("non-finite"));
-  }
-}
-
-TEST_F(LocatordTest, NonFiniteBatchPointIsInvalidArgumentNamingItsIndex) {
-  std::vector<Point2> points(queries_->begin(), queries_->begin() + 10'000);
-  points[9'876].y = kNaN;
-  v1::LocateBatchResponse response;
-  const grpc::Status status = LocateBatch(BatchRequestFor(points), &response);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  EXPECT_THAT(status.error_message(), HasSubstr("point 9876 "));
-}
-
-TEST_F(LocatordTest, MismatchedColumnsAreInvalidArgumentGivingBothLengths) {
-  v1::LocateBatchRequest request =
-      BatchRequestFor(std::span<const Point2>(*queries_).subspan(0, 5));
-  request.add_xs(1.0);
-  v1::LocateBatchResponse response;
-  const grpc::Status status = LocateBatch(request, &response);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  EXPECT_THAT(status.error_message(), HasSubstr("6"));
-  EXPECT_THAT(status.error_message(), HasSubstr("5"));
-}
-
-TEST_F(LocatordTest, EmptyBatchIsOkAndEmpty) {
-  v1::LocateBatchRequest request;
-  request.set_include_vertex_ids(true);
-  v1::LocateBatchResponse response;
-  const grpc::Status status = LocateBatch(request, &response);
-  ASSERT_TRUE(status.ok()) << status.error_message();
-  EXPECT_EQ(response.types_size(), 0);
-  EXPECT_EQ(response.vertex_ids_size(), 0);
-  EXPECT_EQ(response.total_cost(), 0u);
-}
-
-TEST_F(LocatordTest, NonFiniteStreamPointEndsStreamAfterEarlierAnswers) {
-  grpc::ClientContext context;
-  auto stream = stub_->LocateStream(&context);
-  const std::vector<Point2> points = {{1.25, 2.5}, {3, 4}, {kInf, 1}, {5, 5}};
-  for (const Point2& q : points) stream->Write(LocateRequestFor(q));
-  stream->WritesDone();
-  int answers = 0;
-  v1::LocateResponse response;
-  while (stream->Read(&response)) ++answers;
-  const grpc::Status status = stream->Finish();
-  EXPECT_EQ(answers, 2);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-}
-
 TEST_F(LocatordTest, GetStatsDescribesDatasetAndCountsQueries) {
   std::unique_ptr<Engine> engine;
   Dataset dataset = reference_->dataset();
@@ -298,33 +238,6 @@ TEST_F(LocatordTest, GetStatsDescribesDatasetAndCountsQueries) {
             static_cast<int>(stats.tuning().grid_size() *
                              stats.tuning().grid_size()));
   EXPECT_GT(stats.memory().triangulation_bytes(), 0u);
-}
-
-TEST_F(LocatordTest, BatchCancelledMidwayStopsEarly) {
-  std::vector<Point2> points;
-  while (points.size() < 1'000'000) {
-    points.insert(points.end(), queries_->begin(), queries_->end());
-  }
-  points.resize(1'000'000);
-  const v1::LocateBatchRequest request = BatchRequestFor(points);
-  const uint64_t served_before = GetStats(*stub_).queries_served();
-  grpc::ClientContext context;
-  grpc::Status status;
-  std::thread call([&] {
-    v1::LocateBatchResponse response;
-    status = stub_->LocateBatch(&context, request, &response);
-  });
-  // Cancel once the server is locating the batch, i.e. counting queries.
-  while (GetStats(*stub_).queries_served() == served_before) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  context.TryCancel();
-  call.join();
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED);
-  // The server checks between blocks of points and gives up; give it a
-  // moment to get there: it must have located only part of the batch.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  EXPECT_LT(GetStats(*stub_).queries_served() - served_before, points.size());
 }
 
 TEST_F(LocatordTest, RetuneReturnsTuningWithoutHistogram) {

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,40 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   EXPECT_EQ(config.engine.tuning.budget_bytes, 0u);
   EXPECT_EQ(config.stats_interval_s, 0);
   EXPECT_EQ(config.retune_interval_s, 0);
+  EXPECT_EQ(config.engine.tuning.state_dir, "");
+  EXPECT_FALSE(config.http_enabled());
+  EXPECT_EQ(config.dataset_limits.max_points, 10'000'000u);
+  const TransportConfig& transport = config.serving.transport;
+  EXPECT_FALSE(transport.tls.enabled());
+  EXPECT_EQ(transport.max_concurrent_streams, 100);
+  EXPECT_EQ(transport.keepalive_time_ms, 60'000);
+  EXPECT_EQ(transport.keepalive_timeout_ms, 20'000);
+  EXPECT_EQ(transport.min_ping_interval_ms, 10'000);
+  EXPECT_EQ(transport.max_ping_strikes, 2);
+  EXPECT_EQ(transport.default_deadline, std::chrono::seconds(30));
+  EXPECT_EQ(config.access.data_token, "");
+  EXPECT_EQ(config.access.admin_token, "");
+  EXPECT_FALSE(config.access.redact);
+}
+
+TEST(ServerConfigTest, LimitFlagsMapToTheConfig) {
+  ServerConfig config;
+  const Status status =
+      Parse({"--max-dataset-points", "1000", "--max-concurrent-streams", "8",
+             "--keepalive-time-ms", "5000", "--keepalive-timeout-ms", "1000",
+             "--min-ping-interval-ms", "2000", "--max-ping-strikes", "0",
+             "--default-deadline-ms", "0", "--redact"},
+            &config);
+  ASSERT_TRUE(status.ok()) << status.ToString();
+  EXPECT_EQ(config.dataset_limits.max_points, 1000u);
+  const TransportConfig& transport = config.serving.transport;
+  EXPECT_EQ(transport.max_concurrent_streams, 8);
+  EXPECT_EQ(transport.keepalive_time_ms, 5000);
+  EXPECT_EQ(transport.keepalive_timeout_ms, 1000);
+  EXPECT_EQ(transport.min_ping_interval_ms, 2000);
+  EXPECT_EQ(transport.max_ping_strikes, 0);
+  EXPECT_EQ(transport.default_deadline.count(), 0);
+  EXPECT_TRUE(config.access.redact);
 }
 
 TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
@@ -95,6 +130,13 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
   EXPECT_THAT(help, HasSubstr("--dataset"));
   EXPECT_THAT(help, HasSubstr("--budget"));
   EXPECT_THAT(help, HasSubstr("--retune-interval-s"));
+  for (const char* flag :
+       {"--tls-cert", "--tls-client-ca", "--token-file", "--admin-token-file",
+        "--redact", "--max-concurrent-streams", "--min-ping-interval-ms",
+        "--default-deadline-ms", "--max-dataset-points", "--http-listen",
+        "--state-dir"}) {
+    EXPECT_THAT(help, HasSubstr(flag));
+  }
 }
 
 TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
@@ -118,8 +160,22 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--listen", ":50051"},
       {"--listen", "localhost:65536"},
       {"--listen", "localhost:http"},
+      {"--http-listen", "8080"},
+      {"--http-listen", "localhost:65536"},
       {"--strategy", "fastest"},
       {"--dataset", ""},
+      {"--max-dataset-points", "2"},
+      {"--max-dataset-points", "5000000000"},
+      {"--max-concurrent-streams", "0"},
+      {"--keepalive-time-ms", "0"},
+      {"--keepalive-timeout-ms", "soon"},
+      {"--min-ping-interval-ms", "-1"},
+      {"--max-ping-strikes", "3000000000"},
+      {"--default-deadline-ms", "1.5"},
+      {"--tls-cert", "/no/such/cert.pem"},
+      {"--tls-client-ca", "/no/such/ca.pem"},
+      {"--token-file", "/no/such/token"},
+      {"--admin-token-file", "/no/such/token"},
   };
   for (const std::vector<std::string>& args : bad) {
     ServerConfig config;
@@ -127,6 +183,19 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << args[0];
     EXPECT_THAT(status.message(), HasSubstr(args[0]));
   }
+}
+
+TEST(ServerConfigTest, StateDirMustBeADirectoryForSelfTuning) {
+  const std::string dir = ::testing::TempDir();
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--state-dir", dir}, &config).ok());
+  EXPECT_EQ(config.engine.tuning.state_dir, dir);
+  const Status missing = Parse({"--state-dir", dir + "/no/such/dir"}, &config);
+  EXPECT_THAT(missing.message(), HasSubstr("--state-dir"));
+  EXPECT_THAT(missing.message(), HasSubstr("not a directory"));
+  EXPECT_THAT(
+      Parse({"--state-dir", dir, "--strategy", "walk"}, &config).message(),
+      HasSubstr("only the self-tuning strategy keeps state"));
 }
 
 TEST(ServerConfigTest, UnknownFlagsAndStrayArgumentsFail) {
@@ -148,6 +217,17 @@ TEST(ServerConfigTest, ByteFlagsTakeUnitSuffixes) {
   ServerConfig config;
   ASSERT_TRUE(Parse({"--max-message-bytes", "1GiB"}, &config).ok());
   EXPECT_EQ(config.serving.max_message_bytes, size_t{1} << 30);
+}
+
+TEST(ServerConfigTest, HttpListenTurnsTheStatusServerOn) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--http-listen", "0.0.0.0:0"}, &config).ok());
+  EXPECT_TRUE(config.http_enabled());
+  EXPECT_EQ(config.http_host, "0.0.0.0");
+  EXPECT_EQ(config.http_port, 0);
+  ASSERT_TRUE(Parse({"--http-listen", "[::1]:9090"}, &config).ok());
+  EXPECT_EQ(config.http_host, "[::1]");
+  EXPECT_EQ(config.http_port, 9090);
 }
 
 TEST(ServerConfigTest, ListenAddressSplitsAtTheLastColon) {

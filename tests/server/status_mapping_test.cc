@@ -32,5 +32,18 @@ TEST(StatusMappingTest, EveryCodeMapsToItsGrpcNamesakeKeepingTheMessage) {
   }
 }
 
+TEST(StatusMappingTest, EveryRefusalHasItsCodeAndKeepsTheMessage) {
+  const std::vector<std::pair<Refusal, grpc::StatusCode>> cases = {
+      {Refusal::kUnauthenticated, grpc::StatusCode::UNAUTHENTICATED},
+      {Refusal::kPermissionDenied, grpc::StatusCode::PERMISSION_DENIED},
+      {Refusal::kShuttingDown, grpc::StatusCode::UNAVAILABLE},
+  };
+  for (const auto& [refusal, code] : cases) {
+    const grpc::Status mapped = ToGrpcStatus(refusal, "why");
+    EXPECT_EQ(mapped.error_code(), code);
+    EXPECT_EQ(mapped.error_message(), "why");
+  }
+}
+
 }  // namespace
 }  // namespace locator

@@ -95,9 +95,11 @@ Status ServerProcess::Spawn(const std::string& binary,
 
 Status ServerProcess::Start(const std::string& binary,
                             const std::vector<std::string>& args,
-                            std::unique_ptr<ServerProcess>* process) {
+                            std::unique_ptr<ServerProcess>* process,
+                            const ChannelSecurity& client_security) {
   std::unique_ptr<ServerProcess> child;
   Status status = Spawn(binary, args, &child);
+  if (status.ok()) child->set_client_security(client_security);
   if (status.ok()) status = child->WaitForListening();
   if (status.ok()) status = child->WaitUntilServing();
   if (status.ok()) *process = std::move(child);
@@ -142,7 +144,7 @@ Status ServerProcess::WaitForListening(std::chrono::milliseconds timeout) {
 
 grpc::Status ServerProcess::CheckHealth(HealthStatus* status) const {
   HealthChecker checker(
-      grpc::CreateChannel(target_, grpc::InsecureChannelCredentials()));
+      CreateLocatorChannel({.target = target_, .security = client_security_}));
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() +
                        std::chrono::seconds(1));
@@ -191,6 +193,18 @@ std::string ServerProcess::StderrText() const {
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
+}
+
+std::string ServerProcess::WaitForStderr(const std::string& text,
+                                         std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  std::string seen = StderrText();
+  while (seen.find(text) == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    seen = StderrText();
+  }
+  return seen;
 }
 
 Status ServerProcess::Failure(const std::string& what) const {

@@ -5,9 +5,11 @@
 // stderr in a temporary file; the child is killed if the test process dies.
 // WaitForListening() reads stdout up to the
 // "<program> listening on HOST:PORT" line; WaitUntilServing() then polls the
-// gRPC health service until locator.v1.Locator reports SERVING. Start() does
-// all three. The destructor sends SIGTERM to a child that is still running
-// and reaps it (SIGKILL if it has not exited after kExitGrace).
+// gRPC health service until locator.v1.Locator reports SERVING, over a
+// channel with the credentials of a client the server accepts (set by
+// Start(), or set_client_security()). Start() does all three. The destructor
+// sends SIGTERM to a child that is still running and reaps it (SIGKILL if it
+// has not exited after kExitGrace).
 //
 // Owns the child, the stdout pipe and the stderr file. Thread-safety: none;
 // one test thread drives it (the accessors may be read from any thread once
@@ -24,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "client/channel_options.h"
 #include "client/health_check.h"
 #include "server/core/status.h"
 
@@ -39,10 +42,12 @@ class ServerProcess {
   static Status Spawn(const std::string& binary,
                       const std::vector<std::string>& args,
                       std::unique_ptr<ServerProcess>* process);
-  // Spawn() + WaitForListening() + WaitUntilServing().
+  // Spawn() + WaitForListening() + WaitUntilServing(), probing health with
+  // `client_security`.
   static Status Start(const std::string& binary,
                       const std::vector<std::string>& args,
-                      std::unique_ptr<ServerProcess>* process);
+                      std::unique_ptr<ServerProcess>* process,
+                      const ChannelSecurity& client_security = {});
 
   ~ServerProcess();
   ServerProcess(const ServerProcess&) = delete;
@@ -57,6 +62,12 @@ class ServerProcess {
   // One health probe of locator.v1.Locator (a 1 s deadline).
   grpc::Status CheckHealth(HealthStatus* status) const;
 
+  // The credentials of a client the server accepts (TLS, token).
+  const ChannelSecurity& client_security() const { return client_security_; }
+  void set_client_security(const ChannelSecurity& security) {
+    client_security_ = security;
+  }
+
   pid_t pid() const { return pid_; }
   // Valid after WaitForListening().
   int port() const { return port_; }
@@ -70,6 +81,10 @@ class ServerProcess {
   std::optional<int> WaitForExit(std::chrono::milliseconds timeout);
   // Everything the child has written to stderr so far.
   std::string StderrText() const;
+  // Polls stderr until it contains `text` or `timeout` passes; returns
+  // StderrText() either way (for the caller's assertion and message).
+  std::string WaitForStderr(const std::string& text,
+                            std::chrono::milliseconds timeout);
 
  private:
   ServerProcess() = default;
@@ -82,6 +97,7 @@ class ServerProcess {
   std::string stderr_path_;
   int port_ = 0;
   std::string target_;
+  ChannelSecurity client_security_;
 };
 
 }  // namespace locator::testing

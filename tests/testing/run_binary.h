@@ -7,8 +7,8 @@
 //
 // Thread-safety: a free function; each call has its own files.
 
-#ifndef LOCATOR_TESTS_CLIENT_RUN_BINARY_H_
-#define LOCATOR_TESTS_CLIENT_RUN_BINARY_H_
+#ifndef LOCATOR_TESTS_TESTING_RUN_BINARY_H_
+#define LOCATOR_TESTS_TESTING_RUN_BINARY_H_
 
 #include <chrono>
 #include <string>
@@ -29,4 +29,4 @@ BinaryResult RunBinary(const std::string& binary,
 
 }  // namespace locator::testing
 
-#endif  // LOCATOR_TESTS_CLIENT_RUN_BINARY_H_
+#endif  // LOCATOR_TESTS_TESTING_RUN_BINARY_H_

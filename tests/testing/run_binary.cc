@@ -1,4 +1,4 @@
-#include "tests/client/run_binary.h"
+#include "tests/testing/run_binary.h"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>

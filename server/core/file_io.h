@@ -1,0 +1,37 @@
+// Whole-file reads and crash-safe whole-file writes, with errors as values
+// that name the file.
+//
+// Thread-safety: free functions. Concurrent WriteFileAtomically() calls for
+// the same path are safe: each writes its own temporary file, and the last
+// rename wins whole.
+
+#ifndef LOCATOR_CORE_FILE_IO_H_
+#define LOCATOR_CORE_FILE_IO_H_
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <string_view>
+
+#include "server/core/status.h"
+
+namespace locator {
+
+// Reads the regular file at `path` into *contents. `what` names the file's
+// role in messages ("cannot open dataset 'x': ..."). NotFound if it does not
+// exist; ResourceExhausted if it is larger than `max_bytes`; IOError
+// otherwise.
+Status ReadWholeFile(const std::string& path, std::string_view what,
+                     std::string* contents,
+                     size_t max_bytes = std::numeric_limits<size_t>::max());
+
+// Replaces the file at `path` with `bytes` so that a crash at any moment
+// leaves either the old file or the new one, never a mix: writes a temporary
+// file in the same directory, fsyncs it, renames it over `path` and fsyncs
+// the directory. The temporary file is removed on failure. IOError naming
+// the step that failed.
+Status WriteFileAtomically(const std::string& path, std::string_view bytes);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_FILE_IO_H_

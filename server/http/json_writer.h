@@ -1,0 +1,54 @@
+// JsonWriter: builds one JSON text in a string, with commas placed for the
+// caller. Strings are escaped (control characters, quotes, backslashes, and
+// '<', '>', '&' so the text is inert if embedded in HTML); bytes that are
+// not valid UTF-8 become U+FFFD. Non-finite numbers are written as null.
+//
+// Owns the text. Invariant: the caller nests Begin/End calls properly and
+// writes a Key() before each value inside an object. Thread-safety: none.
+
+#ifndef LOCATOR_SERVER_HTTP_JSON_WRITER_H_
+#define LOCATOR_SERVER_HTTP_JSON_WRITER_H_
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace locator {
+
+class JsonWriter {
+ public:
+  JsonWriter& BeginObject();
+  JsonWriter& EndObject();
+  JsonWriter& BeginArray();
+  JsonWriter& EndArray();
+  // The name of the next member of the current object.
+  JsonWriter& Key(std::string_view name);
+
+  JsonWriter& String(std::string_view value);
+  // Shortest text that reads back as `value`; null if it is not finite.
+  JsonWriter& Number(double value);
+  JsonWriter& Integer(uint64_t value);
+  JsonWriter& Bool(bool value);
+  JsonWriter& Null();
+
+  // The text written so far.
+  const std::string& text() const { return text_; }
+
+ private:
+  // Writes the comma that separates a value from its predecessor.
+  void BeforeValue();
+  // Starts or ends an object or array.
+  void Open(char bracket);
+  void Close(char bracket);
+  void AppendEscaped(std::string_view value);
+
+  std::string text_;
+  // One entry per open object or array: whether it has no element yet.
+  std::vector<bool> empty_;
+  bool after_key_ = false;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_HTTP_JSON_WRITER_H_

@@ -1,0 +1,274 @@
+// locatord status page: polls /api/stats, draws the query heat map with hot
+// regions, start points and an edge sample, charts cost and throughput, and
+// records what it rendered in data attributes for scripts and tests.
+'use strict';
+
+const REFRESH_MS = 1500;
+const HOT_CELLS_LISTED = 10;
+const COLORS = {
+  edge: 'rgba(160, 174, 196, 0.4)',
+  hot: '#4fd1c5',
+  start: '#f6e05e',
+  axis: '#8b97aa',
+  cost: '#f687b3',
+  qps: '#63b3ed',
+};
+
+let edgeSegments = [];
+let edgesDataset = null;  // which dataset edgeSegments belong to
+let renderCount = 0;
+
+function setText(id, text) {
+  document.getElementById(id).textContent = text;
+}
+
+// Sets a figure's text and its raw value (data-value).
+function setFigure(id, value, text) {
+  const element = document.getElementById(id);
+  element.dataset.value = value === null ? '' : String(value);
+  element.textContent = text;
+}
+
+function formatCount(n) {
+  return Number(n).toLocaleString('en-US');
+}
+
+function formatNumber(x, digits) {
+  return x === null || x === undefined ? '–' : Number(x).toFixed(digits);
+}
+
+function formatBytes(bytes) {
+  const units = ['B', 'KiB', 'MiB', 'GiB'];
+  let value = bytes;
+  let unit = 0;
+  while (value >= 1024 && unit < units.length - 1) {
+    value /= 1024;
+    unit++;
+  }
+  return (unit === 0 ? value : value.toFixed(1)) + ' ' + units[unit];
+}
+
+// A canvas sized to its CSS box at the device's pixel ratio; returns its
+// context scaled to CSS pixels, plus the width and height in CSS pixels.
+function prepareCanvas(id) {
+  const canvas = document.getElementById(id);
+  const ratio = window.devicePixelRatio || 1;
+  const width = canvas.clientWidth || canvas.width;
+  const height = canvas.clientHeight || canvas.height;
+  canvas.width = Math.round(width * ratio);
+  canvas.height = Math.round(height * ratio);
+  const ctx = canvas.getContext('2d');
+  ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+  ctx.clearRect(0, 0, width, height);
+  return {ctx, width, height};
+}
+
+// Maps data coordinates into a width x height canvas, keeping the aspect
+// ratio, y up, with a small margin.
+function mapTransform(box, width, height) {
+  const margin = 8;
+  const boxWidth = Math.max(box.max_x - box.min_x, 1e-300);
+  const boxHeight = Math.max(box.max_y - box.min_y, 1e-300);
+  const scale = Math.min((width - 2 * margin) / boxWidth,
+                         (height - 2 * margin) / boxHeight);
+  const left = (width - scale * boxWidth) / 2;
+  const top = (height - scale * boxHeight) / 2;
+  return {
+    x: (x) => left + (x - box.min_x) * scale,
+    y: (y) => top + (box.max_y - y) * scale,
+    scale,
+  };
+}
+
+// Heat colour for a share in [0, 1]: dark red to bright yellow.
+function heatColor(share) {
+  const hue = 10 + 45 * share;
+  const lightness = 25 + 40 * share;
+  return `hsla(${hue}, 100%, ${lightness}%, ${0.35 + 0.6 * share})`;
+}
+
+// The histogram's cells with a positive count, hottest first.
+function hotCells(tuning) {
+  const cells = [];
+  const n = tuning.grid_size;
+  tuning.histogram.forEach((count, index) => {
+    if (count > 0) cells.push({i: index % n, j: Math.floor(index / n), count});
+  });
+  cells.sort((a, b) => b.count - a.count);
+  return cells;
+}
+
+function drawMap(stats) {
+  const {ctx, width, height} = prepareCanvas('map');
+  const tuning = stats.tuning;
+  const t = mapTransform(stats.dataset.bounding_box, width, height);
+
+  ctx.strokeStyle = COLORS.edge;
+  ctx.lineWidth = 0.8;
+  ctx.beginPath();
+  for (const [x0, y0, x1, y1] of edgeSegments) {
+    ctx.moveTo(t.x(x0), t.y(y0));
+    ctx.lineTo(t.x(x1), t.y(y1));
+  }
+  ctx.stroke();
+
+  const n = tuning.grid_size;
+  const cells = hotCells(tuning);
+  if (n > 0 && cells.length > 0) {
+    const grid = tuning.grid_box;
+    const cellWidth = (grid.max_x - grid.min_x) / n;
+    const cellHeight = (grid.max_y - grid.min_y) / n;
+    const logMax = Math.log1p(cells[0].count);
+    for (const {i, j, count} of cells) {
+      const x0 = t.x(grid.min_x + i * cellWidth);
+      const y1 = t.y(grid.min_y + (j + 1) * cellHeight);
+      ctx.fillStyle = heatColor(Math.log1p(count) / logMax);
+      ctx.fillRect(x0, y1, cellWidth * t.scale, cellHeight * t.scale);
+    }
+  }
+
+  ctx.strokeStyle = COLORS.hot;
+  ctx.lineWidth = 2;
+  for (const r of tuning.hot_regions) {
+    ctx.strokeRect(t.x(r.min_x), t.y(r.max_y), (r.max_x - r.min_x) * t.scale,
+                   (r.max_y - r.min_y) * t.scale);
+  }
+
+  ctx.fillStyle = COLORS.start;
+  for (const [x, y] of tuning.start_points) {
+    ctx.fillRect(t.x(x) - 1, t.y(y) - 1, 2, 2);
+  }
+
+  document.getElementById('hot-cells').dataset.cells =
+      JSON.stringify(cells.slice(0, HOT_CELLS_LISTED));
+}
+
+// A line chart of values over times (null values leave gaps).
+function drawChart(id, times, values, color) {
+  const {ctx, width, height} = prepareCanvas(id);
+  const left = 48, right = 8, top = 10, bottom = 22;
+  const finite = values.filter((v) => v !== null);
+  ctx.fillStyle = COLORS.axis;
+  ctx.font = '11px system-ui, sans-serif';
+  if (finite.length === 0) {
+    ctx.fillText('no data yet', left, height / 2);
+    return;
+  }
+  const max = Math.max(...finite) * 1.1 || 1;
+  const t0 = times[0];
+  const span = Math.max(times[times.length - 1] - t0, 1);
+  const px = (t) => left + (t - t0) / span * (width - left - right);
+  const py = (v) => height - bottom - v / max * (height - top - bottom);
+
+  ctx.strokeStyle = COLORS.axis;
+  ctx.lineWidth = 1;
+  ctx.beginPath();
+  ctx.moveTo(left, top);
+  ctx.lineTo(left, height - bottom);
+  ctx.lineTo(width - right, height - bottom);
+  ctx.stroke();
+  ctx.fillText(max >= 100 ? formatCount(Math.round(max)) : max.toPrecision(3),
+               2, top + 8);
+  ctx.fillText('0', 2, height - bottom);
+  ctx.fillText(`-${Math.round(span)} s`, left, height - 6);
+  ctx.fillText('now', width - right - 22, height - 6);
+
+  ctx.strokeStyle = color;
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  let drawing = false;
+  values.forEach((v, k) => {
+    if (v === null) {
+      drawing = false;
+      return;
+    }
+    if (drawing) {
+      ctx.lineTo(px(times[k]), py(v));
+    } else {
+      ctx.moveTo(px(times[k]), py(v));
+      drawing = true;
+    }
+  });
+  ctx.stroke();
+}
+
+function renderFigures(stats) {
+  const tuning = stats.tuning;
+  const dataset = stats.dataset;
+  setText('dataset', `${dataset.source}: ${formatCount(dataset.vertices)} ` +
+                         `points, ${formatCount(dataset.triangles)} triangles`);
+  setText('strategy', `strategy ${stats.strategy}`);
+  setFigure('queries', stats.queries, formatCount(stats.queries));
+  setFigure('qps', stats.qps, formatNumber(stats.qps, 0));
+  setFigure('mean-cost-recent', stats.mean_cost_recent,
+            formatNumber(stats.mean_cost_recent, 2));
+  setFigure('mean-cost-lifetime', stats.mean_cost_lifetime,
+            formatNumber(stats.mean_cost_lifetime, 2));
+  setFigure('snapshot-version', tuning.snapshot_version,
+            String(tuning.snapshot_version));
+  setFigure('retunes', tuning.retune_count, String(tuning.retune_count));
+  setFigure('hot-queries', tuning.hot_queries, formatCount(tuning.hot_queries));
+  setFigure('fallback-queries', tuning.fallback_queries,
+            formatCount(tuning.fallback_queries));
+  setFigure('start-points', tuning.start_point_count,
+            formatCount(tuning.start_point_count));
+  setFigure('triangulation-bytes', dataset.triangulation_bytes,
+            formatBytes(dataset.triangulation_bytes));
+  setFigure('tuning-bytes', tuning.memory_bytes,
+            formatBytes(tuning.memory_bytes));
+}
+
+function render(stats) {
+  const state = document.getElementById('state');
+  state.textContent = 'serving';
+  state.className = 'state serving';
+  renderFigures(stats);
+  drawMap(stats);
+  drawChart('cost-chart', stats.history.t, stats.history.mean_cost,
+            COLORS.cost);
+  drawChart('qps-chart', stats.history.t, stats.history.qps, COLORS.qps);
+  renderCount++;
+  document.body.dataset.renderedVersion = String(stats.tuning.snapshot_version);
+  document.body.dataset.renderedQueries = String(stats.queries);
+  document.body.dataset.renderCount = String(renderCount);
+}
+
+function showState(text, className) {
+  const state = document.getElementById('state');
+  state.textContent = text;
+  state.className = 'state ' + className;
+}
+
+async function fetchJson(path) {
+  const response = await fetch(path, {cache: 'no-store'});
+  const body = await response.json();
+  return {status: response.status, body};
+}
+
+// Fetches the edge sample once per dataset (it never changes otherwise).
+async function ensureEdges(dataset) {
+  const key = `${dataset.source}|${dataset.vertices}|${dataset.triangles}`;
+  if (key === edgesDataset) return;
+  const edges = await fetchJson('/api/edges');
+  if (edges.status !== 200) return;
+  edgeSegments = edges.body.segments;
+  edgesDataset = key;
+}
+
+async function refresh() {
+  try {
+    const stats = await fetchJson('/api/stats');
+    if (stats.status === 200) {
+      await ensureEdges(stats.body.dataset);
+      render(stats.body);
+    } else {
+      showState(stats.body.state || `HTTP ${stats.status}`, 'loading');
+    }
+  } catch (error) {
+    showState(`unreachable (${error.message})`, 'error');
+  } finally {
+    setTimeout(refresh, REFRESH_MS);
+  }
+}
+
+refresh();

@@ -1,0 +1,51 @@
+// EngineCollector: Prometheus metrics read from the current Engine at scrape
+// time, so they follow whichever engine the service publishes (a Reload may
+// swap it; counters then restart, which Prometheus treats as a reset).
+//
+//   locator_engine_loaded                  1 once an engine serves, else 0
+//   locator_queries_total                  points located
+//   locator_query_cost_total               their summed cost (paper metric)
+//   locator_mean_cost_recent               mean cost, last 1000 queries
+//   locator_walk_faces                     histogram: faces visited per query
+//   locator_hot_region_queries_total       self-tuning: answered in hot cells
+//   locator_fallback_queries_total         self-tuning: in cold cells
+//   locator_retunes_total                  re-tunes done
+//   locator_snapshot_version               published tuning snapshot
+//   locator_start_points                   start points in use
+//   locator_triangulation_bytes            memory of the triangulation
+//   locator_tuning_bytes                   memory of the tuning structures
+//   locator_dataset_vertices, locator_dataset_triangles
+//
+// Owns only the function that yields the current engine.
+// Thread-safety: Collect() may be called from any thread.
+
+#ifndef LOCATOR_SERVER_METRICS_ENGINE_COLLECTOR_H_
+#define LOCATOR_SERVER_METRICS_ENGINE_COLLECTOR_H_
+
+#include <prometheus/collectable.h>
+#include <prometheus/metric_family.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "server/core/engine.h"
+
+namespace locator {
+
+class EngineCollector final : public prometheus::Collectable {
+ public:
+  // `current_engine` returns the engine new calls use, or null while none
+  // is loaded; it is called once per Collect().
+  explicit EngineCollector(
+      std::function<std::shared_ptr<Engine>()> current_engine);
+
+  std::vector<prometheus::MetricFamily> Collect() const override;
+
+ private:
+  const std::function<std::shared_ptr<Engine>()> current_engine_;
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_METRICS_ENGINE_COLLECTOR_H_

@@ -1,0 +1,73 @@
+// RpcMetrics: Prometheus series for every gRPC call the server finishes,
+// fed by a server interceptor (NewInterceptorFactory()), so that every
+// service and method is counted without code in the handlers.
+//
+// Owns nothing but pointers into the families it adds to `registry`:
+//   locator_rpc_requests_total{service,method,code}  finished calls
+//   locator_rpc_errors_total{service,method,code}    the non-OK ones
+//   locator_rpc_duration_seconds{service,method}     start to status sent
+// A series is created the first time its labels occur.
+//
+// Thread-safety: Record() and the interceptors may run on any number of
+// threads at once; lookups of existing series take a shared lock only.
+
+#ifndef LOCATOR_SERVER_METRICS_RPC_METRICS_H_
+#define LOCATOR_SERVER_METRICS_RPC_METRICS_H_
+
+#include <grpcpp/grpcpp.h>
+#include <grpcpp/support/server_interceptor.h>
+#include <prometheus/counter.h>
+#include <prometheus/family.h>
+#include <prometheus/histogram.h>
+#include <prometheus/registry.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <shared_mutex>
+#include <string>
+#include <string_view>
+
+namespace locator {
+
+class RpcMetrics {
+ public:
+  // Adds the families above to `registry`, which must outlive this object.
+  explicit RpcMetrics(prometheus::Registry* registry);
+
+  RpcMetrics(const RpcMetrics&) = delete;
+  RpcMetrics& operator=(const RpcMetrics&) = delete;
+
+  // Counts one call of `method` ("/package.Service/Method") that ended with
+  // `code` after `seconds`.
+  void Record(std::string_view method, grpc::StatusCode code, double seconds);
+
+  // A factory for grpc::ServerBuilder's interceptors that calls Record()
+  // once per call. This object must outlive the server.
+  std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>
+  NewInterceptorFactory();
+
+ private:
+  // The series one (method, code) pair updates.
+  struct Series {
+    prometheus::Counter* requests = nullptr;
+    prometheus::Counter* errors = nullptr;  // null for OK
+    prometheus::Histogram* duration = nullptr;
+  };
+  // Indexed by status code (0..16).
+  using MethodSeries = std::array<Series, 17>;
+
+  // The series of (method, code), created on first use.
+  const Series& SeriesFor(std::string_view method, grpc::StatusCode code);
+
+  prometheus::Family<prometheus::Counter>& requests_;
+  prometheus::Family<prometheus::Counter>& errors_;
+  prometheus::Family<prometheus::Histogram>& duration_;
+
+  std::shared_mutex mu_;
+  std::map<std::string, MethodSeries, std::less<>> by_method_;  // guarded
+};
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_METRICS_RPC_METRICS_H_

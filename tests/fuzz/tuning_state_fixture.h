@@ -1,0 +1,73 @@
+// The small triangulation and self-tuning configuration that the tuning
+// state fuzzer, its seed corpus (tests/fuzz/corpus/tuning_state_fuzzer/) and
+// the core tests share: a state saved by the fixture's locator decodes under
+// the fixture's fingerprint and restores onto its tuner's grid.
+//
+// Header-only, so that the fuzz target needs no support library.
+// Thread-safety: the fixture is built once and immutable afterwards.
+
+#ifndef LOCATOR_TESTS_FUZZ_TUNING_STATE_FIXTURE_H_
+#define LOCATOR_TESTS_FUZZ_TUNING_STATE_FIXTURE_H_
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "server/core/dataset.h"
+#include "server/core/fnv_hash.h"
+#include "server/core/hot_region_tuner.h"
+#include "server/core/self_tuning_locator.h"
+#include "server/core/triangulation.h"
+#include "server/core/tuning_options.h"
+#include "server/core/tuning_state.h"
+
+namespace locator::fuzz {
+
+struct TuningStateFixture {
+  static constexpr size_t kPoints = 400;
+  static constexpr uint64_t kSeed = 5;
+
+  std::unique_ptr<Triangulation> triangulation;
+  TuningOptions options;
+  // The coarse grid a SelfTuningLocator with `options` uses.
+  GridGeometry grid;
+  TuningFingerprint fingerprint;
+};
+
+inline const TuningStateFixture& TuningStateFuzzFixture() {
+  static const TuningStateFixture* fixture = [] {
+    auto* f = new TuningStateFixture();
+    // A generated dataset always triangulates.
+    Triangulation::Build(
+        GenerateUniform(TuningStateFixture::kPoints, TuningStateFixture::kSeed),
+        &f->triangulation)
+        .ok();
+    const TuningSummary summary =
+        SelfTuningLocator(*f->triangulation, f->options).Summary();
+    f->grid = GridGeometry(summary.grid_box, summary.grid_size);
+    f->fingerprint = HotRegionTuner(*f->triangulation, f->grid, f->options, 0)
+                         .Fingerprint("self-tuning");
+    return f;
+  }();
+  return *fixture;
+}
+
+// Makes the length field and the checksum of an encoded state agree with
+// its bytes, so that a mutated state reaches the checks behind them.
+inline void ResealTuningState(std::string* bytes) {
+  constexpr size_t kLengthAt = kTuningStateMagic.size() + 4;
+  if (bytes->size() < kLengthAt + 16) return;
+  for (size_t i = 0; i < 8; ++i) {
+    (*bytes)[kLengthAt + i] = static_cast<char>(bytes->size() >> (8 * i));
+  }
+  Fnv1a64 hash;
+  hash.Add(std::string_view(*bytes).substr(0, bytes->size() - 8));
+  for (size_t i = 0; i < 8; ++i) {
+    (*bytes)[bytes->size() - 8 + i] =
+        static_cast<char>(hash.digest() >> (8 * i));
+  }
+}
+
+}  // namespace locator::fuzz
+
+#endif  // LOCATOR_TESTS_FUZZ_TUNING_STATE_FIXTURE_H_

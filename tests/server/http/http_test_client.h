@@ -1,0 +1,39 @@
+// Blocking HTTP/1.1 requests to 127.0.0.1 for the status server's tests
+// (Boost.Beast), one connection per call unless a connection is kept.
+//
+// Thread-safety: none; one test thread.
+
+#ifndef LOCATOR_TESTS_SERVER_HTTP_HTTP_TEST_CLIENT_H_
+#define LOCATOR_TESTS_SERVER_HTTP_HTTP_TEST_CLIENT_H_
+
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "server/core/status.h"
+
+namespace locator::testing {
+
+struct HttpReply {
+  unsigned status = 0;
+  std::map<std::string, std::string> headers;  // names in lower case
+  std::string body;
+};
+
+// Sends `method` `target` to 127.0.0.1:port and reads the reply. IOError if
+// the connection fails or closes before a complete reply.
+Status HttpRequest(int port, std::string_view method, std::string_view target,
+                   HttpReply* reply);
+
+// GET, the usual case.
+inline Status HttpGet(int port, std::string_view target, HttpReply* reply) {
+  return HttpRequest(port, "GET", target, reply);
+}
+
+// Writes `raw` bytes to a fresh connection and returns everything the
+// server sends back until it closes the connection (or 10 s pass).
+Status RawExchange(int port, std::string_view raw, std::string* received);
+
+}  // namespace locator::testing
+
+#endif  // LOCATOR_TESTS_SERVER_HTTP_HTTP_TEST_CLIENT_H_

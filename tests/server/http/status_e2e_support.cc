@@ -1,0 +1,69 @@
+#include "tests/server/http/status_e2e_support.h"
+
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "tests/server/http/http_test_client.h"
+
+namespace locator::testing {
+namespace {
+
+constexpr auto kServingTimeout = std::chrono::seconds(60);
+constexpr auto kPollInterval = std::chrono::milliseconds(20);
+
+}  // namespace
+
+Status LocatordWithHttp::Start(const std::string& dataset,
+                               const std::vector<std::string>& flags,
+                               std::unique_ptr<LocatordWithHttp>* server) {
+  std::vector<std::string> args = {"--dataset",     dataset,
+                                   "--listen",      "127.0.0.1:0",
+                                   "--http-listen", "127.0.0.1:0"};
+  args.insert(args.end(), flags.begin(), flags.end());
+  std::unique_ptr<LocatordWithHttp> started(new LocatordWithHttp());
+  Status status = ServerProcess::Spawn(LOCATORD_PATH, args, &started->process_);
+  if (status.ok()) status = started->process_->WaitForListening();
+  if (!status.ok()) return status;
+  started->grpc_target_ = started->process_->target();
+  status = started->process_->WaitForListening();
+  if (!status.ok()) return status;
+  started->http_port_ = started->process_->port();
+
+  const auto deadline = std::chrono::steady_clock::now() + kServingTimeout;
+  for (;;) {
+    HttpReply reply;
+    if (HttpGet(started->http_port_, "/api/stats", &reply).ok() &&
+        reply.status == 200) {
+      break;
+    }
+    if (started->process_->WaitForExit(std::chrono::milliseconds(0)) ||
+        std::chrono::steady_clock::now() > deadline) {
+      return Status::Unavailable("locatord did not serve; stderr:\n" +
+                                 started->process_->StderrText());
+    }
+    std::this_thread::sleep_for(kPollInterval);
+  }
+  *server = std::move(started);
+  return Status::OK();
+}
+
+std::unique_ptr<v1::Locator::Stub> LocatordWithHttp::NewStub() const {
+  return v1::Locator::NewStub(
+      grpc::CreateChannel(grpc_target_, grpc::InsecureChannelCredentials()));
+}
+
+JsonValue GetJson(int port, const std::string& target) {
+  HttpReply reply;
+  const Status fetched = HttpGet(port, target, &reply);
+  EXPECT_TRUE(fetched.ok()) << fetched.ToString();
+  EXPECT_EQ(reply.headers["content-type"], "application/json");
+  JsonValue json;
+  const Status parsed = ParseJson(reply.body, &json);
+  EXPECT_TRUE(parsed.ok()) << parsed.ToString() << "\n" << reply.body;
+  return json;
+}
+
+}  // namespace locator::testing

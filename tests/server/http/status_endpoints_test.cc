@@ -1,0 +1,112 @@
+#include "server/http/status_endpoints.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "server/core/dataset.h"
+#include "server/metrics/engine_collector.h"
+#include "server/metrics/metrics_text.h"
+#include "tests/server/http/json_value.h"
+#include "tests/server/http/prometheus_text.h"
+
+namespace locator {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::JsonValue;
+using testing::ParseJson;
+using testing::ParsePrometheusText;
+using testing::PrometheusText;
+
+class StatusEndpointsTest : public ::testing::Test {
+ protected:
+  StatusEndpoints Endpoints() {
+    const auto current = [this] { return engine_; };
+    auto collector = std::make_shared<EngineCollector>(current);
+    return StatusEndpoints(
+        {.current_engine = current,
+         .history = &history_,
+         .metrics_text = [collector] { return MetricsText({collector}); }});
+  }
+
+  void Load() {
+    std::unique_ptr<Engine> engine;
+    ASSERT_TRUE(
+        Engine::Create(GenerateUniform(2000, 3), EngineOptions(), &engine)
+            .ok());
+    engine_ = std::move(engine);
+  }
+
+  std::shared_ptr<Engine> engine_;
+  StatsHistory history_;
+};
+
+TEST_F(StatusEndpointsTest, WhileLoadingTheApiIs503AndMetricsSayNotLoaded) {
+  const StatusEndpoints endpoints = Endpoints();
+  for (const char* path : {"/api/stats", "/api/edges"}) {
+    const HttpResponse reply = endpoints.Handle(path);
+    EXPECT_EQ(reply.status, 503u) << path;
+    EXPECT_EQ(reply.content_type, "application/json");
+    EXPECT_EQ(reply.body, R"({"state":"loading"})");
+  }
+  const HttpResponse metrics = endpoints.Handle("/metrics");
+  EXPECT_EQ(metrics.status, 200u);
+  PrometheusText text;
+  ASSERT_TRUE(ParsePrometheusText(metrics.body, &text).ok()) << metrics.body;
+  EXPECT_EQ(text.Value("locator_engine_loaded"), 0);
+  EXPECT_EQ(text.Value("locator_queries_total"), std::nullopt);
+  EXPECT_EQ(endpoints.Handle("/").status, 200u);
+}
+
+TEST_F(StatusEndpointsTest, FollowsTheCurrentEngine) {
+  const StatusEndpoints endpoints = Endpoints();
+  Load();
+  LocateResult result;
+  for (int i = 0; i < 10; ++i) {
+    ASSERT_TRUE(engine_->Locate({0.1 * i, 0.5}, &result).ok());
+  }
+  history_.Record(1, 0, 0, std::chrono::system_clock::now());
+  history_.Record(1, 10, 40,
+                  std::chrono::system_clock::now() + std::chrono::seconds(1));
+  JsonValue stats;
+  ASSERT_TRUE(ParseJson(endpoints.Handle("/api/stats").body, &stats).ok());
+  EXPECT_EQ(stats["queries"].number(), 10);
+  EXPECT_EQ(stats["history"]["mean_cost"].array().at(0).number(), 4);
+  EXPECT_EQ(stats["dataset"]["source"].string(), "uniform:2000:3");
+
+  PrometheusText text;
+  ASSERT_TRUE(
+      ParsePrometheusText(endpoints.Handle("/metrics").body, &text).ok());
+  EXPECT_EQ(text.Value("locator_queries_total"), 10);
+
+  // A new engine: the same endpoints now describe it.
+  Load();
+  ASSERT_TRUE(ParseJson(endpoints.Handle("/api/stats").body, &stats).ok());
+  EXPECT_EQ(stats["queries"].number(), 0);
+  JsonValue edges;
+  ASSERT_TRUE(ParseJson(endpoints.Handle("/api/edges").body, &edges).ok());
+  EXPECT_EQ(edges["segments"].array().size(), engine_->EdgeSample().size());
+}
+
+TEST_F(StatusEndpointsTest, ServesTheEmbeddedPage) {
+  const StatusEndpoints endpoints = Endpoints();
+  const HttpResponse index = endpoints.Handle("/");
+  EXPECT_EQ(index.content_type, "text/html; charset=utf-8");
+  EXPECT_THAT(index.body, HasSubstr("<script src=\"app.js\">"));
+  EXPECT_EQ(endpoints.Handle("/index.html").body, index.body);
+  const HttpResponse script = endpoints.Handle("/app.js");
+  EXPECT_EQ(script.status, 200u);
+  EXPECT_EQ(script.content_type, "text/javascript; charset=utf-8");
+  EXPECT_THAT(script.body, HasSubstr("/api/stats"));
+  EXPECT_EQ(endpoints.Handle("/style.css").content_type,
+            "text/css; charset=utf-8");
+  for (const char* path : {"/nope", "/api/", "/app.js/", "//app.js", ""}) {
+    EXPECT_EQ(endpoints.Handle(path).status, 404u) << path;
+  }
+}
+
+}  // namespace
+}  // namespace locator

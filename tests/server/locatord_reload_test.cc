@@ -1,0 +1,243 @@
+// Reload and SIGHUP end to end: the new dataset is served exactly (CGAL
+// agrees), a bad file keeps the old one serving and names file:line, calls
+// in flight during a reload succeed and finish on the old engine, and a
+// second reload while one runs is refused.
+
+#include <gmock/gmock.h>
+#include <grpcpp/grpcpp.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <span>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/core/scratch_dir.h"
+#include "tests/server/e2e_support.h"
+
+namespace locator::e2e {
+namespace {
+
+using test::ScratchDir;
+using ::testing::HasSubstr;
+using testing::ServerProcess;
+
+// Building this takes long enough to be caught in the act.
+constexpr char kBigDataset[] = "uniform:400000:5";
+
+// Writes `n` uniform points of the unit square with values TestValue(p) as
+// CSV to `path`, replacing it atomically.
+void WriteCsv(const std::string& path, size_t n, uint64_t seed) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out.precision(17);
+    out << "x,y,z\n";
+    for (const Point2& p : GenerateUniform(n, seed).points) {
+      out << p.x << "," << p.y << "," << TestValue(p) << "\n";
+    }
+  }
+  ASSERT_EQ(std::rename(temporary.c_str(), path.c_str()), 0);
+}
+
+grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
+                    v1::ReloadResponse* response) {
+  grpc::ClientContext context;
+  v1::ReloadRequest request;
+  request.set_dataset(dataset);
+  return stub.Reload(&context, request, response);
+}
+
+// Checks unary and batch answers for points in and around the unit square
+// against CGAL on `dataset_path`.
+void ExpectAnswersAgree(v1::Locator::Stub& stub,
+                        const std::string& dataset_path) {
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(dataset_path, &reference).ok());
+  std::vector<Point2> queries =
+      GenerateUniform(2000, 77).points;  // inside the hull, mostly
+  for (Point2& q : queries) q = {1.2 * q.x - 0.1, 1.2 * q.y - 0.1};
+  grpc::ClientContext context;
+  v1::LocateBatchResponse batch;
+  ASSERT_TRUE(
+      stub.LocateBatch(&context, BatchRequestFor(queries), &batch).ok());
+  std::vector<LocateResult> answers;
+  for (size_t row = 0; row < queries.size(); ++row) {
+    answers.push_back(FromBatchRow(batch, row));
+  }
+  EXPECT_EQ(reference->Disagreements(queries, answers, false), "");
+  for (size_t i = 0; i < 100; ++i) {
+    v1::LocateResponse unary;
+    ASSERT_TRUE(LocateOne(stub, queries[i], &unary).ok());
+    const LocateResult answer = FromLocateResponse(unary);
+    EXPECT_EQ(reference->Disagreements(std::span(&queries[i], 1),
+                                       std::span(&answer, 1), true),
+              "");
+  }
+}
+
+TEST(LocatordReloadTest, TheNewDatasetIsServedExactly) {
+  const TestDatasetFile first;
+  ScratchDir dir;
+  const std::string second = dir.path() + "/second.csv";
+  WriteCsv(second, 2000, 9);
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(first.path(), {}, &server).ok());
+  auto stub = NewStub(*server);
+  EXPECT_EQ(GetStats(*stub).generation(), 1u);
+
+  v1::ReloadResponse response;
+  const grpc::Status status = Reload(*stub, second, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.generation(), 2u);
+  EXPECT_EQ(response.dataset().source(), second);
+  EXPECT_EQ(response.dataset().input_points(), 2000u);
+  const v1::GetStatsResponse stats = GetStats(*stub);
+  EXPECT_EQ(stats.generation(), 2u);
+  EXPECT_FALSE(stats.reload_in_progress());
+  EXPECT_EQ(stats.dataset().source(), second);
+  EXPECT_EQ(stats.queries_served(), 0u);
+  ExpectAnswersAgree(*stub, second);
+}
+
+TEST(LocatordReloadTest, ABadFileKeepsTheOldDatasetServing) {
+  const TestDatasetFile first;
+  ScratchDir dir;
+  const std::string bad = dir.path() + "/bad.csv";
+  std::ofstream(bad) << "x,y,z\n0,0,1\n1,oops,2\n";
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(first.path(), {}, &server).ok());
+  auto stub = NewStub(*server);
+
+  v1::ReloadResponse response;
+  grpc::Status status = Reload(*stub, bad, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(status.error_message(), HasSubstr(bad + ":3"));
+  status = Reload(*stub, dir.path() + "/missing.csv", &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::NOT_FOUND);
+
+  const v1::GetStatsResponse stats = GetStats(*stub);
+  EXPECT_EQ(stats.generation(), 1u);
+  EXPECT_EQ(stats.dataset().source(), first.path());
+  v1::LocateResponse located;
+  EXPECT_TRUE(LocateOne(*stub, {30.5, 20.25}, &located).ok());
+  EXPECT_THAT(server->StderrText(),
+              HasSubstr("reload failed, still serving the previous dataset"));
+}
+
+TEST(LocatordReloadTest, SighupReloadsTheConfiguredDataset) {
+  ScratchDir dir;
+  const std::string path = dir.path() + "/points.csv";
+  WriteCsv(path, 1500, 3);
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(path, {}, &server).ok());
+  auto stub = NewStub(*server);
+  EXPECT_EQ(GetStats(*stub).dataset().input_points(), 1500u);
+
+  WriteCsv(path, 2500, 4);
+  server->SendSignal(SIGHUP);
+  const v1::GetStatsResponse stats = WaitForStats(
+      *stub, [](const v1::GetStatsResponse& s) { return s.generation() == 2; });
+  ASSERT_EQ(stats.generation(), 2u) << server->StderrText();
+  EXPECT_EQ(stats.dataset().input_points(), 2500u);
+  EXPECT_THAT(server->StderrText(), HasSubstr("SIGHUP: reloading " + path));
+  // The outcome is logged just after the new engine is published.
+  const std::string logged = "reloaded: serving " +
+                             std::to_string(stats.dataset().triangles()) +
+                             " triangles as generation 2";
+  EXPECT_THAT(server->WaitForStderr(logged, std::chrono::seconds(30)),
+              HasSubstr(logged));
+  ExpectAnswersAgree(*stub, path);
+}
+
+TEST(LocatordReloadTest, CallsInFlightFinishOnTheOldEngine) {
+  const TestDatasetFile first;
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(first.path(), &reference).ok());
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(first.path(), {}, &server).ok());
+  auto stub = NewStub(*server);
+  const std::vector<Point2> queries = TestQueries();
+
+  // A stream opened before the reload keeps the engine it started with.
+  grpc::ClientContext stream_context;
+  auto stream = stub->LocateStream(&stream_context);
+  size_t next = 0;
+  std::string stream_problems;
+  auto round_trips = [&](size_t count) {
+    for (size_t k = 0; k < count; ++k, ++next) {
+      const Point2& q = queries[next % queries.size()];
+      v1::LocateResponse response;
+      if (!stream->Write(LocateRequestFor(q)) || !stream->Read(&response)) {
+        stream_problems += "stream broke\n";
+        return;
+      }
+      const LocateResult answer = FromLocateResponse(response);
+      stream_problems += reference->Disagreements(std::span(&q, 1),
+                                                  std::span(&answer, 1), true);
+    }
+  };
+  round_trips(20);
+
+  grpc::Status reload_status;
+  v1::ReloadResponse reload_response;
+  std::thread reload([&] {
+    auto reload_stub = NewStub(*server);
+    reload_status = Reload(*reload_stub, kBigDataset, &reload_response);
+  });
+  // Batches from other clients keep running through the swap.
+  std::atomic<bool> swapped{false};
+  std::atomic<int> batches_ok{0};
+  std::vector<grpc::Status> batch_failures(2);
+  std::vector<std::thread> clients;
+  for (grpc::Status& failure : batch_failures) {
+    clients.emplace_back([&] {
+      auto client_stub = NewStub(*server);
+      const v1::LocateBatchRequest request =
+          BatchRequestFor(std::span(queries).subspan(0, 500));
+      while (!swapped.load()) {
+        grpc::ClientContext context;
+        v1::LocateBatchResponse response;
+        failure = client_stub->LocateBatch(&context, request, &response);
+        if (!failure.ok()) return;
+        ++batches_ok;
+      }
+    });
+  }
+
+  const v1::GetStatsResponse building = WaitForStats(
+      *stub,
+      [](const v1::GetStatsResponse& s) { return s.reload_in_progress(); });
+  ASSERT_TRUE(building.reload_in_progress());
+  v1::ReloadResponse refused_response;
+  const grpc::Status refused = Reload(*stub, "", &refused_response);
+  EXPECT_EQ(refused.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_EQ(refused.error_message(), "reload in progress");
+  round_trips(20);
+
+  reload.join();
+  swapped.store(true);
+  for (std::thread& client : clients) client.join();
+  ASSERT_TRUE(reload_status.ok()) << reload_status.error_message();
+  EXPECT_EQ(reload_response.generation(), 2u);
+  EXPECT_EQ(GetStats(*stub).dataset().source(), kBigDataset);
+  for (const grpc::Status& failure : batch_failures) {
+    EXPECT_TRUE(failure.ok()) << failure.error_message();
+  }
+  EXPECT_GT(batches_ok.load(), 0);
+
+  // After the swap the old stream still answers from the old dataset.
+  round_trips(20);
+  stream->WritesDone();
+  const grpc::Status stream_status = stream->Finish();
+  EXPECT_TRUE(stream_status.ok()) << stream_status.error_message();
+  EXPECT_EQ(stream_problems, "");
+}
+
+}  // namespace
+}  // namespace locator::e2e
