@@ -80,13 +80,14 @@ build_tree() {
 # from code it did not instrument (gRPC, abseil, protobuf; see the top-level
 # CMakeLists.txt for why the gRPC layer is not instrumented): such accesses
 # have no visible synchronization, so each one would be a false report.
+# tests/sanitizers/tsan.supp holds the (third-party) suppressions.
 sanitized_ctest() {
   local dir=$1 reports="$PWD/$1/sanitizer-reports" status=0
   shift
   rm -rf "$reports" && mkdir -p "$reports" || return 1
   ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_path=$reports/asan" \
     UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_path=$reports/ubsan" \
-    TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:log_path=$reports/tsan" \
+    TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:log_path=$reports/tsan:suppressions=$PWD/tests/sanitizers/tsan.supp" \
     ctest --test-dir "$dir" --output-on-failure -j"$JOBS" --timeout 900 "$@" ||
     status=1
   if compgen -G "$reports/*" > /dev/null; then
