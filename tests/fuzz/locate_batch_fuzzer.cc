@@ -21,6 +21,7 @@
 #include <grpcpp/grpcpp.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -72,7 +73,7 @@ struct Fixture {
   std::unique_ptr<Triangulation> reference;
   std::vector<std::unique_ptr<Engine>> engines;  // one per kStrategies entry
   std::vector<std::pair<Point2, Point2>> edges;  // every finite edge
-  BatchLocator service{1, kMaxBatchPoints};
+  BatchLocator service{1, kMaxBatchPoints, std::chrono::milliseconds(0)};
 };
 
 void Fail(const std::string& what) {
