@@ -79,21 +79,26 @@ void LocateStreamReactor::OnDone() {
     std::lock_guard<std::mutex> lock(mu_);
     done_ = true;
     delete_now = DoneLocked();
+    // Counted like an alarm while the alarms are cancelled below: their
+    // callbacks run on other threads, and the last one to run deletes the
+    // reactor, which must not happen while this thread still touches it.
+    if (!delete_now) ++alarms_pending_;
   }
   if (delete_now) {
     delete this;
     return;
   }
-  // The pending callbacks run with fired == false; the last one deletes.
+  // The pending callbacks run with fired == false.
   deadline_alarm_.Cancel();
   stuck_write_alarm_.Cancel();
+  ReleaseAlarm();
 }
 
 void LocateStreamReactor::OnDeadline(bool fired) {
   Actions actions;
   {
     std::lock_guard<std::mutex> lock(mu_);
-    if (fired && !finished_) {
+    if (fired && !finished_ && !done_) {
       if (!outcome_) outcome_ = deadline_.ExceededStatus("streaming");
       // Answers not yet being written are dropped: the stream is over.
       answers_.resize(writing_ ? 1 : 0);
@@ -116,7 +121,7 @@ void LocateStreamReactor::OnStuckWrite(bool fired) {
     // Under mu_, so that OnDone() (which ends the context's life) waits.
     // TryCancel() runs no reaction on this thread: gRPC schedules them.
     std::lock_guard<std::mutex> lock(mu_);
-    if (fired && !finished_) context_->TryCancel();
+    if (fired && !finished_ && !done_) context_->TryCancel();
   }
   ReleaseAlarm();
 }
