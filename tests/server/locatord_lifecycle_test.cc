@@ -141,15 +141,6 @@ TEST(LocatordRetuneTest, PeriodicRetunesAndStatsLines) {
   EXPECT_THAT(server->StderrText(), HasSubstr("stats: queries="));
 }
 
-// Waits until the server's stderr contains `text`.
-void WaitForStderr(const ServerProcess& server, const std::string& text) {
-  const auto deadline = std::chrono::steady_clock::now() + kExitTimeout;
-  while (server.StderrText().find(text) == std::string::npos &&
-         std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-}
-
 // Locate with a deadline, so that a refusal can never hang the test.
 grpc::Status LocateWithin(v1::Locator::Stub& stub,
                           std::chrono::seconds deadline) {
@@ -229,7 +220,7 @@ TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
   // UNAVAILABLE (so a client may retry them elsewhere), on the connection
   // it already had and on a new one, while the stream is still open. (Not
   // CANCELLED, as gRPC's own shutdown would answer some: see DrainGate.)
-  WaitForStderr(*server, "draining in-flight calls");
+  server->WaitForStderr("draining in-flight calls", kExitTimeout);
   for (const grpc::Status& late :
        {LocateWithin(*connected, std::chrono::seconds(10)),
         LocateWithin(*NewStub(*server), std::chrono::seconds(10))}) {

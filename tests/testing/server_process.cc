@@ -195,13 +195,13 @@ std::string ServerProcess::StderrText() const {
   return text.str();
 }
 
-std::string ServerProcess::WaitForStderr(const std::string& text,
-                                         std::chrono::milliseconds timeout) {
+std::string ServerProcess::WaitForStderr(
+    const std::string& text, std::chrono::milliseconds timeout) const {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   std::string seen = StderrText();
   while (seen.find(text) == std::string::npos &&
          std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
     seen = StderrText();
   }
   return seen;

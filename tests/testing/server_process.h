@@ -84,7 +84,7 @@ class ServerProcess {
   // Polls stderr until it contains `text` or `timeout` passes; returns
   // StderrText() either way (for the caller's assertion and message).
   std::string WaitForStderr(const std::string& text,
-                            std::chrono::milliseconds timeout);
+                            std::chrono::milliseconds timeout) const;
 
  private:
   ServerProcess() = default;
