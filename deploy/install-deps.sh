@@ -13,6 +13,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   prometheus-cpp-dev
   python3 python3-grpcio python3-protobuf
+  libssl-dev
   chromium nginx openssl curl
   clang libclang-rt-14-dev
 )
