@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "server/credential_files.h"
+#include "common/credential_files.h"
 
 namespace po = boost::program_options;
 

@@ -19,7 +19,7 @@
 #include <memory>
 #include <string>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string_view>
 
-#include "client/str_cat.h"
+#include "common/str_cat.h"
 
 namespace locator {
 namespace {

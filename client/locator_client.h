@@ -25,8 +25,8 @@
 
 #include "client/channel_options.h"
 #include "client/health_check.h"
+#include "common/geometry.h"
 #include "locator/v1/locator.grpc.pb.h"
-#include "server/core/geometry.h"
 
 namespace locator {
 
@@ -34,8 +34,6 @@ namespace locator {
 void SetDeadlineFromNow(grpc::ClientContext* context,
                         std::chrono::milliseconds timeout);
 
-// The canonical upper-case name of `code` ("UNAVAILABLE", ...).
-std::string_view GrpcCodeName(grpc::StatusCode code);
 // "<CODE>: <message>", as the CLI and the load driver print a failed call.
 std::string DescribeRpcError(const grpc::Status& status);
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Measures the service end to end on this machine, in one run: locatord on
 # 1M uniform points against locator-noop-server (same message shapes, no
-# geometry), with locator-load on the same machine. Prints each run's report
-# and a summary of the ratios the service is held to:
+# geometry), with locator-load on the same machine. Writes each run's JSON
+# report to $OUT_DIR (default $BUILD_DIR/bench-service) and prints a summary
+# table of the ratios the service is held to:
 #   unary closed loop (64 in flight)      >= 12k calls/s, >= 0.8x no-op
 #   LocateBatch, 10^4-point batches       >= 1.5M points/s, >= 2x nested batch
 #   open loop at 5000 calls/s             p99 <= 2 ms
@@ -11,6 +12,7 @@ cd "$(dirname "$0")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
 DURATION="${DURATION:-10}"
 WORKLOAD="${WORKLOAD:-1-cluster}"
+OUT_DIR="${OUT_DIR:-$BUILD_DIR/bench-service}"
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)" \
   --target locatord locator-noop-server locator locator-load > /dev/null
@@ -40,11 +42,12 @@ until "$BUILD_DIR"/client/locator --target "$real" health > /dev/null 2>&1; do
   sleep 0.5
 done
 
+mkdir -p "$OUT_DIR"
 load() {  # name target flags...
-  echo "== $1" >&2
+  echo "bench-service: $1 (${DURATION} s) -> $OUT_DIR/$1.json"
   "$BUILD_DIR"/client/locator-load --target "$2" --workload "$WORKLOAD" \
     --duration "$DURATION" --warmup 2 --format json "${@:3}" \
-    | tee "$tmp/$1.json" >&2
+    > "$OUT_DIR/$1.json"
 }
 load unary "$real" --mode unary --concurrency 64
 load unary-noop "$noop" --mode unary --concurrency 64
@@ -52,13 +55,14 @@ load batch "$real" --mode batch --batch-size 10000 --concurrency 4
 load nested-batch-noop "$noop" --mode nested-batch --batch-size 10000 --concurrency 4
 load open-loop "$real" --mode unary --rate 5000
 
-python3 - "$tmp" <<'PY'
+python3 - "$OUT_DIR" <<'PY'
 import json, sys
 d = {k: json.load(open(f"{sys.argv[1]}/{k}.json")) for k in
      ["unary", "unary-noop", "batch", "nested-batch-noop", "open-loop"]}
 def calls(k): return d[k]["calls_per_second"]
 def points(k): return d[k]["points_per_second"]
 p99 = d["open-loop"]["latency_us"]["p99"]
+print("\n== summary")
 print(f"unary      {calls('unary'):10.0f} calls/s  no-op {calls('unary-noop'):10.0f}  ratio {calls('unary')/calls('unary-noop'):.2f}")
 print(f"batch      {points('batch'):10.0f} points/s nested no-op {points('nested-batch-noop'):10.0f}  ratio {points('batch')/points('nested-batch-noop'):.2f}")
 print(f"open loop  5000 calls/s: p99 {p99/1000:.2f} ms")

@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
 # README command 2, and what CI runs (.ci/run): installs what is missing,
 # builds, and runs every test. Then, each in its own build tree:
-#   asan  the whole suite under AddressSanitizer + UBSan (build-asan)
-#   tsan  the concurrency and end-to-end tests under ThreadSanitizer
-#         (build-tsan; only their executables and the servers they spawn)
-#   fuzz  every libFuzzer target for LOCATOR_FUZZ_SECONDS (build-fuzz, clang)
-#   soak  deploy/soak.sh for LOCATOR_SOAK_SECONDS on the plain build
-# Any test failure, sanitizer report (from a test or from a server it
-# started), fuzzer crash or soak failure fails the run. Stage timings are
-# printed at the end, pass or fail.
+#   check  one clang tree with AddressSanitizer + UBSan, libFuzzer coverage
+#          and the thread-safety analysis as errors (build-check): the whole
+#          suite under ASAN+UBSAN, then every fuzzer for LOCATOR_FUZZ_SECONDS
+#   tsan   the concurrency tests and the server's end-to-end tests under
+#          ThreadSanitizer (build-tsan; only their executables and the
+#          servers they spawn; label tsan)
+#   soak   deploy/soak.sh for LOCATOR_SOAK_SECONDS on the plain build
+# Any test failure, thread-safety error, sanitizer report (from a test or
+# from a server it started), fuzzer crash or soak failure fails the run.
+# Stage timings are printed at the end, pass or fail.
 #
 # Environment knobs (defaults are what CI runs):
 #   BUILD_DIR=build  LOCATOR_CI_SANITIZERS=1  LOCATOR_CI_FUZZ=1
 #   LOCATOR_CI_SOAK=1  LOCATOR_FUZZ_SECONDS=30  LOCATOR_SOAK_SECONDS=60
+# ccache is used when it is installed (it is not installed by this script).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,11 +26,14 @@ SOAK="${LOCATOR_CI_SOAK:-1}"
 FUZZ_SECONDS="${LOCATOR_FUZZ_SECONDS:-30}"
 SOAK_SECONDS="${LOCATOR_SOAK_SECONDS:-60}"
 JOBS="$(nproc)"
-# Sanitizer trees: optimized like the real build, with line tables for
-# readable reports, and without locator-bench (a program, not a test).
-SANITIZER_FLAGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo
-  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
-  -DLOCATOR_BUILD_BENCH=OFF)
+# Sanitizer trees: -O1 (the sanitizers' own advice; half the compile time
+# of -O2), no debug info beyond clang's line tables, and no locator-bench (a
+# program, not a test).
+SANITIZER_FLAGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DLOCATOR_BUILD_BENCH=OFF)
+LAUNCHER=()
+if command -v ccache > /dev/null; then
+  LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
 
 # Each stage's wall time, and the CPU time (user + sys) of everything it ran:
 # on a shared machine the CPU time tells what a dedicated one would need.
@@ -68,7 +74,7 @@ build_tree() {
   local dir=$1 targets=$2
   shift 2
   # shellcheck disable=SC2086  # TARGETS is a list
-  cmake -S . -B "$dir" -G Ninja "$@" &&
+  cmake -S . -B "$dir" -G Ninja "${LAUNCHER[@]}" "$@" &&
     cmake --build "$dir" -j"$JOBS" --target $targets
 }
 
@@ -100,9 +106,9 @@ sanitized_ctest() {
 
 # fuzz_run: every fuzzer for its bounded time, then how many inputs each ran.
 fuzz_run() {
-  ctest --test-dir build-fuzz -L fuzz --output-on-failure -j"$JOBS" &&
+  ctest --test-dir build-check -L fuzz --output-on-failure -j"$JOBS" &&
     grep -E '^[0-9]+/[0-9]+ Test: |^Done [0-9]+ runs' \
-      build-fuzz/Testing/Temporary/LastTest.log
+      build-check/Testing/Temporary/LastTest.log
 }
 
 stage deps bash deploy/install-deps.sh
@@ -111,19 +117,18 @@ stage test ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS" \
   --timeout 300
 
 if [ "$SANITIZERS" != 0 ]; then
-  stage asan-build build_tree build-asan all "${SANITIZER_FLAGS[@]}" \
-    -DLOCATOR_SANITIZER=address
-  stage asan-test sanitized_ctest build-asan
-  stage tsan-build build_tree build-tsan "tests-concurrency tests-e2e" \
-    "${SANITIZER_FLAGS[@]}" -DLOCATOR_SANITIZER=thread
-  stage tsan-test sanitized_ctest build-tsan -L 'concurrency|e2e'
-fi
-
-if [ "$FUZZ" != 0 ]; then
-  stage fuzz-build build_tree build-fuzz fuzzers "${SANITIZER_FLAGS[@]}" \
-    -DCMAKE_CXX_COMPILER=clang++ -DLOCATOR_FUZZ=ON -DLOCATOR_BUILD_TESTS=OFF \
+  stage check-build build_tree build-check "all fuzzers" "${SANITIZER_FLAGS[@]}" \
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
+    -DCMAKE_CXX_COMPILER=clang++ -DLOCATOR_FUZZ=ON -DLOCATOR_THREAD_SAFETY=ON \
     -DLOCATOR_FUZZ_SECONDS="$FUZZ_SECONDS"
-  stage fuzz-run fuzz_run
+  stage asan-test sanitized_ctest build-check -LE fuzz
+  if [ "$FUZZ" != 0 ]; then
+    stage fuzz-run fuzz_run
+  fi
+  stage tsan-build build_tree build-tsan tests-tsan "${SANITIZER_FLAGS[@]}" \
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG" \
+    -DLOCATOR_SANITIZER=thread
+  stage tsan-test sanitized_ctest build-tsan -L tsan
 fi
 
 if [ "$SOAK" != 0 ]; then

@@ -23,10 +23,10 @@
 #include <span>
 #include <vector>
 
+#include "common/geometry.h"
+#include "common/status.h"
 #include "locator/v1/locator.pb.h"
-#include "server/core/geometry.h"
 #include "server/core/locate_result.h"
-#include "server/core/status.h"
 #include "server/worker_pool.h"
 
 namespace locator {

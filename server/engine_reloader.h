@@ -19,8 +19,8 @@
 #include <string>
 #include <thread>
 
+#include "common/status.h"
 #include "server/core/engine.h"
-#include "server/core/status.h"
 
 namespace locator {
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

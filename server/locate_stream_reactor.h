@@ -37,11 +37,11 @@
 #include <mutex>
 #include <optional>
 
+#include "common/geometry.h"
+#include "common/status.h"
 #include "locator/v1/locator.pb.h"
 #include "server/call_deadline.h"
-#include "server/core/geometry.h"
 #include "server/core/locate_result.h"
-#include "server/core/status.h"
 
 namespace locator {
 

@@ -28,11 +28,11 @@
 #include <mutex>
 #include <string>
 
+#include "common/status.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/access_policy.h"
 #include "server/batch_locator.h"
 #include "server/core/engine.h"
-#include "server/core/status.h"
 #include "server/drain_gate.h"
 #include "server/engine_reloader.h"
 #include "server/security_config.h"

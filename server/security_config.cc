@@ -4,7 +4,7 @@
 #include <limits>
 #include <utility>
 
-#include "server/credential_files.h"
+#include "common/credential_files.h"
 #include "server/flag_parsing.h"
 
 namespace locator {

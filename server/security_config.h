@@ -16,7 +16,7 @@
 #include <chrono>
 #include <string>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

@@ -15,9 +15,9 @@
 #include <string_view>
 #include <thread>
 
+#include "common/status.h"
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
-#include "server/core/status.h"
 #include "server/security_config.h"
 
 namespace locator {

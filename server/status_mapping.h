@@ -13,7 +13,7 @@
 
 #include <string>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

@@ -13,7 +13,7 @@
 
 #include "client/load/run_budget.h"
 #include "client/locator_client.h"
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

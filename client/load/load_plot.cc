@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "client/load/svg_writer.h"
-#include "client/str_cat.h"
+#include "common/str_cat.h"
 
 namespace locator {
 namespace {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "client/str_cat.h"
+#include "common/str_cat.h"
 
 namespace locator {
 namespace {

@@ -12,8 +12,8 @@
 #include <memory>
 #include <vector>
 
-#include "bench_proto/nested_batch.grpc.pb.h"
 #include "client/load/call_starter.h"
+#include "locator/bench/v1/nested_batch.grpc.pb.h"
 
 namespace locator {
 

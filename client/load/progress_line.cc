@@ -9,7 +9,7 @@
 #include <string>
 
 #include "client/load/load_report.h"
-#include "client/str_cat.h"
+#include "common/str_cat.h"
 
 namespace locator {
 

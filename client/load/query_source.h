@@ -22,9 +22,9 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/geometry.h"
-#include "server/core/status.h"
-#include "server/core/workload.h"
+#include "common/geometry.h"
+#include "common/status.h"
+#include "common/workload.h"
 
 namespace locator {
 

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "client/locator_client.h"
+#include "common/grpc_code_name.h"
 
 namespace locator {
 

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "client/str_cat.h"
+#include "common/str_cat.h"
 
 namespace locator {
 namespace {

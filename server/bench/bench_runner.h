@@ -10,10 +10,10 @@
 #include <span>
 #include <vector>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
+#include "common/workload.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
-#include "server/core/workload.h"
 
 namespace locator::bench {
 

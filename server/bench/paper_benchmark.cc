@@ -6,12 +6,12 @@
 #include <string>
 #include <utility>
 
+#include "common/workload.h"
 #include "server/bench/bench_runner.h"
 #include "server/bench/paper_figures.h"
 #include "server/core/dataset.h"
 #include "server/core/locator_factory.h"
 #include "server/core/triangulation.h"
-#include "server/core/workload.h"
 
 namespace locator::bench {
 

@@ -5,12 +5,12 @@
 #include <memory>
 #include <string>
 
+#include "common/workload.h"
 #include "server/bench/bench_runner.h"
-#include "server/core/cgal_baselines.h"
+#include "server/bench/cgal_baselines.h"
 #include "server/core/dataset.h"
 #include "server/core/locator_factory.h"
 #include "server/core/triangulation.h"
-#include "server/core/workload.h"
 
 namespace locator::bench {
 

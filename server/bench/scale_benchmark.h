@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/status.h"
 #include "server/bench/bench_report.h"
-#include "server/core/status.h"
 #include "server/core/tuning_options.h"
 
 namespace locator::bench {

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <string_view>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "common/random.h"
 #include "server/core/dataset.h"
-#include "server/core/random.h"
 
 namespace locator {
 

@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "common/status.h"
 #include "server/core/dataset.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
-#include "server/core/status.h"
 #include "server/core/tuning_options.h"
 #include "server/core/walk_cost_histogram.h"
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

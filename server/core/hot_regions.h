@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
 #include "server/core/query_histogram.h"
 
 namespace locator {

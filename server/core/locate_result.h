@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
 
 namespace locator {
 

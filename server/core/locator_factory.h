@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/status.h"
 #include "server/core/point_locator.h"
-#include "server/core/status.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 

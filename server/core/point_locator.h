@@ -18,9 +18,9 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
+#include "common/status.h"
 #include "server/core/locate_result.h"
-#include "server/core/status.h"
 
 namespace locator {
 

@@ -19,7 +19,7 @@
 #include <memory>
 #include <vector>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
 
 namespace locator {
 

@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
 #include "server/core/query_histogram.h"
 #include "server/core/triangulation.h"
 

@@ -29,10 +29,10 @@
 #include <memory>
 #include <vector>
 
+#include "common/geometry.h"
+#include "common/status.h"
 #include "server/core/dataset.h"
-#include "server/core/geometry.h"
 #include "server/core/locate_result.h"
-#include "server/core/status.h"
 
 namespace locator {
 

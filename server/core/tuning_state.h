@@ -33,8 +33,8 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/geometry.h"
-#include "server/core/status.h"
+#include "common/geometry.h"
+#include "common/status.h"
 
 namespace locator {
 

@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <string>
 
-#include "server/core/status.h"
+#include "common/status.h"
 #include "server/core/tuning_state.h"
 
 namespace locator {

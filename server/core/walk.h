@@ -15,7 +15,7 @@
 
 #include <cstdint>
 
-#include "server/core/geometry.h"
+#include "common/geometry.h"
 #include "server/core/locate_result.h"
 #include "server/core/triangulation.h"
 

@@ -27,7 +27,7 @@
 #include <string_view>
 #include <thread>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

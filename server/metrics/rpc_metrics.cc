@@ -4,7 +4,7 @@
 #include <mutex>
 #include <utility>
 
-#include "client/locator_client.h"
+#include "common/grpc_code_name.h"
 
 namespace locator {
 namespace {

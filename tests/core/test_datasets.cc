@@ -5,8 +5,8 @@
 #include <random>
 #include <utility>
 
+#include "common/random.h"
 #include "server/core/locator_factory.h"
-#include "server/core/random.h"
 
 namespace locator::test {
 

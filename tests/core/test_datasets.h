@@ -14,13 +14,13 @@
 #include <string_view>
 #include <vector>
 
+#include "common/geometry.h"
+#include "common/workload.h"
 #include "server/core/dataset.h"
-#include "server/core/geometry.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
-#include "server/core/workload.h"
 
 namespace locator::test {
 

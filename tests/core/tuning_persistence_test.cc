@@ -16,9 +16,9 @@
 #include <thread>
 #include <vector>
 
+#include "common/workload.h"
 #include "server/core/engine.h"
 #include "server/core/file_io.h"
-#include "server/core/workload.h"
 #include "tests/core/scratch_dir.h"
 
 namespace locator {

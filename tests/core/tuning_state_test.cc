@@ -19,10 +19,10 @@
 #include <sstream>
 #include <string>
 
+#include "common/workload.h"
 #include "server/core/file_io.h"
 #include "server/core/hot_region_tuner.h"
 #include "server/core/self_tuning_locator.h"
-#include "server/core/workload.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/fuzz/tuning_state_fixture.h"
 

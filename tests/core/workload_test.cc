@@ -1,4 +1,4 @@
-#include "server/core/workload.h"
+#include "common/workload.h"
 
 #include <gtest/gtest.h>
 

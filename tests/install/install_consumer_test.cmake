@@ -30,7 +30,7 @@ endfunction()
 run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(installed
     include/locator/server/core/engine.h
-    include/locator/server/core/status.h)
+    include/locator/common/status.h)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "install: ${installed} is missing")
   endif()

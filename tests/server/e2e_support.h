@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "client/locator_client.h"
+#include "common/geometry.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/core/dataset.h"
-#include "server/core/geometry.h"
 #include "server/core/locate_result.h"
 #include "server/core/triangulation.h"
 #include "tests/testing/server_process.h"

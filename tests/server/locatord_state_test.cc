@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "server/core/workload.h"
+#include "common/workload.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "bench_proto/nested_batch.grpc.pb.h"
+#include "locator/bench/v1/nested_batch.grpc.pb.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "tests/testing/server_process.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "server/credential_files.h"
+#include "common/credential_files.h"
 #include "server/server_config.h"
 #include "tests/testing/test_pki.h"
 

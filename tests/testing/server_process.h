@@ -28,7 +28,7 @@
 
 #include "client/channel_options.h"
 #include "client/health_check.h"
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator::testing {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "client/channel_options.h"
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator::testing {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator::testing {
 

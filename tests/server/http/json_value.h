@@ -14,7 +14,7 @@
 #include <variant>
 #include <vector>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator::testing {
 

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator::testing {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "common/status.h"
 #include "locator/v1/locator.grpc.pb.h"
-#include "server/core/status.h"
 #include "tests/server/http/json_value.h"
 #include "tests/testing/server_process.h"
 

@@ -6,8 +6,8 @@
 //
 // Thread-safety: a pure function.
 
-#ifndef LOCATOR_CLIENT_STR_CAT_H_
-#define LOCATOR_CLIENT_STR_CAT_H_
+#ifndef LOCATOR_COMMON_STR_CAT_H_
+#define LOCATOR_COMMON_STR_CAT_H_
 
 #include <cstddef>
 #include <initializer_list>
@@ -27,4 +27,4 @@ inline std::string StrCat(std::initializer_list<std::string_view> pieces) {
 
 }  // namespace locator
 
-#endif  // LOCATOR_CLIENT_STR_CAT_H_
+#endif  // LOCATOR_COMMON_STR_CAT_H_

@@ -15,8 +15,8 @@
 // Thread-safety: a Workload is not thread-safe; give each thread its own
 // (different seeds give independent streams).
 
-#ifndef LOCATOR_CORE_WORKLOAD_H_
-#define LOCATOR_CORE_WORKLOAD_H_
+#ifndef LOCATOR_COMMON_WORKLOAD_H_
+#define LOCATOR_COMMON_WORKLOAD_H_
 
 #include <cstdint>
 #include <memory>
@@ -25,8 +25,8 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/geometry.h"
-#include "server/core/status.h"
+#include "common/geometry.h"
+#include "common/status.h"
 
 namespace locator {
 
@@ -79,4 +79,4 @@ std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_WORKLOAD_H_
+#endif  // LOCATOR_COMMON_WORKLOAD_H_

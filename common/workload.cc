@@ -1,9 +1,9 @@
-#include "server/core/workload.h"
+#include "common/workload.h"
 
 #include <algorithm>
 #include <array>
 
-#include "server/core/random.h"
+#include "common/random.h"
 
 namespace locator {
 namespace {

@@ -9,8 +9,8 @@
 //
 // Thread-safety: not thread-safe (the last-answer hint is state).
 
-#ifndef LOCATOR_CORE_CGAL_BASELINES_H_
-#define LOCATOR_CORE_CGAL_BASELINES_H_
+#ifndef LOCATOR_BENCH_CGAL_BASELINES_H_
+#define LOCATOR_BENCH_CGAL_BASELINES_H_
 
 #include <cstddef>
 #include <memory>
@@ -49,4 +49,4 @@ class CgalBaselines {
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_CGAL_BASELINES_H_
+#endif  // LOCATOR_BENCH_CGAL_BASELINES_H_

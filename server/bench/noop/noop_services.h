@@ -9,14 +9,14 @@
 //
 // Thread-safety: both services may serve any number of calls at once.
 
-#ifndef LOCATOR_SERVER_NOOP_SERVICES_H_
-#define LOCATOR_SERVER_NOOP_SERVICES_H_
+#ifndef LOCATOR_BENCH_NOOP_SERVICES_H_
+#define LOCATOR_BENCH_NOOP_SERVICES_H_
 
 #include <grpcpp/grpcpp.h>
 
 #include <chrono>
 
-#include "bench_proto/nested_batch.grpc.pb.h"
+#include "locator/bench/v1/nested_batch.grpc.pb.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/batch_locator.h"
 #include "server/core/locate_result.h"
@@ -68,4 +68,4 @@ class NoopNestedBatchService final
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_NOOP_SERVICES_H_
+#endif  // LOCATOR_BENCH_NOOP_SERVICES_H_

@@ -7,8 +7,8 @@
 //
 // Thread-safety: stateless functions; the caller owns the generator.
 
-#ifndef LOCATOR_CORE_RANDOM_H_
-#define LOCATOR_CORE_RANDOM_H_
+#ifndef LOCATOR_COMMON_RANDOM_H_
+#define LOCATOR_COMMON_RANDOM_H_
 
 #include <random>
 
@@ -27,4 +27,4 @@ inline double UniformDouble(std::mt19937_64& rng, double lo, double hi) {
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_RANDOM_H_
+#endif  // LOCATOR_COMMON_RANDOM_H_

@@ -8,14 +8,14 @@
 //
 // Thread-safety: free functions.
 
-#ifndef LOCATOR_SERVER_CREDENTIAL_FILES_H_
-#define LOCATOR_SERVER_CREDENTIAL_FILES_H_
+#ifndef LOCATOR_COMMON_CREDENTIAL_FILES_H_
+#define LOCATOR_COMMON_CREDENTIAL_FILES_H_
 
 #include <cstddef>
 #include <string>
 #include <string_view>
 
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 
@@ -50,4 +50,4 @@ Status ReadKeyPairFiles(const std::string& cert_path,
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_CREDENTIAL_FILES_H_
+#endif  // LOCATOR_COMMON_CREDENTIAL_FILES_H_

@@ -3,8 +3,8 @@
 // These are deliberately not CGAL types: app code (service, clients, bench
 // drivers) stays free of CGAL templates. The triangulation adapter converts.
 
-#ifndef LOCATOR_CORE_GEOMETRY_H_
-#define LOCATOR_CORE_GEOMETRY_H_
+#ifndef LOCATOR_COMMON_GEOMETRY_H_
+#define LOCATOR_COMMON_GEOMETRY_H_
 
 #include <algorithm>
 #include <cmath>
@@ -57,4 +57,4 @@ struct BoundingBox {
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_GEOMETRY_H_
+#endif  // LOCATOR_COMMON_GEOMETRY_H_

@@ -1,4 +1,4 @@
-#include "server/core/cgal_baselines.h"
+#include "server/bench/cgal_baselines.h"
 
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_hierarchy_2.h>

@@ -7,8 +7,8 @@
 //
 // Thread-safety: a Status is an immutable value; copies are independent.
 
-#ifndef LOCATOR_CORE_STATUS_H_
-#define LOCATOR_CORE_STATUS_H_
+#ifndef LOCATOR_COMMON_STATUS_H_
+#define LOCATOR_COMMON_STATUS_H_
 
 #include <string>
 #include <string_view>
@@ -74,4 +74,4 @@ std::string_view StatusCodeName(Status::Code code);
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_STATUS_H_
+#endif  // LOCATOR_COMMON_STATUS_H_

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "server/noop_services.h"
+#include "server/bench/noop/noop_services.h"
 #include "server/server_config.h"
 #include "server/server_runner.h"
 

@@ -1,4 +1,4 @@
-#include "server/noop_services.h"
+#include "server/bench/noop/noop_services.h"
 
 #include "server/locate_stream_reactor.h"
 #include "server/proto_convert.h"

@@ -1,4 +1,4 @@
-#include "server/core/status.h"
+#include "common/status.h"
 
 namespace locator {
 

@@ -1,4 +1,4 @@
-#include "server/credential_files.h"
+#include "common/credential_files.h"
 
 #include <openssl/bio.h>
 #include <openssl/err.h>
