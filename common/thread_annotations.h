@@ -22,12 +22,14 @@
 #endif
 
 // gRPC's headers bring abseil's legacy thread_annotations.h, which defines
-// GUARDED_BY, PT_GUARDED_BY, ACQUIRED_BEFORE and ACQUIRED_AFTER with the same
-// attributes; these definitions replace them, whichever comes first.
+// GUARDED_BY, PT_GUARDED_BY, ACQUIRED_BEFORE, ACQUIRED_AFTER and
+// NO_THREAD_SAFETY_ANALYSIS with the same attributes; these definitions
+// replace them, whichever comes first.
 #undef GUARDED_BY
 #undef PT_GUARDED_BY
 #undef ACQUIRED_BEFORE
 #undef ACQUIRED_AFTER
+#undef NO_THREAD_SAFETY_ANALYSIS
 
 // A class that is a lock (a "capability"), named `x` in diagnostics.
 #define CAPABILITY(x) LOCATOR_THREAD_ANNOTATION(capability(x))
