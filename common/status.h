@@ -1,9 +1,13 @@
 // Status: the outcome of a core operation, as a value (no exceptions).
 //
 // A Status is either OK or carries a code and a human-readable message that
-// names what was wrong (for dataset errors: "file:line: what"). The codes are
-// a subset of the canonical gRPC codes so that the service can map them 1:1 in
-// one place (server/status_mapping.cc); the core itself never includes gRPC.
+// names what was wrong (for dataset errors: "file:line: what"). Every code
+// but kIOError has the meaning of the canonical gRPC code of the same name;
+// kIOError (a file that exists could not be read or written) has no gRPC
+// twin. The service maps them all in one place (server/status_mapping.cc);
+// the core itself never includes gRPC.
+//
+// [[nodiscard]]: every function returning a Status must have it handled.
 //
 // Thread-safety: a Status is an immutable value; copies are independent.
 
@@ -16,7 +20,7 @@
 
 namespace locator {
 
-class Status {
+class [[nodiscard]] Status {
  public:
   enum class Code {
     kOk = 0,

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <mutex>
 #include <sstream>
 #include <string>
 #include <utility>
 
+#include "common/mutex.h"
 #include "server/call_deadline.h"
 #include "server/core/engine.h"
 #include "server/proto_convert.h"
@@ -37,11 +37,11 @@ struct BatchLocator::Call {
   std::function<bool()> keep_going;
   std::atomic<size_t> shards_left{0};
   std::atomic<uint64_t> total_cost{0};
-  std::mutex failure_mu;
-  Status failure;  // the first failing shard's status; guarded by failure_mu
+  Mutex failure_mu;
+  Status failure GUARDED_BY(failure_mu);  // the first failing shard's status
 
-  void Fail(const Status& status) {
-    std::lock_guard<std::mutex> lock(failure_mu);
+  void Fail(const Status& status) EXCLUDES(failure_mu) {
+    MutexLock lock(&failure_mu);
     if (failure.ok()) failure = status;
   }
 };
@@ -153,7 +153,7 @@ void BatchLocator::RunShard(const std::shared_ptr<Call>& call, size_t begin,
 void BatchLocator::Complete(Call* call) {
   Status failure;
   {
-    std::lock_guard<std::mutex> lock(call->failure_mu);
+    MutexLock lock(&call->failure_mu);
     failure = call->failure;
   }
   if (failure.ok()) {

@@ -12,7 +12,7 @@ EngineReloader::~EngineReloader() {
 }
 
 Status EngineReloader::Start(const std::string& dataset, Done done) {
-  std::lock_guard<std::mutex> lock(mu_);
+  MutexLock lock(&mu_);
   if (running_) return Status::FailedPrecondition("reload in progress");
   // The previous build cleared running_ before its last step, so its thread
   // has finished or is about to: reap it.
@@ -25,7 +25,7 @@ Status EngineReloader::Start(const std::string& dataset, Done done) {
     {
       // Finished before `done` answers: whoever hears of this reload may
       // start the next one at once.
-      std::lock_guard<std::mutex> lock(mu_);
+      MutexLock lock(&mu_);
       running_ = false;
     }
     done(status, status.ok() ? std::move(engine) : nullptr, generation);
@@ -34,7 +34,7 @@ Status EngineReloader::Start(const std::string& dataset, Done done) {
 }
 
 bool EngineReloader::in_progress() const {
-  std::lock_guard<std::mutex> lock(mu_);
+  MutexLock lock(&mu_);
   return running_;
 }
 

@@ -15,10 +15,10 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <thread>
 
+#include "common/mutex.h"
 #include "common/status.h"
 #include "server/core/engine.h"
 
@@ -48,16 +48,16 @@ class EngineReloader {
   // engine if the build succeeds, marks the reload finished and then calls
   // `done` (which must not call Start()). FailedPrecondition "reload in
   // progress" (and `done` is never called) if a build is running.
-  Status Start(const std::string& dataset, Done done);
+  Status Start(const std::string& dataset, Done done) EXCLUDES(mu_);
   // Whether a build is running.
-  bool in_progress() const;
+  bool in_progress() const EXCLUDES(mu_);
 
  private:
   const Build build_;
   const Publish publish_;
-  mutable std::mutex mu_;
-  bool running_ = false;  // guarded by mu_
-  std::thread worker_;    // guarded by mu_; the last build's thread
+  mutable Mutex mu_;
+  bool running_ GUARDED_BY(mu_) = false;
+  std::thread worker_ GUARDED_BY(mu_);  // the last build's thread
 };
 
 }  // namespace locator

@@ -18,7 +18,7 @@ LocateStreamReactor::LocateStreamReactor(
     // what locate_ refers to) through mu_, like all other state. gRPC orders
     // them after it too, but through synchronization ThreadSanitizer cannot
     // see.
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     reading_ = true;
     if (deadline_.ServerEnforced()) alarms_pending_ = 1;
   }
@@ -33,7 +33,7 @@ LocateStreamReactor::LocateStreamReactor(
 void LocateStreamReactor::OnReadDone(bool ok) {
   Actions actions;
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     reading_ = false;
     if (!ok) {
       // The client half-closed (or the call died, in which case the status
@@ -57,7 +57,7 @@ void LocateStreamReactor::OnReadDone(bool ok) {
 void LocateStreamReactor::OnWriteDone(bool ok) {
   Actions actions;
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     writing_ = false;
     answers_.pop_front();
     if (!ok) {
@@ -76,7 +76,7 @@ void LocateStreamReactor::OnWriteDone(bool ok) {
 void LocateStreamReactor::OnDone() {
   bool delete_now;
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     done_ = true;
     delete_now = DoneLocked();
     // Counted like an alarm while the alarms are cancelled below: their
@@ -97,7 +97,7 @@ void LocateStreamReactor::OnDone() {
 void LocateStreamReactor::OnDeadline(bool fired) {
   Actions actions;
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     if (fired && !finished_ && !done_) {
       if (!outcome_) outcome_ = deadline_.ExceededStatus("streaming");
       // Answers not yet being written are dropped: the stream is over.
@@ -120,7 +120,7 @@ void LocateStreamReactor::OnStuckWrite(bool fired) {
   {
     // Under mu_, so that OnDone() (which ends the context's life) waits.
     // TryCancel() runs no reaction on this thread: gRPC schedules them.
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     if (fired && !finished_ && !done_) context_->TryCancel();
   }
   ReleaseAlarm();
@@ -129,7 +129,7 @@ void LocateStreamReactor::OnStuckWrite(bool fired) {
 void LocateStreamReactor::ReleaseAlarm() {
   bool delete_now;
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     --alarms_pending_;
     delete_now = DoneLocked();
   }

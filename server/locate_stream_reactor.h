@@ -21,8 +21,8 @@
 //
 // Owns itself: deletes itself once OnDone() has run and no alarm callback
 // is pending. Thread-safety: gRPC may run the read and write reactions and
-// the alarm callbacks concurrently; all state is guarded by mu_, and gRPC
-// operations are started after mu_ is released.
+// the alarm callbacks concurrently; the call's state is guarded by mu_, and
+// gRPC operations are started after mu_ is released.
 
 #ifndef LOCATOR_SERVER_LOCATE_STREAM_REACTOR_H_
 #define LOCATOR_SERVER_LOCATE_STREAM_REACTOR_H_
@@ -34,10 +34,10 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
-#include <mutex>
 #include <optional>
 
 #include "common/geometry.h"
+#include "common/mutex.h"
 #include "common/status.h"
 #include "locator/v1/locator.pb.h"
 #include "server/call_deadline.h"
@@ -61,9 +61,9 @@ class LocateStreamReactor final
                       std::chrono::milliseconds default_deadline,
                       LocateFn locate);
 
-  void OnReadDone(bool ok) override;
-  void OnWriteDone(bool ok) override;
-  void OnDone() override;
+  void OnReadDone(bool ok) override EXCLUDES(mu_);
+  void OnWriteDone(bool ok) override EXCLUDES(mu_);
+  void OnDone() override EXCLUDES(mu_);
 
  private:
   // The gRPC operations one reaction decided on, started once mu_ is free.
@@ -73,34 +73,37 @@ class LocateStreamReactor final
     std::optional<grpc::Status> finish;
   };
 
-  // Under mu_: starts the next write if none is in flight, resumes reading
-  // if the queue has room, and finishes once the outcome is known and every
-  // answer before it is written.
-  Actions NextActionsLocked();
-  void Start(const Actions& actions);
+  // Starts the next write if none is in flight, resumes reading if the
+  // queue has room, and finishes once the outcome is known and every answer
+  // before it is written.
+  Actions NextActionsLocked() REQUIRES(mu_);
+  void Start(const Actions& actions) EXCLUDES(mu_);
   // Alarm callbacks: `fired` is false when the alarm was cancelled.
-  void OnDeadline(bool fired);
-  void OnStuckWrite(bool fired);
+  void OnDeadline(bool fired) EXCLUDES(mu_);
+  void OnStuckWrite(bool fired) EXCLUDES(mu_);
   // Ends an alarm callback: deletes the reactor if it was the last thing
   // keeping it.
-  void ReleaseAlarm();
-  // Under mu_: whether the reactor may be deleted now.
-  bool DoneLocked() const { return done_ && alarms_pending_ == 0; }
+  void ReleaseAlarm() EXCLUDES(mu_);
+  // Whether the reactor may be deleted now.
+  bool DoneLocked() const REQUIRES(mu_) {
+    return done_ && alarms_pending_ == 0;
+  }
 
   grpc::CallbackServerContext* const context_;
   const CallDeadline deadline_;
   const LocateFn locate_;
   v1::LocateRequest request_;  // filled by the single outstanding read
 
-  std::mutex mu_;
-  std::deque<v1::LocateResponse> answers_;  // front is in flight if writing_
-  bool writing_ = false;
-  bool reading_ = false;  // a read is outstanding
+  Mutex mu_;
+  // The front is in flight if writing_.
+  std::deque<v1::LocateResponse> answers_ GUARDED_BY(mu_);
+  bool writing_ GUARDED_BY(mu_) = false;
+  bool reading_ GUARDED_BY(mu_) = false;  // a read is outstanding
   // The stream's outcome, set once no more points will be read.
-  std::optional<grpc::Status> outcome_;
-  bool finished_ = false;
-  bool done_ = false;       // OnDone() has run
-  int alarms_pending_ = 0;  // alarm callbacks still to run
+  std::optional<grpc::Status> outcome_ GUARDED_BY(mu_);
+  bool finished_ GUARDED_BY(mu_) = false;
+  bool done_ GUARDED_BY(mu_) = false;       // OnDone() has run
+  int alarms_pending_ GUARDED_BY(mu_) = 0;  // alarm callbacks still to run
   grpc::Alarm deadline_alarm_;
   grpc::Alarm stuck_write_alarm_;
 };

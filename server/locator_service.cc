@@ -52,13 +52,13 @@ LocatorService::LocatorService(const LocatorServiceOptions& options)
           }) {}
 
 uint64_t LocatorService::Publish(std::shared_ptr<Engine> engine) {
-  std::lock_guard<std::mutex> lock(engine_mu_);
+  MutexLock lock(&engine_mu_);
   engine_ = std::move(engine);
   return ++generation_;
 }
 
 std::shared_ptr<Engine> LocatorService::engine() const {
-  std::lock_guard<std::mutex> lock(engine_mu_);
+  MutexLock lock(&engine_mu_);
   return engine_;
 }
 
@@ -83,7 +83,7 @@ grpc::Status LocatorService::Admit(const grpc::CallbackServerContext& context,
     return denied;
   }
   {
-    std::lock_guard<std::mutex> lock(engine_mu_);
+    MutexLock lock(&engine_mu_);
     admission->engine = engine_;
     admission->generation = generation_;
   }

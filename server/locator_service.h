@@ -25,9 +25,9 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <string>
 
+#include "common/mutex.h"
 #include "common/status.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/access_policy.h"
@@ -63,10 +63,10 @@ class LocatorService final : public v1::Locator::CallbackService {
 
   // Starts answering with `engine`; calls already running keep the engine
   // they started with. Returns its generation.
-  uint64_t Publish(std::shared_ptr<Engine> engine);
+  uint64_t Publish(std::shared_ptr<Engine> engine) EXCLUDES(engine_mu_);
 
   // The engine new calls use, or null while the dataset is loading.
-  std::shared_ptr<Engine> engine() const;
+  std::shared_ptr<Engine> engine() const EXCLUDES(engine_mu_);
 
   // Builds an engine for `dataset` ("": the configured one) with
   // options.build_engine on the reload thread and publishes it; then calls
@@ -121,9 +121,9 @@ class LocatorService final : public v1::Locator::CallbackService {
   const bool redact_;
   const AccessPolicy access_;
   DrainGate drain_gate_;
-  mutable std::mutex engine_mu_;
-  std::shared_ptr<Engine> engine_;  // guarded by engine_mu_
-  uint64_t generation_ = 0;         // guarded by engine_mu_
+  mutable Mutex engine_mu_;
+  std::shared_ptr<Engine> engine_ GUARDED_BY(engine_mu_);
+  uint64_t generation_ GUARDED_BY(engine_mu_) = 0;
   BatchLocator batch_locator_;
   EngineReloader reloader_;
 };

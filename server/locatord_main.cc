@@ -9,6 +9,7 @@
 
 #include <boost/asio/post.hpp>
 #include <chrono>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -178,6 +179,15 @@ void ServeOrExit(const Status& built, const Engine* engine,
   StartPeriodicWork(config, service, status_server, runner);
 }
 
+// Ends the process once ServerRunner::Run() has returned `exit_code`: the
+// log streams are flushed, and nothing still alive is torn down (see
+// ServerRunner::Run() for why).
+[[noreturn]] void ExitWithoutTeardown(int exit_code) {
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(exit_code);
+}
+
 int Main(int argc, char** argv) {
   ServerConfig config;
   std::string help;
@@ -205,15 +215,20 @@ int Main(int argc, char** argv) {
         std::make_unique<StatusServer>([&service] { return service.engine(); });
     interceptors.push_back(status_server->NewInterceptorFactory());
   }
-  const std::unique_ptr<ServerRunner> runner = ServerRunner::StartOrExit(
-      kProgram, config.serving, {&service}, std::move(interceptors));
+  std::unique_ptr<ServerRunner> runner;
+  if (Status started = ServerRunner::Start(kProgram, config.serving, {&service},
+                                           std::move(interceptors), &runner);
+      !started.ok()) {
+    std::cerr << kProgram << ": " << started.message() << std::endl;
+    return 1;
+  }
   if (status_server != nullptr) {
     if (Status listening =
             status_server->Listen(config.http_host, config.http_port);
         !listening.ok()) {
       std::cerr << kProgram << ": " << listening.message() << std::endl;
       runner->Stop(1);
-      runner->RunAndExit();
+      ExitWithoutTeardown(runner->Run());
     }
     std::cout << kProgram << " http listening on " << config.http_host << ":"
               << status_server->port() << std::endl;
@@ -231,9 +246,9 @@ int Main(int argc, char** argv) {
   // The first build is a reload from nothing, which nothing can refuse. It
   // runs off the loop so that signals are handled meanwhile, and hands its
   // outcome to the loop, which owns every state change of the process. What
-  // the callbacks refer to here outlives them: the process ends in
-  // RunAndExit() without unwinding this frame.
-  service.StartReload(
+  // the callbacks refer to here outlives them: the process ends below
+  // without unwinding this frame.
+  const Status first_build = service.StartReload(
       "", [&](const Status& status, std::shared_ptr<Engine> engine,
               uint64_t /*generation*/) {
         boost::asio::post(runner->io_context(), [&, status, engine] {
@@ -241,7 +256,12 @@ int Main(int argc, char** argv) {
                       status_server.get(), runner.get());
         });
       });
-  runner->RunAndExit();
+  if (!first_build.ok()) {
+    LogLine() << "cannot load dataset '" << config.dataset
+              << "': " << first_build.ToString();
+    runner->Stop(1);
+  }
+  ExitWithoutTeardown(runner->Run());
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include <grpcpp/health_check_service_interface.h>
 
 #include <csignal>
-#include <cstdlib>
 #include <iostream>
 #include <utility>
 
@@ -58,12 +57,13 @@ ServerRunner::ServerRunner(std::string_view program)
       signals_(io_context_, SIGINT, SIGTERM),
       hangup_(io_context_, SIGHUP) {}
 
-std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
+Status ServerRunner::Start(
     std::string_view program, const ServingConfig& config,
     const std::vector<grpc::Service*>& services,
     std::vector<
         std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
-        interceptors) {
+        interceptors,
+    std::unique_ptr<ServerRunner>* runner) {
   // The signal handlers are installed (by the constructor) before the
   // listening line goes out: whoever reads that line may signal at once.
   std::unique_ptr<ServerRunner> created(new ServerRunner(program));
@@ -81,14 +81,13 @@ std::unique_ptr<ServerRunner> ServerRunner::StartOrExit(
   builder.experimental().SetInterceptorCreators(std::move(interceptors));
   created->server_ = builder.BuildAndStart();
   if (created->server_ == nullptr || port == 0) {
-    std::cerr << program << ": cannot listen on " << config.ListenAddress()
-              << std::endl;
-    std::exit(1);
+    return Status::Unavailable("cannot listen on " + config.ListenAddress());
   }
   created->SetServing(false);
   std::cout << program << " listening on " << config.listen_host << ":" << port
             << std::endl;
-  return created;
+  *runner = std::move(created);
+  return Status::OK();
 }
 
 void ServerRunner::SetServing(bool serving) {
@@ -152,7 +151,7 @@ void ServerRunner::WaitForHangup() {
   });
 }
 
-void ServerRunner::RunAndExit() {
+int ServerRunner::Run() {
   WaitForHangup();
   signals_.async_wait(
       [this](const boost::system::error_code& error, int signal_number) {
@@ -163,13 +162,9 @@ void ServerRunner::RunAndExit() {
       });
   io_context_.run();
   // Every call has been answered and the server is shut down; the hook saves
-  // whatever state is worth keeping, and the rest is not torn down. That
-  // would cost time: gRPC's global shutdown can idle for up to 10 s on an
-  // executor thread's poll, and a triangulation build cannot be interrupted.
+  // whatever state is worth keeping.
   if (before_exit_) before_exit_();
-  std::cout.flush();
-  std::cerr.flush();
-  std::_Exit(exit_code_);
+  return exit_code_;
 }
 
 }  // namespace locator

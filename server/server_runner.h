@@ -1,22 +1,22 @@
 // ServerRunner: a started gRPC server plus the Boost.Asio loop that runs the
 // process around it (signals, periodic work, shutdown).
 //
-// StartOrExit() builds the server with the default health service and
+// Start() builds the server with the default health service and
 // reflection, TLS and the connection limits of the config's
 // TransportConfig, marks it NOT_SERVING, starts it and prints "<program>
-// listening on HOST:PORT" (the port actually bound) on stdout. RunAndExit()
-// then drives the loop on the calling thread until SIGINT or SIGTERM, or
-// until Stop(): the server goes NOT_SERVING, the OnDrain() hooks run (the
+// listening on HOST:PORT" (the port actually bound) on stdout. Run() then
+// drives the loop on the calling thread until SIGINT or SIGTERM, or until
+// Stop(): the server goes NOT_SERVING, the OnDrain() hooks run (the
 // services refuse new calls and wait for theirs to end), gRPC shuts down,
 // in-flight calls get what is left of kDrainDeadline to complete, the
-// BeforeExit() hook runs, and the process exits with the exit code. SIGHUP
-// never ends the process: it calls the OnHangup() handler (e.g. a reload),
-// or is logged and ignored without one.
+// BeforeExit() hook runs, and Run() returns the exit code for main() to end
+// the process with. SIGHUP never ends the loop: it calls the OnHangup()
+// handler (e.g. a reload), or is logged and ignored without one.
 //
 // Owns the server, the io_context, its signal sets and timers.
 // Thread-safety: SetServing() may be called from any thread; RunEvery() and
 // Stop() only on the loop thread (post to io_context() from elsewhere); the
-// rest from the thread that called StartOrExit().
+// rest from the thread that called Start().
 
 #ifndef LOCATOR_SERVER_SERVER_RUNNER_H_
 #define LOCATOR_SERVER_SERVER_RUNNER_H_
@@ -34,6 +34,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/status.h"
 #include "server/server_config.h"
 
 namespace locator {
@@ -43,14 +44,15 @@ class ServerRunner {
   static constexpr std::chrono::seconds kDrainDeadline{10};
 
   // Starts `services` on config's address as described above, with
-  // `interceptors` seeing every call. If the address cannot be bound, says
-  // so on stderr and exits with code 1.
-  static std::unique_ptr<ServerRunner> StartOrExit(
+  // `interceptors` seeing every call, into *runner. Unavailable "cannot
+  // listen on ADDRESS" if the address cannot be bound.
+  static Status Start(
       std::string_view program, const ServingConfig& config,
       const std::vector<grpc::Service*>& services,
       std::vector<std::unique_ptr<
           grpc::experimental::ServerInterceptorFactoryInterface>>
-          interceptors = {});
+          interceptors,
+      std::unique_ptr<ServerRunner>* runner);
 
   ServerRunner(const ServerRunner&) = delete;
   ServerRunner& operator=(const ServerRunner&) = delete;
@@ -70,20 +72,23 @@ class ServerRunner {
   // Calls `tick` on the loop thread every `seconds` until the loop stops.
   void RunEvery(double seconds, std::function<void()> tick);
 
-  // Shuts the server down (draining in-flight calls) and makes RunAndExit()
-  // exit with `exit_code`.
+  // Shuts the server down (draining in-flight calls) and makes Run() return
+  // `exit_code`.
   void Stop(int exit_code);
 
   // Calls `handler` on the loop thread on every SIGHUP.
   void OnHangup(std::function<void()> handler);
   // Calls `hook` on the loop thread once the server has shut down, right
-  // before the process exits (after a signal or Stop()).
+  // before Run() returns (after a signal or Stop()).
   void BeforeExit(std::function<void()> hook);
 
-  // Runs the loop until a signal (exit code 0) or Stop(), then ends the
-  // process at once: objects still alive, including threads other code
-  // started, are not torn down.
-  [[noreturn]] void RunAndExit();
+  // Runs the loop until a signal (exit code 0) or Stop(), runs the
+  // BeforeExit() hook and returns the exit code. Every call has been
+  // answered by then, so main() may end the process at once (std::_Exit)
+  // rather than tear the rest down: gRPC's global shutdown can idle for up
+  // to 10 s on an executor thread's poll, and a triangulation build cannot
+  // be interrupted.
+  int Run();
 
  private:
   explicit ServerRunner(std::string_view program);

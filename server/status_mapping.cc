@@ -20,10 +20,12 @@ grpc::StatusCode ToGrpcCode(Status::Code code) {
     case Status::Code::kInternal:
       return grpc::StatusCode::INTERNAL;
     case Status::Code::kIOError:
-      // The only I/O the core does is reading the dataset at startup. If it
-      // ever failed while serving, that is the server's own failure, and
-      // retrying against the same server would not help: UNAVAILABLE would
-      // invite exactly that retry, so report INTERNAL.
+      // The core reads datasets (at startup and on Reload) and reads and
+      // writes tuning state files; a missing file is kNotFound, not this.
+      // A file that exists but cannot be read or written (permissions, a
+      // directory, a full disk) is the server's own failure, and retrying
+      // against the same server would not help: UNAVAILABLE would invite
+      // exactly that retry, so report INTERNAL.
       return grpc::StatusCode::INTERNAL;
   }
   return grpc::StatusCode::UNKNOWN;

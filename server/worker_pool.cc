@@ -13,27 +13,27 @@ WorkerPool::WorkerPool(size_t threads) {
 
 WorkerPool::~WorkerPool() {
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     stopping_ = true;
   }
-  has_work_.notify_all();
+  has_work_.SignalAll();
   for (std::thread& thread : threads_) thread.join();
 }
 
 void WorkerPool::Submit(std::function<void()> task) {
   {
-    std::lock_guard<std::mutex> lock(mu_);
+    MutexLock lock(&mu_);
     tasks_.push_back(std::move(task));
   }
-  has_work_.notify_one();
+  has_work_.Signal();
 }
 
 void WorkerPool::RunWorker() {
   for (;;) {
     std::function<void()> task;
     {
-      std::unique_lock<std::mutex> lock(mu_);
-      has_work_.wait(lock, [this] { return stopping_ || !tasks_.empty(); });
+      MutexLock lock(&mu_);
+      while (!stopping_ && tasks_.empty()) has_work_.Wait(&mu_);
       // Drain before stopping: a submitted task may own an RPC that still
       // has to be finished.
       if (tasks_.empty()) return;

@@ -9,13 +9,13 @@
 #ifndef LOCATOR_SERVER_WORKER_POOL_H_
 #define LOCATOR_SERVER_WORKER_POOL_H_
 
-#include <condition_variable>
 #include <cstddef>
 #include <deque>
 #include <functional>
-#include <mutex>
 #include <thread>
 #include <vector>
+
+#include "common/mutex.h"
 
 namespace locator {
 
@@ -31,17 +31,17 @@ class WorkerPool {
   WorkerPool& operator=(const WorkerPool&) = delete;
 
   // Queues `task` to run on one of the threads.
-  void Submit(std::function<void()> task);
+  void Submit(std::function<void()> task) EXCLUDES(mu_);
 
   size_t size() const { return threads_.size(); }
 
  private:
-  void RunWorker();
+  void RunWorker() EXCLUDES(mu_);
 
-  std::mutex mu_;
-  std::condition_variable has_work_;
-  std::deque<std::function<void()>> tasks_;  // guarded by mu_
-  bool stopping_ = false;                    // guarded by mu_
+  Mutex mu_;
+  CondVar has_work_;
+  std::deque<std::function<void()>> tasks_ GUARDED_BY(mu_);
+  bool stopping_ GUARDED_BY(mu_) = false;
   std::vector<std::thread> threads_;
 };
 

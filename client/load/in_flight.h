@@ -6,34 +6,34 @@
 #ifndef LOCATOR_CLIENT_LOAD_IN_FLIGHT_H_
 #define LOCATOR_CLIENT_LOAD_IN_FLIGHT_H_
 
-#include <condition_variable>
 #include <cstddef>
-#include <mutex>
+
+#include "common/mutex.h"
 
 namespace locator {
 
 class InFlight {
  public:
   // One more is in flight.
-  void Add() {
-    std::lock_guard<std::mutex> lock(mutex_);
+  void Add() EXCLUDES(mutex_) {
+    MutexLock lock(&mutex_);
     ++count_;
   }
   // One has ended.
-  void Remove() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (--count_ == 0) none_left_.notify_all();
+  void Remove() EXCLUDES(mutex_) {
+    MutexLock lock(&mutex_);
+    if (--count_ == 0) none_left_.SignalAll();
   }
   // Blocks until none is in flight.
-  void WaitUntilNone() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    none_left_.wait(lock, [this] { return count_ == 0; });
+  void WaitUntilNone() EXCLUDES(mutex_) {
+    MutexLock lock(&mutex_);
+    while (count_ != 0) none_left_.Wait(&mutex_);
   }
 
  private:
-  std::mutex mutex_;
-  std::condition_variable none_left_;
-  size_t count_ = 0;
+  Mutex mutex_;
+  CondVar none_left_;
+  size_t count_ GUARDED_BY(mutex_) = 0;
 };
 
 }  // namespace locator

@@ -56,12 +56,12 @@ Point2 QuerySource::NextLocked() {
 }
 
 Point2 QuerySource::Next() {
-  std::lock_guard<std::mutex> lock(mutex_);
+  MutexLock lock(&mutex_);
   return NextLocked();
 }
 
 void QuerySource::Next(std::span<double> xs, std::span<double> ys) {
-  std::lock_guard<std::mutex> lock(mutex_);
+  MutexLock lock(&mutex_);
   for (size_t i = 0; i < xs.size(); ++i) {
     const Point2 point = NextLocked();
     xs[i] = point.x;

@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +22,7 @@
 #include <vector>
 
 #include "common/geometry.h"
+#include "common/mutex.h"
 #include "common/status.h"
 #include "common/workload.h"
 
@@ -42,20 +42,21 @@ class QuerySource {
                        uint64_t seed, std::unique_ptr<QuerySource>* source);
 
   // The next query.
-  Point2 Next();
+  Point2 Next() EXCLUDES(mutex_);
   // Fills xs[i], ys[i] with the next xs.size() queries (ys as long as xs).
-  void Next(std::span<double> xs, std::span<double> ys);
+  void Next(std::span<double> xs, std::span<double> ys) EXCLUDES(mutex_);
 
  private:
   explicit QuerySource(Workload workload);
   explicit QuerySource(std::vector<Point2> replay);
 
-  Point2 NextLocked();
+  Point2 NextLocked() REQUIRES(mutex_);
 
-  std::mutex mutex_;
-  std::optional<Workload> workload_;  // generated, or else...
-  std::vector<Point2> replay_;        // ...replayed from a file
-  size_t replay_next_ = 0;
+  Mutex mutex_;
+  // Generated, or else...
+  std::optional<Workload> workload_ GUARDED_BY(mutex_);
+  const std::vector<Point2> replay_;  // ...replayed from a file
+  size_t replay_next_ GUARDED_BY(mutex_) = 0;
 };
 
 }  // namespace locator

@@ -37,7 +37,7 @@ void RunRecorder::RecordCall(const Claim& claim, LoadClock::time_point start,
   const auto micros = static_cast<uint64_t>(std::max<int64_t>(
       0, std::chrono::duration_cast<std::chrono::microseconds>(end - start)
              .count()));
-  std::lock_guard<std::mutex> lock(mutex_);
+  MutexLock lock(&mutex_);
   ++interval_.calls;
   for (uint32_t cost : costs) cost_windows_.Add(cost);
   timeline_.Record(end, status.ok(), micros, costs);
@@ -60,7 +60,7 @@ void RunRecorder::RecordCall(const Claim& claim, LoadClock::time_point start,
 }
 
 RunInterval RunRecorder::TakeInterval() {
-  std::lock_guard<std::mutex> lock(mutex_);
+  MutexLock lock(&mutex_);
   RunInterval taken = std::exchange(interval_, RunInterval());
   totals_.latency.Merge(taken.latency);
   return taken;
@@ -68,7 +68,7 @@ RunInterval RunRecorder::TakeInterval() {
 
 RunTotals RunRecorder::Finish() {
   TakeInterval();
-  std::lock_guard<std::mutex> lock(mutex_);
+  MutexLock lock(&mutex_);
   totals_.cost_means = cost_windows_.means();
   totals_.timeline_seconds = timeline_.slice_seconds();
   totals_.timeline = timeline_.Slices();

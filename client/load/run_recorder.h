@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
-#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +27,7 @@
 #include "client/load/latency_histogram.h"
 #include "client/load/run_budget.h"
 #include "client/load/timeline.h"
+#include "common/mutex.h"
 
 namespace locator {
 
@@ -83,22 +83,22 @@ class RunRecorder {
   // at `end`. `costs` holds the server's cost of each point it answered.
   void RecordCall(const Claim& claim, LoadClock::time_point start,
                   LoadClock::time_point end, const grpc::Status& status,
-                  std::span<const uint32_t> costs);
+                  std::span<const uint32_t> costs) EXCLUDES(mutex_);
   // The calls that ended since the previous call (or the start).
-  RunInterval TakeInterval();
+  RunInterval TakeInterval() EXCLUDES(mutex_);
   // All that was recorded; call once every call has ended.
-  RunTotals Finish();
+  RunTotals Finish() EXCLUDES(mutex_);
 
  private:
   // The phase a call ending at `end` belongs to, added if new.
-  PhaseTotals& PhaseAt(LoadClock::time_point end);
+  PhaseTotals& PhaseAt(LoadClock::time_point end) REQUIRES(mutex_);
 
   const RecorderOptions options_;
-  std::mutex mutex_;
-  RunInterval interval_;  // not yet merged into totals_
-  RunTotals totals_;
-  CostWindows cost_windows_;
-  Timeline timeline_;
+  Mutex mutex_;
+  RunInterval interval_ GUARDED_BY(mutex_);  // not yet merged into totals_
+  RunTotals totals_ GUARDED_BY(mutex_);
+  CostWindows cost_windows_ GUARDED_BY(mutex_);
+  Timeline timeline_ GUARDED_BY(mutex_);
 };
 
 }  // namespace locator

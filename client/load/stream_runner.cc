@@ -1,9 +1,9 @@
 #include "client/load/stream_runner.h"
 
 #include <deque>
-#include <mutex>
 
 #include "client/load/in_flight.h"
+#include "common/mutex.h"
 
 namespace locator {
 namespace {
@@ -30,7 +30,7 @@ class WindowedStream : public LocatorClient::StreamReactor {
 
   void OnWriteDone(bool ok) override {
     {
-      std::lock_guard<std::mutex> lock(mutex_);
+      MutexLock lock(&mutex_);
       writing_ = false;
       // A failed write means the stream is broken; OnDone() follows.
       if (!ok) closed_ = true;
@@ -44,7 +44,7 @@ class WindowedStream : public LocatorClient::StreamReactor {
     const uint32_t cost = response_.cost().total();
     Sent answered;
     {
-      std::lock_guard<std::mutex> lock(mutex_);
+      MutexLock lock(&mutex_);
       if (unanswered_.empty()) {
         // More answers than requests: the server is broken; end the stream.
         context_.TryCancel();
@@ -64,8 +64,14 @@ class WindowedStream : public LocatorClient::StreamReactor {
         status.ok() ? grpc::Status(grpc::StatusCode::INTERNAL,
                                    "stream ended with requests unanswered")
                     : status;
+    std::deque<Sent> unanswered;
+    {
+      // No reaction runs any more; the lock is for the analysis' sake.
+      MutexLock lock(&mutex_);
+      unanswered.swap(unanswered_);
+    }
     const LoadClock::time_point now = LoadClock::now();
-    for (const Sent& sent : unanswered_) {
+    for (const Sent& sent : unanswered) {
       recorder_.RecordCall(sent.claim, sent.at, now, failure, {});
     }
     InFlight& streams = streams_;
@@ -82,10 +88,10 @@ class WindowedStream : public LocatorClient::StreamReactor {
   // Writes the next request if the window and the budget allow and no
   // write is in progress (a stream takes one write at a time), or half-
   // closes the stream once the budget is spent.
-  void SendMore() {
+  void SendMore() EXCLUDES(mutex_) {
     enum { kNothing, kWrite, kClose } action = kNothing;
     {
-      std::lock_guard<std::mutex> lock(mutex_);
+      MutexLock lock(&mutex_);
       if (writing_ || closed_ || unanswered_.size() >= window_) return;
       const LoadClock::time_point now = LoadClock::now();
       Claim claim;
@@ -116,10 +122,11 @@ class WindowedStream : public LocatorClient::StreamReactor {
   v1::LocateRequest request_;    // guarded by writing_
   v1::LocateResponse response_;  // owned by the one read in progress
 
-  std::mutex mutex_;
-  bool writing_ = false;  // a write is in progress
-  bool closed_ = false;   // no more writes: half-closed or broken
-  std::deque<Sent> unanswered_;
+  Mutex mutex_;
+  bool writing_ GUARDED_BY(mutex_) = false;  // a write is in progress
+  // No more writes: half-closed or broken.
+  bool closed_ GUARDED_BY(mutex_) = false;
+  std::deque<Sent> unanswered_ GUARDED_BY(mutex_);
 };
 
 }  // namespace

@@ -88,13 +88,14 @@ int main(int argc, char** argv) {
   }
 
   locator::bench::BenchReport report;
-  if (vm.count("paper")) locator::bench::RunPaper(paper, &report);
-  if (vm.count("scale")) {
-    locator::Status s = locator::bench::RunScale(scale, &report);
-    if (!s.ok()) {
-      std::cerr << "locator-bench: " << s.ToString() << "\n";
-      return 1;
-    }
+  locator::Status run;
+  if (vm.count("paper")) run = locator::bench::RunPaper(paper, &report);
+  if (run.ok() && vm.count("scale")) {
+    run = locator::bench::RunScale(scale, &report);
+  }
+  if (!run.ok()) {
+    std::cerr << "locator-bench: " << run.ToString() << "\n";
+    return 1;
   }
   if (format == "csv") {
     report.PrintCsv(std::cout);

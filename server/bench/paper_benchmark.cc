@@ -1,6 +1,5 @@
 #include "server/bench/paper_benchmark.h"
 
-#include <cstdio>
 #include <map>
 #include <memory>
 #include <string>
@@ -28,14 +27,12 @@ struct SizeResults {
 
 // Runs one strategy over one query stream: warm-up, then measurement (in
 // windows for drift).
-void RunStream(const PaperOptions& o, const Triangulation& t,
-               const std::string& strategy, WorkloadKind kind,
-               const std::vector<Point2>& queries, SizeResults* out) {
+Status RunStream(const PaperOptions& o, const Triangulation& t,
+                 const std::string& strategy, WorkloadKind kind,
+                 const std::vector<Point2>& queries, SizeResults* out) {
   std::unique_ptr<PointLocator> locator;
-  Status s = MakePointLocator(strategy, t, o.tuning, &locator);
-  if (!s.ok()) {
-    std::fprintf(stderr, "locator-bench: %s\n", s.ToString().c_str());
-    std::exit(1);
+  if (Status s = MakePointLocator(strategy, t, o.tuning, &locator); !s.ok()) {
+    return s;
   }
   const std::span<const Point2> all(queries);
   LocateAll(*locator, all.first(o.warmup), nullptr);
@@ -54,11 +51,12 @@ void RunStream(const PaperOptions& o, const Triangulation& t,
     }
   }
   out->bytes[key] += locator->Summary().memory_bytes;
+  return Status::OK();
 }
 
 }  // namespace
 
-void RunPaper(const PaperOptions& o, BenchReport* report) {
+Status RunPaper(const PaperOptions& o, BenchReport* report) {
   std::vector<size_t> sizes = o.sizes;
   if (sizes.empty()) sizes.assign(kPaperSizes.begin(), kPaperSizes.end());
   const BoundingBox unit{0, 0, 1, 1};
@@ -67,11 +65,7 @@ void RunPaper(const PaperOptions& o, BenchReport* report) {
     for (int seed = 1; seed <= o.seeds; ++seed) {
       const Dataset dataset = GenerateUniform(n, seed);
       std::unique_ptr<Triangulation> t;
-      Status s = Triangulation::Build(dataset, &t);
-      if (!s.ok()) {
-        std::fprintf(stderr, "locator-bench: %s\n", s.ToString().c_str());
-        std::exit(1);
-      }
+      if (Status s = Triangulation::Build(dataset, &t); !s.ok()) return s;
       for (WorkloadKind kind : AllWorkloadKinds()) {
         const size_t measured =
             kind == WorkloadKind::kDrift ? o.drift_queries : o.measured;
@@ -79,7 +73,10 @@ void RunPaper(const PaperOptions& o, BenchReport* report) {
             WorkloadQueries(kind, unit, o.warmup + measured,
                             seed * 7919 + static_cast<int>(kind));
         for (const std::string& strategy : StrategyNames()) {
-          RunStream(o, *t, strategy, kind, queries, &results);
+          if (Status s = RunStream(o, *t, strategy, kind, queries, &results);
+              !s.ok()) {
+            return s;
+          }
         }
       }
     }
@@ -103,6 +100,7 @@ void RunPaper(const PaperOptions& o, BenchReport* report) {
       }
     }
   }
+  return Status::OK();
 }
 
 }  // namespace locator::bench

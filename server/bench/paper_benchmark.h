@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/status.h"
 #include "server/bench/bench_report.h"
 #include "server/core/tuning_options.h"
 
@@ -25,7 +26,9 @@ struct PaperOptions {
   TuningOptions tuning;
 };
 
-void RunPaper(const PaperOptions& options, BenchReport* report);
+// Adds the tables' rows to `report`; the first failure to build a
+// triangulation or a locator, if any.
+Status RunPaper(const PaperOptions& options, BenchReport* report);
 
 }  // namespace locator::bench
 

@@ -73,7 +73,7 @@ void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
 void AdaptivePaperLocator::Retune() { Tune(); }
 
 void AdaptivePaperLocator::Tune() const {
-  std::lock_guard<std::mutex> lock(tune_mu_);
+  MutexLock lock(&tune_mu_);
   histogram_.Drain(&counts_);
   auto s = std::make_shared<Samples>();
   const std::shared_ptr<const Samples> old = samples_.Current();

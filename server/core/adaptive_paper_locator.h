@@ -18,9 +18,9 @@
 
 #include <atomic>
 #include <memory>
-#include <mutex>
 #include <vector>
 
+#include "common/mutex.h"
 #include "server/core/jump_and_walk_locator.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
@@ -38,7 +38,7 @@ class AdaptivePaperLocator : public PointLocator {
   void Locate(const Point2& q, LocateResult* result) const override;
   std::string_view name() const override { return "adaptive-paper"; }
   TuningSummary Summary() const override;
-  void Retune() override;
+  void Retune() override EXCLUDES(tune_mu_);
 
  private:
   struct Samples {
@@ -51,7 +51,7 @@ class AdaptivePaperLocator : public PointLocator {
   };
 
   // Builds and publishes samples from the histogram counted so far.
-  void Tune() const;
+  void Tune() const EXCLUDES(tune_mu_);
   void SampleRegion(const BoundingBox& fat, Samples* out) const;
 
   const Triangulation& t_;
@@ -59,8 +59,8 @@ class AdaptivePaperLocator : public PointLocator {
   JumpAndWalkLocator fallback_;
   mutable QueryHistogram histogram_;
   mutable std::atomic<uint64_t> warmup_seen_{0};
-  mutable std::mutex tune_mu_;  // serialises Tune(); never held by Locate()
-  mutable std::vector<double> counts_;     // guarded by tune_mu_
+  mutable Mutex tune_mu_;  // serialises Tune(); never held by Locate()
+  mutable std::vector<double> counts_ GUARDED_BY(tune_mu_);
   mutable SnapshotSlot<Samples> samples_;  // published by Tune()
 };
 

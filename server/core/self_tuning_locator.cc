@@ -107,8 +107,9 @@ void SelfTuningLocator::RequestRetune() const {
     return;
   }
   // Inline: whoever finds the tuner busy just keeps using the old snapshot.
-  std::unique_lock<std::mutex> lock(tune_mu_, std::try_to_lock);
-  if (lock.owns_lock()) RetuneLocked();
+  if (!tune_mu_.TryLock()) return;
+  RetuneLocked();
+  tune_mu_.Unlock();
 }
 
 void SelfTuningLocator::TunerLoop() {
@@ -117,12 +118,13 @@ void SelfTuningLocator::TunerLoop() {
     requests_.wait(seen, std::memory_order_acquire);
     seen = requests_.load(std::memory_order_acquire);
     if (stopping_.load()) return;
-    std::lock_guard<std::mutex> lock(tune_mu_);
+    MutexLock lock(&tune_mu_);
     RetuneLocked();
     if (store_ &&
         std::chrono::steady_clock::now() - last_save_ >= kMinSaveInterval) {
-      // A failure is recorded in the summary; the next re-tune tries again.
-      SaveLocked();
+      // Ignored: a failure is recorded in the summary (Stats() shows it),
+      // and the next re-tune tries again.
+      (void)SaveLocked();
     }
   }
 }
@@ -131,11 +133,13 @@ bool SelfTuningLocator::RestoreState() {
   if (!store_) return false;
   TuningState state;
   std::shared_ptr<const TuningSnapshot> snapshot;
+  // Uncontended: the constructor calls this before the tuner thread exists.
+  MutexLock tune_lock(&tune_mu_);
   Status status = store_->Load(&state);
   if (status.ok()) {
     status = tuner_.Restore(state, state.snapshot_version, &snapshot);
   }
-  std::lock_guard<std::mutex> lock(persistence_mu_);
+  MutexLock lock(&persistence_mu_);
   if (!status.ok()) {
     // No file yet is the normal first start, not a problem to report.
     if (status.code() != Status::Code::kNotFound) {
@@ -151,7 +155,7 @@ bool SelfTuningLocator::RestoreState() {
 }
 
 Status SelfTuningLocator::SaveState() {
-  std::lock_guard<std::mutex> lock(tune_mu_);
+  MutexLock lock(&tune_mu_);
   return SaveLocked();
 }
 
@@ -165,14 +169,14 @@ Status SelfTuningLocator::SaveLocked() {
   const Status status = store_->Save(state);
   last_save_ = std::chrono::steady_clock::now();
   if (status.ok()) saved_version_ = snapshot->version;
-  std::lock_guard<std::mutex> lock(persistence_mu_);
+  MutexLock lock(&persistence_mu_);
   persistence_.saves += status.ok() ? 1 : 0;
   persistence_.save_error = status.ok() ? "" : status.message();
   return status;
 }
 
 void SelfTuningLocator::Retune() {
-  std::lock_guard<std::mutex> lock(tune_mu_);
+  MutexLock lock(&tune_mu_);
   RetuneLocked();
 }
 
@@ -198,7 +202,7 @@ TuningSummary SelfTuningLocator::Summary() const {
   s.start_points = snap->table->SampleStartPoints(kSummaryStartPoints);
   s.start_point_count = snap->table->start_count();
   s.memory_bytes = snap->memory_bytes + histogram_.MemoryBytes();
-  std::lock_guard<std::mutex> lock(persistence_mu_);
+  MutexLock lock(&persistence_mu_);
   s.persistence = persistence_;
   s.hot_queries = hot_queries_.load(std::memory_order_relaxed);
   s.fallback_queries = fallback_queries_.load(std::memory_order_relaxed);

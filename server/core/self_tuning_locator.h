@@ -31,10 +31,10 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
-#include <mutex>
 #include <thread>
 #include <vector>
 
+#include "common/mutex.h"
 #include "server/core/hot_region_tuner.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
@@ -57,19 +57,18 @@ class SelfTuningLocator : public PointLocator {
   void LocateMany(std::span<const Point2> queries,
                   LocateResult* results) const override;
   std::string_view name() const override { return "self-tuning"; }
-  TuningSummary Summary() const override;
-  void Retune() override;
-  Status SaveState() override;
+  TuningSummary Summary() const override EXCLUDES(persistence_mu_);
+  void Retune() override EXCLUDES(tune_mu_);
+  Status SaveState() override EXCLUDES(tune_mu_);
 
   static constexpr std::chrono::seconds kMinSaveInterval{1};
 
  private:
   // Publishes the stored state if there is a usable one; true if it did.
   // Records why a stored state was not usable.
-  bool RestoreState();
-  // Saves unless the published snapshot is the one last saved. Requires
-  // tune_mu_.
-  Status SaveLocked();
+  bool RestoreState() EXCLUDES(tune_mu_, persistence_mu_);
+  // Saves unless the published snapshot is the one last saved.
+  Status SaveLocked() REQUIRES(tune_mu_) EXCLUDES(persistence_mu_);
   // Locates q with `snap` and counts it in the histogram; true if q fell in
   // a cold cell.
   bool LocateIn(const TuningSnapshot& snap, const Point2& q,
@@ -78,10 +77,10 @@ class SelfTuningLocator : public PointLocator {
   // re-tune, and asks for one when due.
   void Account(uint64_t queries, uint64_t cold) const;
   // Asks for a re-tune: runs it inline or wakes the background thread.
-  void RequestRetune() const;
-  // Drains the histogram and publishes a new snapshot. Requires tune_mu_.
-  void RetuneLocked() const;
-  void TunerLoop();
+  void RequestRetune() const EXCLUDES(tune_mu_);
+  // Drains the histogram and publishes a new snapshot.
+  void RetuneLocked() const REQUIRES(tune_mu_);
+  void TunerLoop() EXCLUDES(tune_mu_);
 
   const Triangulation& t_;
   const TuningOptions options_;
@@ -89,17 +88,17 @@ class SelfTuningLocator : public PointLocator {
 
   // Serialises re-tunes. Locate() only ever try-locks it (inline mode), so a
   // query never waits for the tuner.
-  mutable std::mutex tune_mu_;
-  mutable HotRegionTuner tuner_;       // guarded by tune_mu_
-  mutable std::vector<double> fresh_;  // guarded by tune_mu_
+  mutable Mutex tune_mu_ ACQUIRED_BEFORE(persistence_mu_);
+  mutable HotRegionTuner tuner_ GUARDED_BY(tune_mu_);
+  mutable std::vector<double> fresh_ GUARDED_BY(tune_mu_);
   mutable std::atomic<uint64_t> retunes_{0};
 
   // Persistence; null store when nothing persists.
   std::unique_ptr<const TuningStateStore> store_;
-  uint64_t saved_version_ = 1;  // guarded by tune_mu_; 1: the untuned plan
-  std::chrono::steady_clock::time_point last_save_;  // guarded by tune_mu_
-  mutable std::mutex persistence_mu_;
-  PersistenceSummary persistence_;  // guarded by persistence_mu_
+  uint64_t saved_version_ GUARDED_BY(tune_mu_) = 1;  // 1: the untuned plan
+  std::chrono::steady_clock::time_point last_save_ GUARDED_BY(tune_mu_);
+  mutable Mutex persistence_mu_;
+  PersistenceSummary persistence_ GUARDED_BY(persistence_mu_);
 
   mutable SnapshotSlot<TuningSnapshot> snapshot_;  // published by re-tunes
   mutable std::atomic<uint64_t> since_tune_{0};

@@ -22,7 +22,8 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
-#include <mutex>
+
+#include "common/mutex.h"
 
 namespace locator {
 
@@ -43,26 +44,26 @@ class SnapshotSlot {
   SnapshotSlot& operator=(const SnapshotSlot&) = delete;
 
   // Makes `snapshot` the one readers see from now on.
-  void Publish(std::shared_ptr<const T> snapshot) {
-    std::lock_guard<std::mutex> lock(mu_);
+  void Publish(std::shared_ptr<const T> snapshot) EXCLUDES(mu_) {
+    MutexLock lock(&mu_);
     current_ = std::move(snapshot);
     version_.store(version_.load(std::memory_order_relaxed) + 1,
                    std::memory_order_release);
   }
 
   // The current snapshot, as an owning pointer (slow path: takes the lock).
-  std::shared_ptr<const T> Current() const {
-    std::lock_guard<std::mutex> lock(mu_);
+  std::shared_ptr<const T> Current() const EXCLUDES(mu_) {
+    MutexLock lock(&mu_);
     return current_;
   }
 
   // The current snapshot (null if none was published). The pointer stays
   // valid until this thread's next Get() on a SnapshotSlot<T>.
-  const T* Get() const {
+  const T* Get() const EXCLUDES(mu_) {
     thread_local Cache cache;
     const uint64_t version = version_.load(std::memory_order_acquire);
     if (cache.slot_id != id_ || cache.version != version) {
-      std::lock_guard<std::mutex> lock(mu_);
+      MutexLock lock(&mu_);
       cache.snapshot = current_;
       cache.version = version_.load(std::memory_order_relaxed);
       cache.slot_id = id_;
@@ -78,8 +79,8 @@ class SnapshotSlot {
   };
 
   const uint64_t id_;
-  mutable std::mutex mu_;
-  std::shared_ptr<const T> current_;  // guarded by mu_
+  mutable Mutex mu_;
+  std::shared_ptr<const T> current_ GUARDED_BY(mu_);
   std::atomic<uint64_t> version_{0};
 };
 

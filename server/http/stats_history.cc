@@ -7,7 +7,7 @@ namespace locator {
 void StatsHistory::Record(uintptr_t engine_id, uint64_t queries,
                           uint64_t total_cost,
                           std::chrono::system_clock::time_point now) {
-  std::lock_guard<std::mutex> lock(mu_);
+  MutexLock lock(&mu_);
   // A new engine's counters start from zero (an address may be reused, so
   // counters that went backwards also mark one).
   if (has_previous_ && (engine_id != engine_id_ || queries < queries_ ||
@@ -37,7 +37,7 @@ void StatsHistory::Record(uintptr_t engine_id, uint64_t queries,
 }
 
 std::vector<StatsSample> StatsHistory::Samples() const {
-  std::lock_guard<std::mutex> lock(mu_);
+  MutexLock lock(&mu_);
   return {samples_.begin(), samples_.end()};
 }
 

@@ -16,8 +16,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
-#include <mutex>
 #include <vector>
+
+#include "common/mutex.h"
 
 namespace locator {
 
@@ -34,20 +35,20 @@ class StatsHistory {
   // Records the counters of the engine identified by `engine_id` (any value
   // that differs between engines), taken at `now`.
   void Record(uintptr_t engine_id, uint64_t queries, uint64_t total_cost,
-              std::chrono::system_clock::time_point now);
+              std::chrono::system_clock::time_point now) EXCLUDES(mu_);
 
   // The samples, oldest first.
-  std::vector<StatsSample> Samples() const;
+  std::vector<StatsSample> Samples() const EXCLUDES(mu_);
 
  private:
-  mutable std::mutex mu_;
-  std::deque<StatsSample> samples_;  // guarded by mu_
-  // The previous Record()'s input; guarded by mu_.
-  bool has_previous_ = false;
-  uintptr_t engine_id_ = 0;
-  uint64_t queries_ = 0;
-  uint64_t total_cost_ = 0;
-  std::chrono::system_clock::time_point time_;
+  mutable Mutex mu_;
+  std::deque<StatsSample> samples_ GUARDED_BY(mu_);
+  // The previous Record()'s input.
+  bool has_previous_ GUARDED_BY(mu_) = false;
+  uintptr_t engine_id_ GUARDED_BY(mu_) = 0;
+  uint64_t queries_ GUARDED_BY(mu_) = 0;
+  uint64_t total_cost_ GUARDED_BY(mu_) = 0;
+  std::chrono::system_clock::time_point time_ GUARDED_BY(mu_);
 };
 
 }  // namespace locator

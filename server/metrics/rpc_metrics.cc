@@ -103,13 +103,13 @@ const RpcMetrics::Series& RpcMetrics::SeriesFor(std::string_view method,
                            ? static_cast<size_t>(code)
                            : static_cast<size_t>(grpc::StatusCode::UNKNOWN);
   {
-    std::shared_lock<std::shared_mutex> lock(mu_);
+    ReaderMutexLock lock(&mu_);
     const auto found = by_method_.find(method);
     if (found != by_method_.end() && found->second[index].requests) {
       return found->second[index];
     }
   }
-  std::unique_lock<std::shared_mutex> lock(mu_);
+  WriterMutexLock lock(&mu_);
   MethodSeries& all = by_method_.try_emplace(std::string(method)).first->second;
   Series& series = all[index];
   if (series.requests != nullptr) return series;  // another thread made it

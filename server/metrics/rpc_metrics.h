@@ -24,9 +24,10 @@
 #include <array>
 #include <map>
 #include <memory>
-#include <shared_mutex>
 #include <string>
 #include <string_view>
+
+#include "common/mutex.h"
 
 namespace locator {
 
@@ -40,7 +41,8 @@ class RpcMetrics {
 
   // Counts one call of `method` ("/package.Service/Method") that ended with
   // `code` after `seconds`.
-  void Record(std::string_view method, grpc::StatusCode code, double seconds);
+  void Record(std::string_view method, grpc::StatusCode code, double seconds)
+      EXCLUDES(mu_);
 
   // A factory for grpc::ServerBuilder's interceptors that calls Record()
   // once per call. This object must outlive the server.
@@ -58,14 +60,15 @@ class RpcMetrics {
   using MethodSeries = std::array<Series, 17>;
 
   // The series of (method, code), created on first use.
-  const Series& SeriesFor(std::string_view method, grpc::StatusCode code);
+  const Series& SeriesFor(std::string_view method, grpc::StatusCode code)
+      EXCLUDES(mu_);
 
   prometheus::Family<prometheus::Counter>& requests_;
   prometheus::Family<prometheus::Counter>& errors_;
   prometheus::Family<prometheus::Histogram>& duration_;
 
-  std::shared_mutex mu_;
-  std::map<std::string, MethodSeries, std::less<>> by_method_;  // guarded
+  SharedMutex mu_;
+  std::map<std::string, MethodSeries, std::less<>> by_method_ GUARDED_BY(mu_);
 };
 
 }  // namespace locator

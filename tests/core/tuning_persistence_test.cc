@@ -69,7 +69,7 @@ std::vector<uint32_t> CostsOnFreshThread(const Engine& engine,
   std::thread([&] {
     LocateResult result;
     for (const Point2& q : queries) {
-      engine.Locate(q, &result).ok();
+      EXPECT_TRUE(engine.Locate(q, &result).ok());
       costs.push_back(result.cost.total());
     }
   }).join();

@@ -10,6 +10,8 @@
 #define LOCATOR_TESTS_FUZZ_TUNING_STATE_FIXTURE_H_
 
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -37,11 +39,14 @@ struct TuningStateFixture {
 inline const TuningStateFixture& TuningStateFuzzFixture() {
   static const TuningStateFixture* fixture = [] {
     auto* f = new TuningStateFixture();
-    // A generated dataset always triangulates.
-    Triangulation::Build(
+    const Status built = Triangulation::Build(
         GenerateUniform(TuningStateFixture::kPoints, TuningStateFixture::kSeed),
-        &f->triangulation)
-        .ok();
+        &f->triangulation);
+    if (!built.ok()) {
+      std::fprintf(stderr, "tuning state fixture: %s\n",
+                   built.ToString().c_str());
+      std::abort();
+    }
     const TuningSummary summary =
         SelfTuningLocator(*f->triangulation, f->options).Summary();
     f->grid = GridGeometry(summary.grid_box, summary.grid_size);

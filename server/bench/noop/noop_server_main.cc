@@ -3,6 +3,8 @@
 // it as the ceiling the real server's throughput is compared against. Same
 // serving flags, listening line, health and shutdown as locatord.
 
+#include <cstdlib>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +18,15 @@ namespace {
 
 constexpr char kProgram[] = "locator-noop-server";
 
+// Ends the process once ServerRunner::Run() has returned `exit_code`: the
+// log streams are flushed, and nothing still alive is torn down (see
+// ServerRunner::Run() for why).
+[[noreturn]] void ExitWithoutTeardown(int exit_code) {
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(exit_code);
+}
+
 int Main(int argc, char** argv) {
   ServingConfig config;
   std::string help;
@@ -26,10 +37,16 @@ int Main(int argc, char** argv) {
 
   NoopLocatorService locator_service(config);
   NoopNestedBatchService nested_batch_service;
-  const std::unique_ptr<ServerRunner> runner = ServerRunner::StartOrExit(
-      kProgram, config, {&locator_service, &nested_batch_service});
+  std::unique_ptr<ServerRunner> runner;
+  if (Status started = ServerRunner::Start(
+          kProgram, config, {&locator_service, &nested_batch_service}, {},
+          &runner);
+      !started.ok()) {
+    std::cerr << kProgram << ": " << started.message() << std::endl;
+    return 1;
+  }
   runner->SetServing(true);
-  runner->RunAndExit();
+  ExitWithoutTeardown(runner->Run());
 }
 
 }  // namespace
