@@ -190,7 +190,7 @@ TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
     big_status =
         stub->LocateBatch(&context, BatchRequestFor(big), &big_response);
   });
-  ASSERT_TRUE(test::WaitUntil(
+  EXPECT_TRUE(test::WaitUntil(
       [&] { return GetStats(*stub).queries_served() > served_before; }));
 
   // Small batches keep arriving around the signal: those that started
