@@ -2,7 +2,6 @@
 
 #include <utility>
 
-#include "server/proto_convert.h"
 #include "server/status_mapping.h"
 
 namespace locator {
@@ -19,7 +18,6 @@ LocateStreamReactor::LocateStreamReactor(
     // them after it too, but through synchronization ThreadSanitizer cannot
     // see.
     MutexLock lock(&mu_);
-    reading_ = true;
     if (deadline_.ServerEnforced()) alarms_pending_ = 1;
   }
   // gRPC enforces a deadline the client set; the server's default is ours.
@@ -34,22 +32,16 @@ void LocateStreamReactor::OnReadDone(bool ok) {
   Actions actions;
   {
     MutexLock lock(&mu_);
-    reading_ = false;
     if (!ok) {
       // The client half-closed (or the call died, in which case the status
-      // is never seen): finish once the queued answers are out.
-      if (!outcome_) outcome_ = grpc::Status::OK;
+      // is never seen).
+      actions = ToActionsLocked(state_.ReadFailed());
     } else {
       LocateResult result;
       const v1::Point& point = request_.point();
-      Status status = locate_(Point2{point.x(), point.y()}, &result);
-      if (status.ok()) {
-        ToLocateResponse(result, &answers_.emplace_back());
-      } else if (!outcome_) {
-        outcome_ = ToGrpcStatus(status);
-      }
+      const Status located = locate_(Point2{point.x(), point.y()}, &result);
+      actions = ToActionsLocked(state_.PointRead(located, result));
     }
-    actions = NextActionsLocked();
   }
   Start(actions);
 }
@@ -58,17 +50,7 @@ void LocateStreamReactor::OnWriteDone(bool ok) {
   Actions actions;
   {
     MutexLock lock(&mu_);
-    writing_ = false;
-    answers_.pop_front();
-    if (!ok) {
-      // Nobody will read the rest; the status only matters for the logs.
-      answers_.clear();
-      if (!outcome_) {
-        outcome_ = grpc::Status(grpc::StatusCode::CANCELLED,
-                                "the client stopped reading answers");
-      }
-    }
-    actions = NextActionsLocked();
+    actions = ToActionsLocked(state_.WriteDone(ok));
   }
   Start(actions);
 }
@@ -98,17 +80,15 @@ void LocateStreamReactor::OnDeadline(bool fired) {
   Actions actions;
   {
     MutexLock lock(&mu_);
-    if (fired && !finished_ && !done_) {
-      if (!outcome_) outcome_ = deadline_.ExceededStatus("streaming");
-      // Answers not yet being written are dropped: the stream is over.
-      answers_.resize(writing_ ? 1 : 0);
-      if (writing_) {
+    if (fired && !state_.finished() && !done_) {
+      bool write_in_flight = false;
+      actions = ToActionsLocked(state_.DeadlinePassed(&write_in_flight));
+      if (write_in_flight) {
         ++alarms_pending_;
         stuck_write_alarm_.Set(
             std::chrono::system_clock::now() + kStuckWriteGrace,
             [this](bool stuck) { OnStuckWrite(stuck); });
       }
-      actions = NextActionsLocked();
     }
   }
   // Safe without gRPC's reference: this alarm's count keeps the reactor.
@@ -121,7 +101,7 @@ void LocateStreamReactor::OnStuckWrite(bool fired) {
     // Under mu_, so that OnDone() (which ends the context's life) waits.
     // TryCancel() runs no reaction on this thread: gRPC schedules them.
     MutexLock lock(&mu_);
-    if (fired && !finished_ && !done_) context_->TryCancel();
+    if (fired && !state_.finished() && !done_) context_->TryCancel();
   }
   ReleaseAlarm();
 }
@@ -136,27 +116,33 @@ void LocateStreamReactor::ReleaseAlarm() {
   if (delete_now) delete this;
 }
 
-LocateStreamReactor::Actions LocateStreamReactor::NextActionsLocked() {
+LocateStreamReactor::Actions LocateStreamReactor::ToActionsLocked(
+    const LocateStreamState::Actions& next) const {
   Actions actions;
-  if (finished_) return actions;
-  if (!writing_ && !answers_.empty()) {
-    writing_ = true;
-    actions.write = &answers_.front();
-  }
-  if (!outcome_ && !reading_ && answers_.size() < kMaxQueuedAnswers) {
-    reading_ = true;
-    actions.read = true;
-  }
-  if (outcome_ && !writing_ && answers_.empty()) {
-    finished_ = true;
-    actions.finish = *outcome_;
+  actions.write = next.write;
+  actions.read = next.read;
+  if (!next.finish) return actions;
+  switch (*next.finish) {
+    case LocateStreamState::End::kHalfClosed:
+      actions.finish = grpc::Status::OK;
+      break;
+    case LocateStreamState::End::kBadPoint:
+      actions.finish = ToGrpcStatus(state_.bad_point_status());
+      break;
+    case LocateStreamState::End::kClientGone:
+      // Nobody reads it; it only matters for the logs.
+      actions.finish = grpc::Status(grpc::StatusCode::CANCELLED,
+                                    "the client stopped reading answers");
+      break;
+    case LocateStreamState::End::kDeadline:
+      actions.finish = deadline_.ExceededStatus("streaming");
+      break;
   }
   return actions;
 }
 
 void LocateStreamReactor::Start(const Actions& actions) {
-  // deque::emplace_back keeps references valid, and the front is popped only
-  // in OnWriteDone, so actions.write stays valid until its write completes.
+  // LocateStreamState keeps actions.write valid until its write completes.
   if (actions.write != nullptr) StartWrite(actions.write);
   if (actions.read) StartRead(&request_);
   if (actions.finish) Finish(*actions.finish);

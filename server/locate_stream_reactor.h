@@ -1,23 +1,19 @@
 // LocateStreamReactor: serves one LocateStream call: reads points, answers
 // each in order, and finishes when the client half-closes.
 //
-// At most one write is in flight; answers computed meanwhile wait in a queue.
-// When kMaxQueuedAnswers are waiting the reactor stops reading until the
-// client catches up, so a client that sends without reading cannot grow the
-// server's memory. A point that fails to locate (not finite) ends the stream
-// with that status once the answers before it have been written; a failed
-// write (the client went away) ends it at once.
+// What to read, write and finish next is decided by a LocateStreamState
+// (see there: one write in flight, at most kMaxQueuedAnswers queued, how
+// each kind of end is reached); this class carries it out with gRPC.
 //
 // Until the reactor finishes, a read or a write is always outstanding, so a
 // cancelled call always surfaces as a failed operation and then finishes:
 // OnCancel() needs no action of its own.
 //
 // A stream whose client set no deadline gets the server's default (see
-// CallDeadline), enforced by an alarm: when it fires the stream stops
-// reading, drops the answers not yet sent and finishes with
-// DEADLINE_EXCEEDED. If an answer is still being written then (the client
-// may not be reading, so the status could never reach it behind the answer)
-// and is not written within kStuckWriteGrace, the call is cancelled.
+// CallDeadline), enforced by an alarm: when it fires the stream finishes
+// with DEADLINE_EXCEEDED. If an answer is still being written then (the
+// client may not be reading, so the status could never reach it behind the
+// answer) and is not written within kStuckWriteGrace, the call is cancelled.
 //
 // Owns itself: deletes itself once OnDone() has run and no alarm callback
 // is pending. Thread-safety: gRPC may run the read and write reactions and
@@ -32,7 +28,6 @@
 
 #include <chrono>
 #include <cstddef>
-#include <deque>
 #include <functional>
 #include <optional>
 
@@ -42,13 +37,13 @@
 #include "locator/v1/locator.pb.h"
 #include "server/call_deadline.h"
 #include "server/core/locate_result.h"
+#include "server/locate_stream_state.h"
 
 namespace locator {
 
 class LocateStreamReactor final
     : public grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse> {
  public:
-  static constexpr size_t kMaxQueuedAnswers = 64;
   static constexpr std::chrono::seconds kStuckWriteGrace{1};
 
   // Locates one point: Engine::Locate, or the no-op server's canned answer.
@@ -73,10 +68,9 @@ class LocateStreamReactor final
     std::optional<grpc::Status> finish;
   };
 
-  // Starts the next write if none is in flight, resumes reading if the
-  // queue has room, and finishes once the outcome is known and every answer
-  // before it is written.
-  Actions NextActionsLocked() REQUIRES(mu_);
+  // `next` with the stream's end as the status to finish with.
+  Actions ToActionsLocked(const LocateStreamState::Actions& next) const
+      REQUIRES(mu_);
   void Start(const Actions& actions) EXCLUDES(mu_);
   // Alarm callbacks: `fired` is false when the alarm was cancelled.
   void OnDeadline(bool fired) EXCLUDES(mu_);
@@ -95,13 +89,7 @@ class LocateStreamReactor final
   v1::LocateRequest request_;  // filled by the single outstanding read
 
   Mutex mu_;
-  // The front is in flight if writing_.
-  std::deque<v1::LocateResponse> answers_ GUARDED_BY(mu_);
-  bool writing_ GUARDED_BY(mu_) = false;
-  bool reading_ GUARDED_BY(mu_) = false;  // a read is outstanding
-  // The stream's outcome, set once no more points will be read.
-  std::optional<grpc::Status> outcome_ GUARDED_BY(mu_);
-  bool finished_ GUARDED_BY(mu_) = false;
+  LocateStreamState state_ GUARDED_BY(mu_);
   bool done_ GUARDED_BY(mu_) = false;       // OnDone() has run
   int alarms_pending_ GUARDED_BY(mu_) = 0;  // alarm callbacks still to run
   grpc::Alarm deadline_alarm_;

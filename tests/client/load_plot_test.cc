@@ -11,8 +11,8 @@
 namespace locator {
 namespace {
 
-using testing::CheckSvgText;
-using testing::SvgSummary;
+using test::CheckSvgText;
+using test::SvgSummary;
 
 // A run of 4 half-second slices, the third without any call, split into
 // two phases.

@@ -23,9 +23,9 @@
 namespace locator {
 namespace {
 
-using testing::BinaryResult;
-using testing::RunBinary;
-using testing::ServerProcess;
+using test::BinaryResult;
+using test::RunBinary;
+using test::ServerProcess;
 
 constexpr int kDatasetPoints = 300;
 constexpr int kBatchRows = 25;
@@ -250,7 +250,7 @@ TEST_F(LocatorCliTest, UnusableTokenFileIsAUsageErrorNamingIt) {
 class LocatorCliSecurityTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    ASSERT_TRUE(testing::TestPki::Create(&pki_).ok());
+    ASSERT_TRUE(test::TestPki::Create(&pki_).ok());
     data_token_ = WriteFile("data_token", "cli-data-token\n");
     admin_token_ = WriteFile("admin_token", "cli-admin-token\n");
     std::vector<std::string> args = {
@@ -280,13 +280,13 @@ class LocatorCliSecurityTest : public ::testing::Test {
     return RunBinary(LOCATOR_PATH, all);
   }
 
-  static std::unique_ptr<testing::TestPki> pki_;
+  static std::unique_ptr<test::TestPki> pki_;
   static std::unique_ptr<ServerProcess> server_;
   static std::string data_token_;
   static std::string admin_token_;
 };
 
-std::unique_ptr<testing::TestPki> LocatorCliSecurityTest::pki_;
+std::unique_ptr<test::TestPki> LocatorCliSecurityTest::pki_;
 std::unique_ptr<ServerProcess> LocatorCliSecurityTest::server_;
 std::string LocatorCliSecurityTest::data_token_;
 std::string LocatorCliSecurityTest::admin_token_;

@@ -18,9 +18,9 @@
 namespace locator {
 namespace {
 
-using testing::BinaryResult;
-using testing::RunBinary;
-using testing::ServerProcess;
+using test::BinaryResult;
+using test::RunBinary;
+using test::ServerProcess;
 
 class LocatorCliReloadTest : public ::testing::Test {
  protected:

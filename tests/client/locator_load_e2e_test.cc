@@ -18,10 +18,10 @@
 namespace locator {
 namespace {
 
-using testing::BinaryResult;
-using testing::RunBinary;
-using testing::ServerProcess;
-using testing::SvgSummary;
+using test::BinaryResult;
+using test::RunBinary;
+using test::ServerProcess;
+using test::SvgSummary;
 
 double Number(const google::protobuf::Struct& object, const std::string& key) {
   const auto found = object.fields().find(key);
@@ -85,7 +85,7 @@ TEST(LocatorLoadTest, PlotsLatencyAndCostOverTime) {
   EXPECT_GT(Number(timeline.values(0).struct_value(), "calls"), 0);
   EXPECT_EQ(summary.fields().at("phases").list_value().values_size(), 1);
 
-  const SvgSummary chart = testing::CheckSvgFile(plot);
+  const SvgSummary chart = test::CheckSvgFile(plot);
   ASSERT_TRUE(chart.well_formed) << chart.error;
   ASSERT_EQ(chart.polyline_points.size(), 3u);
   for (int points : chart.polyline_points) {

@@ -10,7 +10,7 @@
 
 #include "tests/testing/run_binary.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 SvgSummary CheckSvgFile(const std::string& path) {
   SvgSummary summary;
@@ -48,4 +48,4 @@ SvgSummary CheckSvgText(const std::string& svg) {
   return summary;
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

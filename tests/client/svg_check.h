@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace locator::testing {
+namespace locator::test {
 
 struct SvgSummary {
   bool well_formed = false;
@@ -26,6 +26,6 @@ SvgSummary CheckSvgFile(const std::string& path);
 // The same for a document in memory.
 SvgSummary CheckSvgText(const std::string& svg);
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_CLIENT_SVG_CHECK_H_

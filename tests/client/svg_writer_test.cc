@@ -9,8 +9,8 @@
 namespace locator {
 namespace {
 
-using testing::CheckSvgText;
-using testing::SvgSummary;
+using test::CheckSvgText;
+using test::SvgSummary;
 
 TEST(XmlEscapeTest, ReplacesTheFiveSpecialCharacters) {
   EXPECT_EQ(XmlEscape(R"(a&b<c>d"e'f)"), "a&amp;b&lt;c&gt;d&quot;e&apos;f");

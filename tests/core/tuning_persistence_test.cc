@@ -6,7 +6,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -20,6 +19,7 @@
 #include "server/core/engine.h"
 #include "server/core/file_io.h"
 #include "tests/core/scratch_dir.h"
+#include "tests/testing/wait.h"
 
 namespace locator {
 namespace {
@@ -196,11 +196,8 @@ TEST(TuningPersistenceTest, TheTunerThreadSavesAfterARetune) {
   options.tuning.background = true;
   const std::unique_ptr<Engine> engine = NewEngine(options);
   Feed(*engine, Clustered(*engine, 3 * kRetuneEvery, 4));
-  for (int attempt = 0;
-       attempt < 500 && engine->Stats().tuning.persistence.saves == 0;
-       ++attempt) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  EXPECT_TRUE(test::WaitUntil(
+      [&] { return engine->Stats().tuning.persistence.saves > 0; }));
   const PersistenceSummary p = engine->Stats().tuning.persistence;
   EXPECT_GE(p.saves, 1u);
   EXPECT_EQ(p.save_error, "");

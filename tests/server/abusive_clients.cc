@@ -12,8 +12,9 @@
 #include <vector>
 
 #include "tests/server/e2e_support.h"
+#include "tests/testing/wait.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 // Far more than flow control lets through: if the writers got to the end,
@@ -59,21 +60,19 @@ uint64_t TotalWritten(const std::vector<std::unique_ptr<FloodStream>>& floods) {
   return total;
 }
 
-// Waits until the writers have made no progress for a while (flow control
-// holds them) or have all finished.
-void WaitUntilStalled(const std::vector<std::unique_ptr<FloodStream>>& floods) {
-  uint64_t before = TotalWritten(floods);
-  for (int quiet = 0; quiet < 3;) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    const uint64_t now = TotalWritten(floods);
-    quiet = now == before ? quiet + 1 : 0;
-    before = now;
-    if (now == kFloodStreams * kFloodPoints) return;
-  }
+// Waits until neither the writers nor the server make progress any more
+// (flow control holds the writers and the server reads no further), or the
+// writers have all finished. Progress is the points written plus the points
+// the server has located: both only grow.
+void WaitUntilStalled(const test::ServerProcess& server,
+                      const std::vector<std::unique_ptr<FloodStream>>& floods) {
+  auto stub = NewStub(server);
+  test::WaitUntilSettled(
+      [&] { return TotalWritten(floods) + GetStats(*stub).queries_served(); });
 }
 
 // Locate and a stream round trip on a connection of their own.
-void ExpectOthersServed(const testing::ServerProcess& server) {
+void ExpectOthersServed(const test::ServerProcess& server) {
   auto stub = NewStub(server);
   v1::LocateResponse response;
   const grpc::Status unary = LocateOne(*stub, {10.25, 20.5}, &response);
@@ -90,7 +89,7 @@ void ExpectOthersServed(const testing::ServerProcess& server) {
 
 }  // namespace
 
-grpc::Status FloodWithUnreadStreams(const testing::ServerProcess& server) {
+grpc::Status FloodWithUnreadStreams(const test::ServerProcess& server) {
   const size_t rss_before = ResidentBytes(server.pid());
   auto flooder = NewStub(server);  // one connection for the whole flood
   std::vector<std::unique_ptr<FloodStream>> floods;
@@ -107,7 +106,7 @@ grpc::Status FloodWithUnreadStreams(const testing::ServerProcess& server) {
     });
     floods.push_back(std::move(flood));
   }
-  WaitUntilStalled(floods);
+  WaitUntilStalled(server, floods);
   const uint64_t written = TotalWritten(floods);
   EXPECT_LT(written, kFloodStreams * kFloodPoints)
       << "the server read every point although no answer was read";
@@ -137,7 +136,7 @@ grpc::Status FloodWithUnreadStreams(const testing::ServerProcess& server) {
   return extra_status;
 }
 
-grpc::Status PingWhileIdle(const testing::ServerProcess& server) {
+grpc::Status PingWhileIdle(const test::ServerProcess& server) {
   grpc::ChannelArguments args;
   args.SetInt(GRPC_ARG_KEEPALIVE_TIME_MS, 100);
   args.SetInt(GRPC_ARG_KEEPALIVE_TIMEOUT_MS, 1000);
@@ -160,4 +159,4 @@ grpc::Status PingWhileIdle(const testing::ServerProcess& server) {
   return stream->Finish();
 }
 
-}  // namespace locator::e2e
+}  // namespace locator::test

@@ -26,13 +26,13 @@
 
 #include "tests/testing/server_process.h"
 
-namespace locator::e2e {
+namespace locator::test {
 
 inline constexpr int kFloodStreams = 4;
 // Measured: ~3 MB (~50 MB when gRPC may grow stream windows by BDP probing).
 inline constexpr size_t kFloodRssBound = size_t{16} << 20;
 
-grpc::Status FloodWithUnreadStreams(const testing::ServerProcess& server);
+grpc::Status FloodWithUnreadStreams(const test::ServerProcess& server);
 
 // PingWhileIdle: a client that sends HTTP/2 keepalive pings as often as its
 // gRPC allows (asked for every 100 ms; gRPC 1.51 sends about one a second)
@@ -42,8 +42,8 @@ grpc::Status FloodWithUnreadStreams(const testing::ServerProcess& server);
 // the stream ends UNAVAILABLE; one that allows the pings lets the stream
 // live until its deadline (DEADLINE_EXCEEDED).
 inline constexpr std::chrono::seconds kPingDuration{8};
-grpc::Status PingWhileIdle(const testing::ServerProcess& server);
+grpc::Status PingWhileIdle(const test::ServerProcess& server);
 
-}  // namespace locator::e2e
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_SERVER_ABUSIVE_CLIENTS_H_

@@ -27,11 +27,10 @@
 
 #include "tests/server/e2e_support.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
-using testing::ServerProcess;
 
 constexpr auto kExitTimeout = std::chrono::seconds(60);
 
@@ -329,4 +328,4 @@ INSTANTIATE_TEST_SUITE_P(Datasets, BadDatasetTableTest,
                          });
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

@@ -26,8 +26,9 @@
 
 #include "tests/server/abusive_clients.h"
 #include "tests/server/e2e_support.h"
+#include "tests/testing/wait.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -38,7 +39,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What a row's call may use.
 struct Env {
-  testing::ServerProcess& server;
+  test::ServerProcess& server;
   v1::Locator::Stub& stub;
   const Reference& reference;
   const std::vector<Point2>& queries;
@@ -238,15 +239,14 @@ grpc::Status BatchCancelledMidway(const Env& env) {
     v1::LocateBatchResponse response;
     status = env.stub.LocateBatch(&context, request, &response);
   });
-  while (GetStats(env.stub).queries_served() == served_before) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
+  auto served = [&] { return GetStats(env.stub).queries_served(); };
+  EXPECT_TRUE(test::WaitUntil([&] { return served() > served_before; }));
   context.TryCancel();
   call.join();
-  // The server checks between blocks of points and gives up; give it a
-  // moment to get there: it must have located only part of the batch.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  EXPECT_LT(GetStats(env.stub).queries_served() - served_before,
+  // The server checks between blocks of points and gives up: once it has
+  // stopped locating, it must have located only part of the batch. (A server
+  // that ignores the cancellation stops only after the whole batch.)
+  EXPECT_LT(test::WaitUntilSettled(served) - served_before,
             uint64_t{1'000'000});
   return status;
 }
@@ -348,10 +348,9 @@ class BadInputTableTest : public ::testing::TestWithParam<CallRow> {
   }
 
   // The server for `flags`, started on first use and kept for later rows.
-  static testing::ServerProcess* ServerFor(
-      const std::vector<std::string>& flags) {
+  static test::ServerProcess* ServerFor(const std::vector<std::string>& flags) {
     if (servers_ == nullptr) servers_ = new ServerMap();
-    std::unique_ptr<testing::ServerProcess>& server = (*servers_)[flags];
+    std::unique_ptr<test::ServerProcess>& server = (*servers_)[flags];
     if (server == nullptr) {
       const Status started = StartLocatord(dataset_->path(), flags, &server);
       EXPECT_TRUE(started.ok()) << started.ToString();
@@ -359,8 +358,8 @@ class BadInputTableTest : public ::testing::TestWithParam<CallRow> {
     return server.get();
   }
 
-  using ServerMap = std::map<std::vector<std::string>,
-                             std::unique_ptr<testing::ServerProcess>>;
+  using ServerMap =
+      std::map<std::vector<std::string>, std::unique_ptr<test::ServerProcess>>;
   static TestDatasetFile* dataset_;
   static std::unique_ptr<Reference> reference_;
   static std::vector<Point2>* queries_;
@@ -374,7 +373,7 @@ BadInputTableTest::ServerMap* BadInputTableTest::servers_ = nullptr;
 
 TEST_P(BadInputTableTest, AnswersWithTheRowsStatusAndKeepsServing) {
   const CallRow& row = GetParam();
-  testing::ServerProcess* server = ServerFor(row.server_flags);
+  test::ServerProcess* server = ServerFor(row.server_flags);
   ASSERT_NE(server, nullptr);
   auto stub = NewStub(*server);
   const grpc::Status status =
@@ -400,4 +399,4 @@ INSTANTIATE_TEST_SUITE_P(Requests, BadInputTableTest,
                          });
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

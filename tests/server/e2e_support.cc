@@ -4,15 +4,15 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
-#include <thread>
 
-namespace locator::e2e {
+#include "tests/testing/wait.h"
+
+namespace locator::test {
 namespace {
 
 constexpr int kGridSide = 60;
@@ -148,21 +148,20 @@ std::vector<Point2> TestQueries() {
 
 Status StartLocatord(const std::string& dataset,
                      const std::vector<std::string>& flags,
-                     std::unique_ptr<testing::ServerProcess>* server,
+                     std::unique_ptr<test::ServerProcess>* server,
                      const ChannelSecurity& client_security) {
   std::vector<std::string> args = {"--dataset", dataset, "--listen",
                                    "127.0.0.1:0"};
   args.insert(args.end(), flags.begin(), flags.end());
-  return testing::ServerProcess::Start(LOCATORD_PATH, args, server,
-                                       client_security);
+  return test::ServerProcess::Start(LOCATORD_PATH, args, server,
+                                    client_security);
 }
 
-std::unique_ptr<v1::Locator::Stub> NewStub(
-    const testing::ServerProcess& server) {
+std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server) {
   return NewStub(server, server.client_security());
 }
 
-std::unique_ptr<v1::Locator::Stub> NewStub(const testing::ServerProcess& server,
+std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server,
                                            const ChannelSecurity& security) {
   return v1::Locator::NewStub(CreateLocatorChannel({.target = server.target(),
                                                     .own_connection = true,
@@ -193,11 +192,11 @@ v1::GetStatsResponse GetStats(v1::Locator::Stub& stub) {
 v1::GetStatsResponse WaitForStats(
     v1::Locator::Stub& stub,
     const std::function<bool(const v1::GetStatsResponse&)>& done) {
-  v1::GetStatsResponse stats = GetStats(stub);
-  for (int attempt = 0; attempt < 500 && !done(stats); ++attempt) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  v1::GetStatsResponse stats;
+  test::WaitUntil([&] {
     stats = GetStats(stub);
-  }
+    return done(stats);
+  });
   return stats;
 }
 
@@ -328,4 +327,4 @@ std::string Reference::Disagreement(const Point2& q, const LocateResult& got,
   return "";
 }
 
-}  // namespace locator::e2e
+}  // namespace locator::test

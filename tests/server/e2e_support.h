@@ -28,7 +28,7 @@
 #include "server/core/triangulation.h"
 #include "tests/testing/server_process.h"
 
-namespace locator::e2e {
+namespace locator::test {
 
 // The value every dataset point carries, hence the exact interpolant.
 inline double TestValue(const Point2& p) { return 2 * p.x + 3 * p.y + 1; }
@@ -58,14 +58,13 @@ std::vector<Point2> TestQueries();
 // the credentials the server accepts).
 Status StartLocatord(const std::string& dataset,
                      const std::vector<std::string>& flags,
-                     std::unique_ptr<testing::ServerProcess>* server,
+                     std::unique_ptr<test::ServerProcess>* server,
                      const ChannelSecurity& client_security = {});
 // A stub on a channel of its own (its own TCP connection, as a separate
 // client would have) to `server`, with the server's client credentials or
 // with `security`.
-std::unique_ptr<v1::Locator::Stub> NewStub(
-    const testing::ServerProcess& server);
-std::unique_ptr<v1::Locator::Stub> NewStub(const testing::ServerProcess& server,
+std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server);
+std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server,
                                            const ChannelSecurity& security);
 
 // `q` as a Locate or LocateStream request.
@@ -75,7 +74,8 @@ grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
                        v1::LocateResponse* response);
 // Calls GetStats; a failed call is a test failure (and an empty answer).
 v1::GetStatsResponse GetStats(v1::Locator::Stub& stub);
-// Polls GetStats until `done` holds or ~10 s pass; returns the last answer.
+// Polls GetStats until `done` holds or test::kGenerousWait passes; returns
+// the last answer.
 v1::GetStatsResponse WaitForStats(
     v1::Locator::Stub& stub,
     const std::function<bool(const v1::GetStatsResponse&)>& done);
@@ -117,6 +117,6 @@ class Reference {
   std::unique_ptr<Triangulation> triangulation_;
 };
 
-}  // namespace locator::e2e
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_SERVER_E2E_SUPPORT_H_

@@ -15,7 +15,7 @@
 #include "server/core/engine.h"
 #include "tests/server/e2e_support.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 constexpr size_t kBatchSize = 2500;
@@ -50,14 +50,14 @@ class LocatordTest : public ::testing::Test {
   static TestDatasetFile* dataset_;
   static std::unique_ptr<Reference> reference_;
   static std::vector<Point2>* queries_;
-  static std::unique_ptr<testing::ServerProcess> server_;
+  static std::unique_ptr<test::ServerProcess> server_;
   std::unique_ptr<v1::Locator::Stub> stub_;
 };
 
 TestDatasetFile* LocatordTest::dataset_ = nullptr;
 std::unique_ptr<Reference> LocatordTest::reference_;
 std::vector<Point2>* LocatordTest::queries_ = nullptr;
-std::unique_ptr<testing::ServerProcess> LocatordTest::server_;
+std::unique_ptr<test::ServerProcess> LocatordTest::server_;
 
 TEST_F(LocatordTest, QuerySetCoversEveryLocationType) {
   ASSERT_GE(queries_->size(), 10'000u);
@@ -249,4 +249,4 @@ TEST_F(LocatordTest, RetuneReturnsTuningWithoutHistogram) {
 }
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

@@ -6,6 +6,7 @@
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -16,12 +17,12 @@
 #include <vector>
 
 #include "tests/server/e2e_support.h"
+#include "tests/testing/wait.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
-using testing::ServerProcess;
 
 constexpr auto kExitTimeout = std::chrono::seconds(30);
 
@@ -114,13 +115,14 @@ TEST(LocatordRetuneTest, ConcurrentClientsStayExactThroughRetunes) {
   for (std::thread& client : clients) client.join();
   for (const std::string& problem : problems) EXPECT_EQ(problem, "");
 
-  // Re-tunes run in the background; give the last ones a moment to land.
-  uint64_t retunes_after = retunes_before;
-  for (int attempt = 0; attempt < 100 && retunes_after < retunes_before + 2;
-       ++attempt) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    retunes_after = GetStats(*stats_stub).tuning().retune_count();
-  }
+  // Re-tunes run in the background; wait for the last ones to land.
+  const uint64_t retunes_after =
+      WaitForStats(*stats_stub,
+                   [&](const v1::GetStatsResponse& stats) {
+                     return stats.tuning().retune_count() >= retunes_before + 2;
+                   })
+          .tuning()
+          .retune_count();
   EXPECT_GE(retunes_after, retunes_before + 2);
 }
 
@@ -132,13 +134,16 @@ TEST(LocatordRetuneTest, PeriodicRetunesAndStatsLines) {
       {"--retune-interval-s", "0.1", "--stats-interval-s", "0.1"}, &server);
   ASSERT_TRUE(started.ok()) << started.ToString();
   auto stub = NewStub(*server);
-  uint64_t retunes = 0;
-  for (int attempt = 0; attempt < 100 && retunes < 2; ++attempt) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    retunes = GetStats(*stub).tuning().retune_count();
-  }
+  const uint64_t retunes =
+      WaitForStats(*stub,
+                   [](const v1::GetStatsResponse& stats) {
+                     return stats.tuning().retune_count() >= 2;
+                   })
+          .tuning()
+          .retune_count();
   EXPECT_GE(retunes, 2u);
-  EXPECT_THAT(server->StderrText(), HasSubstr("stats: queries="));
+  EXPECT_THAT(server->WaitForStderr("stats: queries=", test::kGenerousWait),
+              HasSubstr("stats: queries="));
 }
 
 // Locate with a deadline, so that a refusal can never hang the test.
@@ -185,15 +190,14 @@ TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
     big_status =
         stub->LocateBatch(&context, BatchRequestFor(big), &big_response);
   });
-  while (GetStats(*stub).queries_served() == served_before) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
+  EXPECT_TRUE(test::WaitUntil(
+      [&] { return GetStats(*stub).queries_served() > served_before; }));
 
   // Small batches keep arriving around the signal: those that started
   // before it succeed, the first one after it is refused; none may fail
   // otherwise.
-  std::atomic<int> small_ok{0};
   std::vector<grpc::Status> refusals(4);
+  std::vector<std::atomic<int>> small_ok(refusals.size());
   std::vector<std::thread> clients;
   for (size_t client = 0; client < refusals.size(); ++client) {
     clients.emplace_back([&, client] {
@@ -209,11 +213,15 @@ TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
           refusals[client] = status;
           return;
         }
-        ++small_ok;
+        ++small_ok[client];
       }
     });
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  // The signal comes once every client has had a batch answered.
+  EXPECT_TRUE(test::WaitUntil([&] {
+    return std::all_of(small_ok.begin(), small_ok.end(),
+                       [](const std::atomic<int>& ok) { return ok > 0; });
+  }));
   server->SendSignal(SIGTERM);
 
   // Once the server has acted on the signal, new calls are refused with
@@ -238,7 +246,6 @@ TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
   EXPECT_EQ(big_response.types_size(), static_cast<int>(big.size()));
 
   for (std::thread& client : clients) client.join();
-  EXPECT_GT(small_ok.load(), 0);
   for (const grpc::Status& refusal : refusals) {
     EXPECT_EQ(refusal.error_code(), grpc::StatusCode::UNAVAILABLE)
         << refusal.error_message();
@@ -250,4 +257,4 @@ TEST(LocatordShutdownTest, SigtermDrainsInFlightCallsAndExitsZero) {
 }
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

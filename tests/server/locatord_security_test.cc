@@ -17,13 +17,11 @@
 #include "tests/server/e2e_support.h"
 #include "tests/testing/test_pki.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
 using ::testing::Not;
-using testing::ServerProcess;
-using testing::TestPki;
 
 constexpr auto kExitTimeout = std::chrono::seconds(30);
 constexpr char kDataToken[] = "data-7f3a9c";
@@ -298,4 +296,4 @@ TEST_F(LocatordTlsTest, UnusableCertificateFilesFailStartupNamingTheFile) {
 }
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

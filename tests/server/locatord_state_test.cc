@@ -22,12 +22,10 @@
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
-using test::ScratchDir;
 using ::testing::HasSubstr;
-using testing::ServerProcess;
 
 constexpr char kDataset[] = "uniform:50000:42";
 constexpr uint64_t kTrainingRounds = 3;
@@ -201,4 +199,4 @@ TEST(LocatordStateTest, AReloadStartsFromTheStateOfItsDataset) {
 }
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

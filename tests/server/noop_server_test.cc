@@ -14,7 +14,7 @@
 namespace locator {
 namespace {
 
-using testing::ServerProcess;
+using test::ServerProcess;
 
 class NoopServerTest : public ::testing::Test {
  protected:

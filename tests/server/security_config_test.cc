@@ -84,15 +84,15 @@ TEST(TokenFileTest, DataAndAdminTokensMustDiffer) {
 class TlsFlagsTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const Status made = testing::TestPki::Create(&pki_);
+    const Status made = test::TestPki::Create(&pki_);
     ASSERT_TRUE(made.ok()) << made.ToString();
   }
   static void TearDownTestSuite() { pki_.reset(); }
 
-  static std::unique_ptr<testing::TestPki> pki_;
+  static std::unique_ptr<test::TestPki> pki_;
 };
 
-std::unique_ptr<testing::TestPki> TlsFlagsTest::pki_;
+std::unique_ptr<test::TestPki> TlsFlagsTest::pki_;
 
 TEST_F(TlsFlagsTest, GoodFilesAreRead) {
   ServerConfig config;

@@ -13,7 +13,7 @@
 
 extern char** environ;
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 // A temporary file, removed when this goes out of scope.
@@ -89,4 +89,4 @@ BinaryResult RunBinary(const std::string& binary,
   return result;
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace locator::testing {
+namespace locator::test {
 
 struct BinaryResult {
   int exit_code = -1;  // 128 + N if signal N ended it; -1 on timeout
@@ -27,6 +27,6 @@ BinaryResult RunBinary(const std::string& binary,
                        const std::vector<std::string>& args,
                        std::chrono::seconds timeout = std::chrono::seconds(60));
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_TESTING_RUN_BINARY_H_

@@ -15,7 +15,7 @@
 #include <sstream>
 #include <thread>
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -215,4 +215,4 @@ Status ServerProcess::Failure(const std::string& what) const {
   return Status::Unavailable(message.str());
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

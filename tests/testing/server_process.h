@@ -30,7 +30,7 @@
 #include "client/health_check.h"
 #include "common/status.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 class ServerProcess {
  public:
@@ -100,6 +100,6 @@ class ServerProcess {
   ChannelSecurity client_security_;
 };
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_TESTING_SERVER_PROCESS_H_

@@ -9,7 +9,7 @@
 
 #include "tests/testing/run_binary.h"
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 // The extensions each certificate gets; the server's names cover both ways
@@ -128,4 +128,4 @@ ChannelSecurity TestPki::ClientSecurity(bool client_cert) const {
   return security;
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

@@ -20,7 +20,7 @@
 #include "client/channel_options.h"
 #include "common/status.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 class TestPki {
  public:
@@ -52,6 +52,6 @@ class TestPki {
   const std::string dir_;
 };
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_TESTING_TEST_PKI_H_

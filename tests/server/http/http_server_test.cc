@@ -17,11 +17,11 @@
 namespace locator {
 namespace {
 
+using test::HttpGet;
+using test::HttpReply;
+using test::HttpRequest;
+using test::RawExchange;
 using ::testing::HasSubstr;
-using testing::HttpGet;
-using testing::HttpReply;
-using testing::HttpRequest;
-using testing::RawExchange;
 using ::testing::StartsWith;
 
 class HttpServerTest : public ::testing::Test {

@@ -8,7 +8,7 @@
 #include <cctype>
 #include <chrono>
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 namespace asio = boost::asio;
@@ -91,4 +91,4 @@ Status RawExchange(int port, std::string_view raw, std::string* received) {
   }
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

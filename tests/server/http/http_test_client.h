@@ -12,7 +12,7 @@
 
 #include "common/status.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 struct HttpReply {
   unsigned status = 0;
@@ -34,6 +34,6 @@ inline Status HttpGet(int port, std::string_view target, HttpReply* reply) {
 // server sends back until it closes the connection (or 10 s pass).
 Status RawExchange(int port, std::string_view raw, std::string* received);
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_SERVER_HTTP_HTTP_TEST_CLIENT_H_

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <stdexcept>
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 class Parser {
@@ -243,4 +243,4 @@ Status ParseJson(std::string_view text, JsonValue* out) {
   return Parser(text).Parse(out);
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

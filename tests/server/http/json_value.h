@@ -16,7 +16,7 @@
 
 #include "common/status.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 struct JsonValue;
 using JsonArray = std::vector<JsonValue>;
@@ -39,6 +39,6 @@ struct JsonValue {
 // InvalidArgument naming the byte offset otherwise.
 Status ParseJson(std::string_view text, JsonValue* out);
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_SERVER_HTTP_JSON_VALUE_H_

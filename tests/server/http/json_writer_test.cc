@@ -10,8 +10,8 @@
 namespace locator {
 namespace {
 
-using testing::JsonValue;
-using testing::ParseJson;
+using test::JsonValue;
+using test::ParseJson;
 
 TEST(JsonWriterTest, NestsAndSeparatesValues) {
   JsonWriter json;

@@ -5,7 +5,7 @@
 #include <limits>
 #include <set>
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 bool IsNameStart(char c, bool colon_ok) {
@@ -207,4 +207,4 @@ Status ParsePrometheusText(std::string_view text, PrometheusText* out) {
   return Status::OK();
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

@@ -19,7 +19,7 @@
 
 #include "common/status.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 struct PrometheusSample {
   std::string name;
@@ -41,6 +41,6 @@ struct PrometheusText {
 // Parses `text`; InvalidArgument naming the first bad line otherwise.
 Status ParsePrometheusText(std::string_view text, PrometheusText* out);
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_SERVER_HTTP_PROMETHEUS_TEXT_H_

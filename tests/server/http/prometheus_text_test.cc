@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 TEST(PrometheusTextTest, ReadsFamiliesAndSamples) {
@@ -53,4 +53,4 @@ TEST(PrometheusTextTest, RejectsMalformedText) {
 }
 
 }  // namespace
-}  // namespace locator::testing
+}  // namespace locator::test

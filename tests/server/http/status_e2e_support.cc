@@ -8,7 +8,7 @@
 
 #include "tests/server/http/http_test_client.h"
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 constexpr auto kServingTimeout = std::chrono::seconds(60);
@@ -66,4 +66,4 @@ JsonValue GetJson(int port, const std::string& target) {
   return json;
 }
 
-}  // namespace locator::testing
+}  // namespace locator::test

@@ -22,7 +22,7 @@
 #include "tests/server/http/json_value.h"
 #include "tests/testing/server_process.h"
 
-namespace locator::testing {
+namespace locator::test {
 
 class LocatordWithHttp {
  public:
@@ -49,6 +49,6 @@ class LocatordWithHttp {
 // test failure and yields null.
 JsonValue GetJson(int port, const std::string& target);
 
-}  // namespace locator::testing
+}  // namespace locator::test
 
 #endif  // LOCATOR_TESTS_SERVER_HTTP_STATUS_E2E_SUPPORT_H_

@@ -15,11 +15,11 @@
 namespace locator {
 namespace {
 
+using test::JsonValue;
+using test::ParseJson;
+using test::ParsePrometheusText;
+using test::PrometheusText;
 using ::testing::HasSubstr;
-using testing::JsonValue;
-using testing::ParseJson;
-using testing::ParsePrometheusText;
-using testing::PrometheusText;
 
 class StatusEndpointsTest : public ::testing::Test {
  protected:

@@ -19,7 +19,7 @@
 #include "tests/server/http/prometheus_text.h"
 #include "tests/server/http/status_e2e_support.h"
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
@@ -47,14 +47,14 @@ class StatusHttpTest : public ::testing::Test {
     for (int i = 0; i < kLocateCalls; ++i) {
       v1::LocateResponse response;
       const Point2 q{(i % 10) / 10.0 + 0.01, (i / 10) / 14.0 + 0.01};
-      const grpc::Status s = e2e::LocateOne(*stub, q, &response);
+      const grpc::Status s = test::LocateOne(*stub, q, &response);
       ASSERT_TRUE(s.ok()) << s.error_message();
       cost_sum_ += response.cost().total();
     }
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (int i = 0; i < kInvalidCalls; ++i) {
       v1::LocateResponse response;
-      EXPECT_EQ(e2e::LocateOne(*stub, {nan, 0.5}, &response).error_code(),
+      EXPECT_EQ(test::LocateOne(*stub, {nan, 0.5}, &response).error_code(),
                 grpc::StatusCode::INVALID_ARGUMENT);
     }
     v1::LocateBatchRequest batch;
@@ -226,4 +226,4 @@ TEST_F(StatusHttpTest, AnHttpAddressInUseExitsOne) {
 }
 
 }  // namespace
-}  // namespace locator::testing
+}  // namespace locator::test

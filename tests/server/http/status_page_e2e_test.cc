@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,19 +16,26 @@
 #include <random>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "tests/server/e2e_support.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/testing/wait.h"
 
-namespace locator::testing {
+namespace locator::test {
 namespace {
 
 constexpr char kChromium[] = "/usr/bin/chromium";
 constexpr int kClusteredQueries = 3000;
 constexpr int kQueriesPerBurst = 1000;
+
+// When the latest history sample /api/stats reports was taken (0: none yet).
+double LatestSampleTime(int port) {
+  const JsonValue stats = GetJson(port, "/api/stats");
+  const JsonArray& taken = stats["history"]["t"].array();
+  return taken.empty() ? 0 : taken.back().number();
+}
 
 // Runs headless Chromium on `url` with `flags`; returns its stdout. Its
 // stderr goes to a file next to the fresh profile directory.
@@ -148,10 +154,13 @@ TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
   std::uniform_real_distribution<double> y(cluster.min_y, cluster.max_y);
   for (int i = 0; i < kClusteredQueries; ++i) {
     v1::LocateResponse response;
-    ASSERT_TRUE(e2e::LocateOne(*stub, {x(rng), y(rng)}, &response).ok());
-    // Spread over a few history samples, so the charts have a curve.
+    ASSERT_TRUE(test::LocateOne(*stub, {x(rng), y(rng)}, &response).ok());
+    // Spread over a few history samples, so the charts have a curve: the
+    // next burst starts once a sample taken after this one has landed.
     if ((i + 1) % kQueriesPerBurst == 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+      const double burst_end = LatestSampleTime(port);
+      EXPECT_TRUE(
+          test::WaitUntil([&] { return LatestSampleTime(port) > burst_end; }));
     }
   }
   // Fold every query into the histogram the page draws.
@@ -225,4 +234,4 @@ TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
 }
 
 }  // namespace
-}  // namespace locator::testing
+}  // namespace locator::test

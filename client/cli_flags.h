@@ -1,0 +1,52 @@
+// The `locator` command line, parsed without running anything: flags (long
+// only, anywhere on the line, so that "locate -0.5 2" keeps its negative
+// coordinate), the command and its arguments, and the checks that need no
+// server.
+//
+// Thread-safety: stateless functions.
+
+#ifndef LOCATOR_CLIENT_CLI_FLAGS_H_
+#define LOCATOR_CLIENT_CLI_FLAGS_H_
+
+#include <chrono>
+#include <string>
+#include <string_view>
+
+#include "client/channel_options.h"
+#include "client/cli_commands.h"
+#include "common/status.h"
+
+namespace locator {
+
+// One command of the CLI.
+using CliCommand = int (*)(LocatorClient& client, const CliSettings& settings,
+                           const CliArgs& args);
+
+// RunLocate for "locate", ... RunHealth for "health"; null for anything else.
+CliCommand FindCliCommand(std::string_view name);
+
+// What a command line asks for.
+struct CliLine {
+  bool help = false;  // --help: print settings.usage, nothing else
+  CliCommand command = nullptr;
+  CliArgs args;  // the command's arguments
+  CliSettings settings;
+  ChannelOptions channel;  // its security is loaded later, from `security`
+  ChannelSecurityFlags security;
+  // Of every call: --deadline-ms, or 10 minutes for `reload` by default.
+  std::chrono::milliseconds deadline{5000};
+};
+
+// The default deadline of `reload`: building a triangulation of tens of
+// millions of points takes minutes.
+inline constexpr std::chrono::minutes kReloadDeadline{10};
+
+// Parses `argc`/`argv` into `line` (settings.usage is set even on failure).
+// InvalidArgument with the problem: the flag parser's message, "no command",
+// "unknown command 'X'", "--deadline-ms must be positive", "--chunk must be
+// positive", "--dataset is for reload only".
+Status ParseCliLine(int argc, const char* const* argv, CliLine* line);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CLIENT_CLI_FLAGS_H_

@@ -1,0 +1,138 @@
+// The `locator` CLI's output formats, without a server: text, JSON and the
+// CSV rows of `locator batch`.
+
+#include "client/cli_format.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace locator {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(CliFormatTest, FormatDoubleIsShortestAndReadsBackExactly) {
+  EXPECT_EQ(FormatDouble(0.1), "0.1");
+  EXPECT_EQ(FormatDouble(1e-07), "1e-07");
+  EXPECT_EQ(FormatDouble(-2.5), "-2.5");
+  EXPECT_EQ(FormatDouble(3), "3");
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> any(-1e6, 1e6);
+  for (int i = 0; i < 1000; ++i) {
+    const double value = any(rng);
+    EXPECT_EQ(std::strtod(FormatDouble(value).c_str(), nullptr), value);
+  }
+}
+
+TEST(CliFormatTest, LocationTypeNameDropsThePrefix) {
+  EXPECT_EQ(LocationTypeName(v1::LOCATION_TYPE_FACE), "FACE");
+  EXPECT_EQ(LocationTypeName(v1::LOCATION_TYPE_EDGE), "EDGE");
+  EXPECT_EQ(LocationTypeName(v1::LOCATION_TYPE_VERTEX), "VERTEX");
+  EXPECT_EQ(LocationTypeName(v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL),
+            "OUTSIDE_CONVEX_HULL");
+  // A value newer than this client: its number.
+  EXPECT_EQ(LocationTypeName(static_cast<v1::LocationType>(77)), "77");
+}
+
+v1::LocateResponse FaceAnswer() {
+  v1::LocateResponse response;
+  response.set_type(v1::LOCATION_TYPE_FACE);
+  response.set_triangle_id(42);
+  const double corners[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  for (int i = 0; i < 3; ++i) {
+    response.add_vertex_ids(10 + i);
+    v1::Point* vertex = response.add_vertices();
+    vertex->set_x(corners[i][0]);
+    vertex->set_y(corners[i][1]);
+  }
+  for (double b : {0.5, 0.25, 0.25}) response.add_barycentric(b);
+  response.set_value(1.75);
+  response.mutable_cost()->set_faces_visited(3);
+  response.mutable_cost()->set_comparisons(4);
+  response.mutable_cost()->set_table_lookups(1);
+  response.mutable_cost()->set_total(8);
+  return response;
+}
+
+TEST(CliFormatTest, FormatLocateShowsEveryPart) {
+  EXPECT_EQ(FormatLocate(FaceAnswer()),
+            "type         FACE\n"
+            "triangle     42\n"
+            "vertices     10 (0, 0)\n"
+            "             11 (1, 0)\n"
+            "             12 (0, 1)\n"
+            "barycentric  0.5 0.25 0.25\n"
+            "value        1.75\n"
+            "cost         8 (3 faces visited, 4 comparisons, 1 table "
+            "lookups)\n");
+}
+
+TEST(CliFormatTest, FormatLocateOutsideTheHull) {
+  v1::LocateResponse response;
+  response.set_type(v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL);
+  response.set_triangle_id(7);
+  response.add_hull_edge_vertex_ids(3);
+  response.add_hull_edge_vertex_ids(4);
+  const std::string text = FormatLocate(response);
+  EXPECT_THAT(text, HasSubstr("type         OUTSIDE_CONVEX_HULL\n"));
+  EXPECT_THAT(text, HasSubstr("hull edge    3 4\n"));
+  EXPECT_THAT(text, HasSubstr("barycentric  none (outside the convex hull)\n"));
+  EXPECT_THAT(text, HasSubstr("value        none\n"));
+}
+
+TEST(CliFormatTest, MessageToJsonUsesProtoNamesAndPrintsDefaults) {
+  v1::LocateResponse response;
+  response.set_triangle_id(5);
+  const std::string json = MessageToJson(response);
+  EXPECT_THAT(json, HasSubstr("\"triangle_id\":\"5\""));
+  // Defaults too: the unset enum and the empty lists.
+  EXPECT_THAT(json, HasSubstr("\"type\":\"LOCATION_TYPE_UNSPECIFIED\""));
+  EXPECT_THAT(json, HasSubstr("\"vertex_ids\":[]"));
+  EXPECT_EQ(json.back(), '\n');
+  EXPECT_EQ(json.find('\n'), json.size() - 1);  // one line
+}
+
+TEST(CliFormatTest, FormatStatsRedactedSourceAndReloadInProgress) {
+  v1::GetStatsResponse stats;
+  stats.set_generation(3);
+  stats.set_reload_in_progress(true);
+  stats.set_strategy("self-tuning");
+  stats.mutable_memory()->set_triangulation_bytes(3 * 1024 * 1024 / 2);
+  const std::string text = FormatStats(stats);
+  EXPECT_THAT(text, HasSubstr("dataset      (redacted)\n"));
+  EXPECT_THAT(text, HasSubstr("generation   3 (reload in progress)\n"));
+  EXPECT_THAT(text, HasSubstr("strategy     self-tuning\n"));
+  EXPECT_THAT(text, HasSubstr("memory       1.5 MiB triangulation, 0.0 MiB"));
+}
+
+TEST(CliFormatTest, BatchCsvRowsLeaveInapplicableCellsEmpty) {
+  v1::LocateBatchResponse response;
+  response.add_types(v1::LOCATION_TYPE_FACE);
+  response.add_types(v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL);
+  response.add_triangle_ids(42);
+  response.add_triangle_ids(7);
+  for (int64_t id : {10, 11, 12, 3, 4, -1}) response.add_vertex_ids(id);
+  for (double b : {0.5, 0.25, 0.25, 0.0, 0.0, 0.0}) response.add_barycentric(b);
+  response.add_values(1.75);
+  response.add_values(std::numeric_limits<double>::quiet_NaN());
+  response.add_costs(8);
+  response.add_costs(2);
+  const std::vector<double> xs = {0.25, 5};
+  const std::vector<double> ys = {0.25, -1e-07};
+  std::string csv = BatchCsvHeader();
+  AppendBatchCsvRows(xs, ys, response, &csv);
+  EXPECT_EQ(csv,
+            "x,y,type,triangle_id,v0,v1,v2,b0,b1,b2,value,cost\n"
+            "0.25,0.25,FACE,42,10,11,12,0.5,0.25,0.25,1.75,8\n"
+            "5,-1e-07,OUTSIDE_CONVEX_HULL,7,3,4,-1,,,,,2\n");
+}
+
+}  // namespace
+}  // namespace locator
