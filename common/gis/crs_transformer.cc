@@ -102,9 +102,10 @@ Status CrsTransformer::ForThread(const std::string& request_crs,
   };
   // Most recently used first.
   thread_local std::vector<Entry> cache;
-  const auto hit = std::find_if(cache.begin(), cache.end(), [&](const Entry& e) {
-    return e.request_crs == request_crs && e.dataset_crs == dataset_crs;
-  });
+  const auto hit =
+      std::find_if(cache.begin(), cache.end(), [&](const Entry& e) {
+        return e.request_crs == request_crs && e.dataset_crs == dataset_crs;
+      });
   if (hit != cache.end()) {
     std::rotate(cache.begin(), hit, hit + 1);
     *out = cache.front().transformer.get();

@@ -41,8 +41,7 @@ class CrsTransformer {
   // The calling thread's transformer for the pair, created on first use.
   // *out stays valid until this thread's next ForThread call.
   static Status ForThread(const std::string& request_crs,
-                          const std::string& dataset_crs,
-                          CrsTransformer** out);
+                          const std::string& dataset_crs, CrsTransformer** out);
 
   CrsTransformer(const CrsTransformer&) = delete;
   CrsTransformer& operator=(const CrsTransformer&) = delete;

@@ -57,8 +57,8 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
 std::string LayerNames(GDALDataset& source) {
   std::string names;
   for (OGRLayer* layer : source.GetLayers()) {
-    names += (names.empty() ? "'" : ", '") + std::string(layer->GetName()) +
-             "'";
+    names +=
+        (names.empty() ? "'" : ", '") + std::string(layer->GetName()) + "'";
   }
   return names.empty() ? "none" : names;
 }
@@ -103,8 +103,8 @@ Status FieldValue(const Where& where, const OGRFeature& feature, int index,
   char* end = nullptr;
   *value = CPLStrtod(text, &end);
   if (end == text || *end != '\0') {
-    return where.Bad(feature.GetFID(), "field '" + name + "' is '" + text +
-                                           "', not a number");
+    return where.Bad(feature.GetFID(),
+                     "field '" + name + "' is '" + text + "', not a number");
   }
   if (!std::isfinite(*value)) {
     return where.Bad(feature.GetFID(), "field '" + name + "' is non-finite");
@@ -164,14 +164,14 @@ class PointReader {
         return AddPoint(fid, *geometry->toPoint(), field_value);
       case wkbMultiPoint:
         for (const OGRPoint* point : *geometry->toMultiPoint()) {
-          if (Status status = AddPoint(fid, *point, field_value); !status.ok()) {
+          if (Status status = AddPoint(fid, *point, field_value);
+              !status.ok()) {
             return status;
           }
         }
         return Status::OK();
       default:
-        return where_.Bad(fid, std::string("a ") +
-                                   geometry->getGeometryName() +
+        return where_.Bad(fid, std::string("a ") + geometry->getGeometryName() +
                                    " where points are expected (Point, "
                                    "MultiPoint)");
     }
@@ -186,9 +186,9 @@ class PointReader {
       return where_.Bad(fid, "a point without Z in a layer with Z");
     }
     if (out_->points.size() >= limits_.max_points) {
-      return Status::ResourceExhausted(
-          where_.Prefix() + ": more than " +
-          std::to_string(limits_.max_points) + " points (max_points limit)");
+      return Status::ResourceExhausted(where_.Prefix() + ": more than " +
+                                       std::to_string(limits_.max_points) +
+                                       " points (max_points limit)");
     }
     out_->points.push_back(Point2{point.getX(), point.getY()});
     out_->values.push_back(geometry_z_ ? point.getZ() : field_value);
@@ -203,8 +203,8 @@ class PointReader {
 };
 
 // Appends `curve`'s points to *line; Z values too when `keep_z`.
-Status AppendCurve(const Where& where, GIntBig fid,
-                   const OGRSimpleCurve& curve, bool keep_z, Polyline* line) {
+Status AppendCurve(const Where& where, GIntBig fid, const OGRSimpleCurve& curve,
+                   bool keep_z, Polyline* line) {
   for (const OGRPoint& point : curve) {
     if (Status status = CheckFinite(where, fid, point); !status.ok()) {
       return status;
@@ -221,9 +221,8 @@ Status ReadBreakline(const Where& where, GIntBig fid, const OGRGeometry& g,
   switch (wkbFlatten(g.getGeometryType())) {
     case wkbLineString: {
       Polyline line;
-      if (Status status =
-              AppendCurve(where, fid, *g.toLineString(), keep_z && g.Is3D(),
-                          &line);
+      if (Status status = AppendCurve(where, fid, *g.toLineString(),
+                                      keep_z && g.Is3D(), &line);
           !status.ok()) {
         return status;
       }
@@ -369,9 +368,9 @@ Status LoadOgrDataset(const std::string& spec_text, Dataset* out,
     return status;
   }
   std::vector<OGRLayer*> layers = {points};
-  if (Status status = PointReader(Where{spec.source, points->GetName()},
-                                  limits, &dataset)
-                          .Read(*points, spec);
+  if (Status status =
+          PointReader(Where{spec.source, points->GetName()}, limits, &dataset)
+              .Read(*points, spec);
       !status.ok()) {
     return status;
   }
@@ -385,9 +384,9 @@ Status LoadOgrDataset(const std::string& spec_text, Dataset* out,
       return status;
     }
     layers.push_back(layer);
-    if (Status status = ReadConstraintLayer(Where{spec.source, name}, *layer,
-                                            domain, dataset.has_values(),
-                                            &dataset.constraints);
+    if (Status status =
+            ReadConstraintLayer(Where{spec.source, name}, *layer, domain,
+                                dataset.has_values(), &dataset.constraints);
         !status.ok()) {
       return status;
     }

@@ -32,7 +32,8 @@ std::string LastProjError() {
 Status CreateCrs(std::string_view crs, PjPtr* out) {
   PJ_CONTEXT* ctx = ThreadProjContext();
   std::string text(crs);
-  if (text.starts_with("+proj=") && text.find("type=crs") == std::string::npos) {
+  if (text.starts_with("+proj=") &&
+      text.find("type=crs") == std::string::npos) {
     text += " +type=crs";
   }
   PjPtr created(text.empty() ? nullptr : proj_create(ctx, text.c_str()));
