@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <mutex>
+#include <utility>
 
 #include "common/gis/proj_objects.h"
 
@@ -10,6 +13,8 @@ namespace locator::gis {
 namespace {
 
 constexpr int kFullConfidence = 100;
+// DescribeCrsMemoized forgets everything when it holds this many.
+constexpr size_t kMemoCapacity = 8;
 
 // The horizontal part of `crs`: the first component of a compound CRS, the
 // source of a bound CRS, else `crs` itself.
@@ -74,6 +79,23 @@ Status DescribeCrs(std::string_view crs, CrsInfo* info) {
     info->axis_units.emplace_back(unit == nullptr ? "" : unit);
   }
   return Status::OK();
+}
+
+Status DescribeCrsMemoized(const std::string& crs, CrsInfo* info) {
+  static std::mutex mu;
+  static std::map<std::string, std::pair<Status, CrsInfo>> memo;
+  {
+    std::lock_guard<std::mutex> lock(mu);
+    if (const auto it = memo.find(crs); it != memo.end()) {
+      *info = it->second.second;
+      return it->second.first;
+    }
+  }
+  const Status status = DescribeCrs(crs, info);
+  std::lock_guard<std::mutex> lock(mu);
+  if (memo.size() >= kMemoCapacity) memo.clear();
+  memo.emplace(crs, std::make_pair(status, *info));
+  return status;
 }
 
 }  // namespace locator::gis

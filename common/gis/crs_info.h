@@ -1,7 +1,8 @@
 // CrsInfo: what stats say about a dataset's coordinate reference system.
 //
-// Thread-safety: DescribeCrs may be called from any thread (it uses the
-// calling thread's PROJ context); a CrsInfo is a plain value.
+// Thread-safety: both functions may be called from any thread (they use
+// the calling thread's PROJ context; the memo is guarded by a mutex); a
+// CrsInfo is a plain value.
 
 #ifndef LOCATOR_COMMON_GIS_CRS_INFO_H_
 #define LOCATOR_COMMON_GIS_CRS_INFO_H_
@@ -28,6 +29,10 @@ struct CrsInfo {
 // Describes the CRS `crs` names (EPSG:NNNN, WKT or a PROJ string);
 // InvalidArgument naming it when PROJ does not know it.
 Status DescribeCrs(std::string_view crs, CrsInfo* info);
+
+// DescribeCrs, memoized process-wide for the few most recent CRSs
+// (identifying a WKT without an ID takes milliseconds), for stats.
+Status DescribeCrsMemoized(const std::string& crs, CrsInfo* info);
 
 }  // namespace locator::gis
 
