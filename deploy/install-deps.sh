@@ -14,6 +14,7 @@ PACKAGES=(
   prometheus-cpp-dev
   python3 python3-grpcio python3-protobuf
   libssl-dev
+  libgdal-dev gdal-bin libproj-dev proj-bin
   chromium nginx openssl curl
   clang libclang-rt-14-dev
 )
