@@ -41,8 +41,7 @@ void LocateStreamReactor::OnReadDone(bool ok) {
       if (!outcome_) outcome_ = grpc::Status::OK;
     } else {
       LocateResult result;
-      const v1::Point& point = request_.point();
-      Status status = locate_(Point2{point.x(), point.y()}, &result);
+      Status status = locate_(request_, &result);
       if (status.ok()) {
         ToLocateResponse(result, &answers_.emplace_back());
       } else if (!outcome_) {

@@ -129,6 +129,7 @@ std::string CrsTransformer::Describe() const {
 
 Status CrsTransformer::ToDataset(std::span<Point2> points) const {
   for (size_t i = 0; i < points.size(); ++i) {
+    if (!IsFinite(points[i])) continue;  // the caller's check names it
     Point2 lon_lat = points[i];
     const bool inside =
         Transform(request_to_lon_lat_.get(), PJ_FWD, &lon_lat) &&

@@ -50,7 +50,8 @@ class CrsTransformer {
   // Maps `points` (request CRS) to the dataset CRS in place.
   // InvalidArgument naming the first point (by index) outside the area of
   // use of either CRS or that PROJ cannot transform; then `points` is
-  // partly transformed.
+  // partly transformed. Non-finite points are left as they are, for the
+  // caller's own check to name.
   Status ToDataset(std::span<Point2> points) const;
 
   // Maps `points` (dataset CRS) back to the request CRS in place;
