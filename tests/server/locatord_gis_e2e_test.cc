@@ -69,14 +69,6 @@ Dataset LocatordGisTest::reference_points_;
 std::unique_ptr<Triangulation> LocatordGisTest::reference_;
 std::unique_ptr<testing::ServerProcess> LocatordGisTest::server_;
 
-grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
-                    v1::ReloadResponse* response) {
-  grpc::ClientContext context;
-  v1::ReloadRequest request;
-  request.set_dataset(dataset);
-  return stub.Reload(&context, request, response);
-}
-
 // Lon/lat points over the hill (which is centred at 15°E, 49.6525°N).
 std::vector<Point2> LonLatQueries() {
   std::vector<Point2> points;

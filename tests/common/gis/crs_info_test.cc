@@ -9,20 +9,21 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-TEST(CrsInfoTest, UtmZone33North) {
-  CrsInfo info;
-  ASSERT_TRUE(DescribeCrs("EPSG:32633", &info).ok());
-  EXPECT_EQ(info.name, "WGS 84 / UTM zone 33N");
-  EXPECT_EQ(info.epsg_code, 32633);
-  EXPECT_THAT(info.axis_units, ElementsAre("metre", "metre"));
-}
-
-TEST(CrsInfoTest, Wgs84LonLat) {
-  CrsInfo info;
-  ASSERT_TRUE(DescribeCrs("EPSG:4326", &info).ok());
-  EXPECT_EQ(info.name, "WGS 84");
-  EXPECT_EQ(info.epsg_code, 4326);
-  EXPECT_THAT(info.axis_units, ElementsAre("degree", "degree"));
+TEST(CrsInfoTest, UtmZone33NorthAndWgs84) {
+  const struct {
+    const char* crs;
+    const char* name;
+    int epsg_code;
+    const char* unit;
+  } kCases[] = {{"EPSG:32633", "WGS 84 / UTM zone 33N", 32633, "metre"},
+                {"EPSG:4326", "WGS 84", 4326, "degree"}};
+  for (const auto& c : kCases) {
+    CrsInfo info;
+    ASSERT_TRUE(DescribeCrs(c.crs, &info).ok()) << c.crs;
+    EXPECT_EQ(info.name, c.name);
+    EXPECT_EQ(info.epsg_code, c.epsg_code);
+    EXPECT_THAT(info.axis_units, ElementsAre(c.unit, c.unit)) << c.crs;
+  }
 }
 
 TEST(CrsInfoTest, ProjStringAndUsFeet) {
