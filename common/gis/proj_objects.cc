@@ -13,8 +13,12 @@ constexpr size_t kQuotedCrsChars = 80;
 }  // namespace
 
 std::string QuotedCrs(std::string_view crs) {
-  if (crs.size() <= kQuotedCrsChars) return "'" + std::string(crs) + "'";
-  return "'" + std::string(crs.substr(0, kQuotedCrsChars)) + "...'";
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on
+  // "'" + std::string(...).
+  std::string quoted = "'";
+  quoted.append(crs.substr(0, kQuotedCrsChars));
+  quoted.append(crs.size() > kQuotedCrsChars ? "...'" : "'");
+  return quoted;
 }
 
 PJ_CONTEXT* ThreadProjContext() {
