@@ -38,8 +38,7 @@ void LocateStreamReactor::OnReadDone(bool ok) {
       actions = ToActionsLocked(state_.ReadFailed());
     } else {
       LocateResult result;
-      const v1::Point& point = request_.point();
-      const Status located = locate_(Point2{point.x(), point.y()}, &result);
+      const Status located = locate_(request_, &result);
       actions = ToActionsLocked(state_.PointRead(located, result));
     }
   }

@@ -46,8 +46,10 @@ class LocateStreamReactor final
  public:
   static constexpr std::chrono::seconds kStuckWriteGrace{1};
 
-  // Locates one point: Engine::Locate, or the no-op server's canned answer.
-  using LocateFn = std::function<Status(const Point2& point, LocateResult*)>;
+  // Answers one request: the engine's (in the request's CRS), or the no-op
+  // server's canned answer.
+  using LocateFn =
+      std::function<Status(const v1::LocateRequest& request, LocateResult*)>;
 
   // Starts reading the stream of `context`; every point is answered with
   // `locate`; `default_deadline` (zero: none) bounds a stream whose client

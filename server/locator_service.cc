@@ -4,6 +4,7 @@
 
 #include "server/locate_stream_reactor.h"
 #include "server/proto_convert.h"
+#include "server/request_crs.h"
 #include "server/stats_redaction.h"
 #include "server/status_mapping.h"
 
@@ -99,8 +100,7 @@ grpc::ServerUnaryReactor* LocatorService::Locate(
     return FinishNow(context, refused);
   }
   LocateResult result;
-  const Status status = call.engine->Locate(
-      Point2{request->point().x(), request->point().y()}, &result);
+  const Status status = LocateInRequestCrs(*call.engine, *request, &result);
   if (status.ok()) ToLocateResponse(result, response);
   return FinishNow(context, ToGrpcStatus(status));
 }
@@ -113,11 +113,23 @@ grpc::ServerUnaryReactor* LocatorService::LocateBatch(
       !refused.ok()) {
     return FinishNow(context, refused);
   }
+  // Points in another CRS are transformed once, into a copy that the
+  // function holds.
+  std::shared_ptr<v1::LocateBatchRequest> in_dataset_crs;
+  if (!request->crs().empty()) {
+    in_dataset_crs = std::make_shared<v1::LocateBatchRequest>();
+    if (Status status =
+            BatchInDatasetCrs(*call.engine, *request, in_dataset_crs.get());
+        !status.ok()) {
+      return FinishNow(context, ToGrpcStatus(status));
+    }
+  }
   // The function (and with it the admission) lives until the batch ends.
   return batch_locator_.Serve(
-      context, *request,
-      [call](std::span<const Point2> points, std::vector<LocateResult>* results,
-             const std::function<bool()>& keep_going) {
+      context, in_dataset_crs ? *in_dataset_crs : *request,
+      [call, in_dataset_crs](std::span<const Point2> points,
+                             std::vector<LocateResult>* results,
+                             const std::function<bool()>& keep_going) {
         return call.engine->LocateBatch(points, results, keep_going);
       },
       response);
@@ -133,8 +145,8 @@ LocatorService::LocateStream(grpc::CallbackServerContext* context) {
   // The reactor holds the function (and with it the admission) until done.
   return new LocateStreamReactor(
       context, default_deadline_,
-      [call](const Point2& point, LocateResult* result) {
-        return call.engine->Locate(point, result);
+      [call](const v1::LocateRequest& request, LocateResult* result) {
+        return LocateInRequestCrs(*call.engine, request, result);
       });
 }
 

@@ -21,6 +21,7 @@
 
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
+#include "server/dataset_source.h"
 #include "server/http/status_server.h"
 #include "server/locator_service.h"
 #include "server/server_config.h"
@@ -84,7 +85,7 @@ Status LoadAndTriangulate(const ServerConfig& config,
   const auto load_start = std::chrono::steady_clock::now();
   Dataset dataset;
   if (Status status =
-          LoadDataset(dataset_spec, &dataset, config.dataset_limits);
+          LoadServedDataset(dataset_spec, config.dataset_limits, &dataset);
       !status.ok()) {
     return status;
   }

@@ -1,6 +1,9 @@
 #include "server/proto_convert.h"
 
 #include <limits>
+#include <string>
+
+#include "common/gis/crs_info.h"
 
 namespace locator {
 namespace {
@@ -43,6 +46,17 @@ T* ResizedColumn(google::protobuf::RepeatedField<T>* column, size_t size) {
   return column->mutable_data();
 }
 
+// The WKT always; name, EPSG code and units as PROJ describes them (the
+// loader checked that it can).
+void ToCrsStats(const std::string& wkt, v1::CrsStats* crs) {
+  crs->set_wkt(wkt);
+  gis::CrsInfo info;
+  if (!gis::DescribeCrsMemoized(wkt, &info).ok()) return;
+  crs->set_name(info.name);
+  crs->set_epsg_code(info.epsg_code);
+  for (const std::string& unit : info.axis_units) crs->add_axis_units(unit);
+}
+
 void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
   dataset->set_source(info.source);
   dataset->set_input_points(info.input_points);
@@ -52,6 +66,7 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
   ToProtoBox(info.bounding_box, dataset->mutable_bounding_box());
   dataset->set_has_values(info.has_values);
   dataset->set_build_seconds(info.build_seconds);
+  if (!info.crs.empty()) ToCrsStats(info.crs, dataset->mutable_crs());
 }
 
 }  // namespace

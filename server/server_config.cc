@@ -264,7 +264,9 @@ Status ParseServerConfig(int argc, const char* const argv[],
   po::options_description description("locatord flags");
   description.add_options()(
       "dataset", po::value(&dataset)->default_value(defaults.dataset),
-      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED]")(
+      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED] | "
+      "GIS.gpkg|.shp|.geojson|.fgb[?OPTIONS] | ogr:SOURCE[?OPTIONS] "
+      "(OPTIONS: layer=, z=, where=, breaklines=, domain=, a_srs=, oo=)")(
       "max-dataset-points",
       po::value(&max_dataset_points)
           ->default_value(std::to_string(defaults.dataset_limits.max_points)),

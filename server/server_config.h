@@ -43,7 +43,8 @@ struct ServingConfig {
 // locatord's flags.
 struct ServerConfig {
   ServingConfig serving;
-  // --dataset: a file path or generator spec (see LoadDataset).
+  // --dataset: a file path, generator spec or OGR source (see
+  // LoadServedDataset).
   std::string dataset = "uniform:1000000:1";
   // --max-dataset-points: a larger dataset fails before it is triangulated
   // (each point costs ~200 bytes resident once triangulated).

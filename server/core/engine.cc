@@ -50,6 +50,7 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   info.triangles = t.num_triangles();
   info.bounding_box = t.bounding_box();
   info.has_values = t.has_values();
+  info.crs = std::move(dataset.crs);
   info.triangulation_bytes = t.MemoryBytes();
   info.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

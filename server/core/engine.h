@@ -49,6 +49,8 @@ struct DatasetInfo {
   uint64_t triangles = 0;          // finite faces
   BoundingBox bounding_box;
   bool has_values = false;
+  // The dataset's CRS as WKT (Dataset::crs); empty when it has none.
+  std::string crs;
   size_t triangulation_bytes = 0;
   double build_seconds = 0;
 };

@@ -3,7 +3,8 @@
 // the outcome. A refused dataset makes locatord exit 1 with a message naming
 // the file (and the line, where one line is at fault) and the problem; a
 // served one must answer a normal Locate and pass the row's check. Requests
-// are part 1 (bad_input_table_test.cc).
+// are part 1 (bad_input_table_test.cc). GIS sources have rows here too;
+// all their errors are in tests/common/gis/ogr_dataset_test.cc.
 //
 // 10^7 points: with the default --max-dataset-points (10^7) locatord serves
 // uniform:10000000 in ~40 s and ~1.8 GB resident on the 2-core CI machine,
@@ -134,6 +135,29 @@ void ExpectMemoryAccounted(const ServerProcess& server,
   EXPECT_GT(stats.memory().tuning_bytes(), 0u);
 }
 
+// A GeoJSON FeatureCollection of one feature with `geometry`, or of none.
+std::string GeoJson(const std::string& geometry) {
+  std::string features;
+  if (!geometry.empty()) {
+    features =
+        R"({"type":"Feature","properties":{},"geometry":)" + geometry + "}";
+  }
+  return R"({"type":"FeatureCollection","features":[)" + features + "]}";
+}
+
+// GeoJSON's CRS is WGS 84 unless the file says otherwise; with Z it is
+// the 3D one, EPSG:4979, whose horizontal axes are in degrees.
+void ExpectWgs84(const ServerProcess& server, const std::string& /*dataset*/) {
+  auto stub = NewStub(server);
+  const v1::GetStatsResponse stats = GetStats(*stub);
+  EXPECT_EQ(stats.dataset().crs().epsg_code(), 4979u);
+  EXPECT_EQ(stats.dataset().crs().name(), "WGS 84");
+  EXPECT_THAT(stats.dataset().crs().axis_units(),
+              ::testing::ElementsAre("degree", "degree"));
+  EXPECT_EQ(stats.dataset().input_points(), 4u);
+  EXPECT_TRUE(stats.dataset().has_values());
+}
+
 std::vector<DatasetRow> DatasetRows() {
   const auto xy = [](int i) {
     return std::to_string(i % 37) + "," + std::to_string(i / 37);
@@ -261,6 +285,44 @@ std::vector<DatasetRow> DatasetRows() {
        {"--max-dataset-points", "1000000"},
        1,
        "uniform:10000000:1: more than 1000000 points (max_points limit)"},
+      {"GisMissingFile",
+       "a GeoPackage that does not exist",
+       "",
+       "/nonexistent/survey.gpkg",
+       {},
+       1,
+       "/nonexistent/survey.gpkg: no such file or directory"},
+      {"GisUnreadable",
+       "a .geojson file that is not GeoJSON",
+       "broken.geojson",
+       "{ this is not json",
+       {},
+       1,
+       "{file}: not a readable OGR vector source"},
+      {"GisLineInPointsLayer",
+       "a GeoJSON LineString where points are expected",
+       "line.geojson",
+       GeoJson(R"({"type":"LineString","coordinates":[[0,0],[1,1]]})"),
+       {},
+       1,
+       "_line': feature 0: a LINESTRING where points are expected (Point, "
+       "MultiPoint)"},
+      {"GisEmptyLayer",
+       "a GeoJSON FeatureCollection without features",
+       "empty.geojson",
+       GeoJson(""),
+       {},
+       1,
+       "_empty' has no features"},
+      {"GisServedWithCrs",
+       "GeoJSON points with Z (served; GetStats names its CRS, WGS 84)",
+       "points.geojson",
+       GeoJson(R"({"type":"MultiPoint","coordinates":[[0,0,1],[1,0,2],)"
+               R"([0,1,3],[1,1,4]]})"),
+       {},
+       0,
+       "",
+       ExpectWgs84},
       {"MemoryAccounted",
        "uniform:200000 (served; GetStats has its bytes)",
        "",

@@ -181,6 +181,14 @@ grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
   return stub.Locate(&context, LocateRequestFor(q), response);
 }
 
+grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
+                    v1::ReloadResponse* response) {
+  grpc::ClientContext context;
+  v1::ReloadRequest request;
+  request.set_dataset(dataset);
+  return stub.Reload(&context, request, response);
+}
+
 v1::GetStatsResponse GetStats(v1::Locator::Stub& stub) {
   grpc::ClientContext context;
   v1::GetStatsResponse stats;

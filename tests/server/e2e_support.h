@@ -72,6 +72,10 @@ v1::LocateRequest LocateRequestFor(const Point2& q);
 // Calls Locate for `q`.
 grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
                        v1::LocateResponse* response);
+// Calls Reload for `dataset` ("": the configured one).
+grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
+                    v1::ReloadResponse* response);
+
 // Calls GetStats; a failed call is a test failure (and an empty answer).
 v1::GetStatsResponse GetStats(v1::Locator::Stub& stub);
 // Polls GetStats until `done` holds or test::kGenerousWait passes; returns

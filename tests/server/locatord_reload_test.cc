@@ -44,14 +44,6 @@ void WriteCsv(const std::string& path, size_t n, uint64_t seed) {
   ASSERT_EQ(std::rename(temporary.c_str(), path.c_str()), 0);
 }
 
-grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
-                    v1::ReloadResponse* response) {
-  grpc::ClientContext context;
-  v1::ReloadRequest request;
-  request.set_dataset(dataset);
-  return stub.Reload(&context, request, response);
-}
-
 // Checks unary and batch answers for points in and around the unit square
 // against CGAL on `dataset_path`.
 void ExpectAnswersAgree(v1::Locator::Stub& stub,

@@ -61,11 +61,13 @@ grpc::ServerUnaryReactor* NoopLocatorService::LocateBatch(
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
 NoopLocatorService::LocateStream(grpc::CallbackServerContext* context) {
-  return new LocateStreamReactor(context, default_deadline_,
-                                 [](const Point2& point, LocateResult* result) {
-                                   *result = CannedAnswer(point);
-                                   return Status::OK();
-                                 });
+  return new LocateStreamReactor(
+      context, default_deadline_,
+      [](const v1::LocateRequest& request, LocateResult* result) {
+        *result =
+            CannedAnswer(Point2{request.point().x(), request.point().y()});
+        return Status::OK();
+      });
 }
 
 grpc::ServerUnaryReactor* NoopLocatorService::GetStats(

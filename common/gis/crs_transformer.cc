@@ -1,0 +1,167 @@
+#include "common/gis/crs_transformer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+namespace locator::gis {
+namespace {
+
+// A transformation from `from` to `to`, normalized to x = lon/easting.
+Status CreateTransformation(const PJ* from, const PJ* to, PjPtr* out) {
+  PJ_CONTEXT* ctx = ThreadProjContext();
+  PjPtr raw(proj_create_crs_to_crs_from_pj(ctx, from, to, nullptr, nullptr));
+  if (raw != nullptr) {
+    out->reset(proj_normalize_for_visualization(ctx, raw.get()));
+  }
+  if (*out == nullptr) {
+    return Status::InvalidArgument(std::string("no transformation from '") +
+                                   proj_get_name(from) + "' to '" +
+                                   proj_get_name(to) + "': " + LastProjError());
+  }
+  return Status::OK();
+}
+
+std::string PointText(size_t index, const Point2& p) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "point " << index << " (" << p.x << ", " << p.y << ")";
+  return out.str();
+}
+
+bool Transform(PJ* pj, PJ_DIRECTION direction, Point2* p) {
+  PJ_COORD c = proj_coord(p->x, p->y, 0, 0);
+  c = proj_trans(pj, direction, c);
+  if (!std::isfinite(c.xy.x) || !std::isfinite(c.xy.y)) return false;
+  *p = Point2{c.xy.x, c.xy.y};
+  return true;
+}
+
+}  // namespace
+
+bool CrsTransformer::AreaOfUse::Contains(double lon, double lat) const {
+  if (lat < south || lat > north) return false;
+  if (west <= east) return lon >= west && lon <= east;
+  return lon >= west || lon <= east;
+}
+
+CrsTransformer::~CrsTransformer() = default;
+
+Status CrsTransformer::Create(const std::string& request_crs,
+                              const std::string& dataset_crs,
+                              std::unique_ptr<CrsTransformer>* out) {
+  PjPtr request, dataset;
+  if (Status status = CreateCrs(request_crs, &request); !status.ok()) {
+    return status;
+  }
+  if (Status status = CreateCrs(dataset_crs, &dataset); !status.ok()) {
+    return status;
+  }
+  std::unique_ptr<CrsTransformer> created(new CrsTransformer);
+  created->request_crs_ = request_crs;
+  created->dataset_crs_ = dataset_crs;
+  if (Status status = CreateTransformation(request.get(), dataset.get(),
+                                           &created->request_to_dataset_);
+      !status.ok()) {
+    return status;
+  }
+  PJ_CONTEXT* ctx = ThreadProjContext();
+  PjPtr geodetic(proj_crs_get_geodetic_crs(ctx, request.get()));
+  const PJ_TYPE geodetic_type =
+      geodetic == nullptr ? PJ_TYPE_UNKNOWN : proj_get_type(geodetic.get());
+  if (geodetic_type != PJ_TYPE_GEOGRAPHIC_2D_CRS &&
+      geodetic_type != PJ_TYPE_GEOGRAPHIC_3D_CRS) {
+    return Status::InvalidArgument("CRS " + QuotedCrs(request_crs) +
+                                   " has no geographic base CRS");
+  }
+  if (Status status = CreateTransformation(request.get(), geodetic.get(),
+                                           &created->request_to_lon_lat_);
+      !status.ok()) {
+    return status;
+  }
+  for (const PJ* crs : {request.get(), dataset.get()}) {
+    AreaOfUse area;
+    if (proj_get_area_of_use(ctx, crs, &area.west, &area.south, &area.east,
+                             &area.north, nullptr) &&
+        area.west > -1000) {  // PROJ says -1000 for "unknown"
+      created->areas_.push_back(area);
+    }
+  }
+  *out = std::move(created);
+  return Status::OK();
+}
+
+Status CrsTransformer::ForThread(const std::string& request_crs,
+                                 const std::string& dataset_crs,
+                                 CrsTransformer** out) {
+  struct Entry {
+    std::string request_crs;
+    std::string dataset_crs;
+    std::unique_ptr<CrsTransformer> transformer;
+  };
+  // Most recently used first.
+  thread_local std::vector<Entry> cache;
+  const auto hit =
+      std::find_if(cache.begin(), cache.end(), [&](const Entry& e) {
+        return e.request_crs == request_crs && e.dataset_crs == dataset_crs;
+      });
+  if (hit != cache.end()) {
+    std::rotate(cache.begin(), hit, hit + 1);
+    *out = cache.front().transformer.get();
+    return Status::OK();
+  }
+  std::unique_ptr<CrsTransformer> created;
+  if (Status status = Create(request_crs, dataset_crs, &created);
+      !status.ok()) {
+    return status;
+  }
+  if (cache.size() == kCacheCapacity) cache.pop_back();
+  cache.insert(cache.begin(),
+               Entry{request_crs, dataset_crs, std::move(created)});
+  *out = cache.front().transformer.get();
+  return Status::OK();
+}
+
+std::string CrsTransformer::Describe() const {
+  return "from " + QuotedCrs(request_crs_) + " to " + QuotedCrs(dataset_crs_);
+}
+
+Status CrsTransformer::ToDataset(std::span<Point2> points) const {
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!IsFinite(points[i])) continue;  // the caller's check names it
+    Point2 lon_lat = points[i];
+    const bool inside =
+        Transform(request_to_lon_lat_.get(), PJ_FWD, &lon_lat) &&
+        std::all_of(areas_.begin(), areas_.end(), [&](const AreaOfUse& a) {
+          return a.Contains(lon_lat.x, lon_lat.y);
+        });
+    if (!inside) {
+      return Status::InvalidArgument(PointText(i, points[i]) +
+                                     " is outside the area of use of the "
+                                     "transformation " +
+                                     Describe());
+    }
+    const Point2 original = points[i];
+    if (!Transform(request_to_dataset_.get(), PJ_FWD, &points[i])) {
+      return Status::InvalidArgument(PointText(i, original) +
+                                     " cannot be transformed " + Describe() +
+                                     ": " + LastProjError());
+    }
+  }
+  return Status::OK();
+}
+
+Status CrsTransformer::ToRequest(std::span<Point2> points) const {
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Point2 original = points[i];
+    if (!Transform(request_to_dataset_.get(), PJ_INV, &points[i])) {
+      return Status::InvalidArgument(PointText(i, original) +
+                                     " cannot be transformed back " +
+                                     Describe() + ": " + LastProjError());
+    }
+  }
+  return Status::OK();
+}
+
+}  // namespace locator::gis

@@ -1,0 +1,80 @@
+// CrsTransformer: maps points between a request's CRS and a dataset's CRS
+// with PROJ, in traditional GIS axis order (x = longitude/easting, y =
+// latitude/northing) on both sides, whatever the CRS definitions say.
+//
+// It owns the PROJ transformation from the request CRS to the dataset CRS,
+// the conversion of request points to longitude/latitude for the
+// area-of-use check, and the areas of use of both CRSs.
+//
+// Invariant: both CRSs were known to PROJ at creation and every PJ belongs
+// to the creating thread's PROJ context.
+//
+// Thread-safety: none. PROJ objects are not thread-safe and creating one is
+// slow (milliseconds, a database lookup), so callers use ForThread(): a
+// bounded per-thread cache keyed by the (request CRS, dataset CRS) pair.
+
+#ifndef LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_
+#define LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "common/geometry.h"
+#include "common/gis/proj_objects.h"
+#include "common/status.h"
+
+namespace locator::gis {
+
+class CrsTransformer {
+ public:
+  // Pairs a thread's cache holds; the least recently used one goes first.
+  static constexpr size_t kCacheCapacity = 16;
+
+  // Creates a transformer; InvalidArgument naming the CRS PROJ does not
+  // know, or the pair it cannot transform between.
+  static Status Create(const std::string& request_crs,
+                       const std::string& dataset_crs,
+                       std::unique_ptr<CrsTransformer>* out);
+
+  // The calling thread's transformer for the pair, created on first use.
+  // *out stays valid until this thread's next ForThread call.
+  static Status ForThread(const std::string& request_crs,
+                          const std::string& dataset_crs, CrsTransformer** out);
+
+  CrsTransformer(const CrsTransformer&) = delete;
+  CrsTransformer& operator=(const CrsTransformer&) = delete;
+  ~CrsTransformer();
+
+  // Maps `points` (request CRS) to the dataset CRS in place.
+  // InvalidArgument naming the first point (by index) outside the area of
+  // use of either CRS or that PROJ cannot transform; then `points` is
+  // partly transformed. Non-finite points are left as they are, for the
+  // caller's own check to name.
+  Status ToDataset(std::span<Point2> points) const;
+
+  // Maps `points` (dataset CRS) back to the request CRS in place;
+  // InvalidArgument naming the first point PROJ cannot transform.
+  Status ToRequest(std::span<Point2> points) const;
+
+ private:
+  // A longitude/latitude box in degrees; west > east crosses 180°.
+  struct AreaOfUse {
+    double west, south, east, north;
+    bool Contains(double lon, double lat) const;
+  };
+
+  CrsTransformer() = default;
+  std::string Describe() const;
+
+  std::string request_crs_;
+  std::string dataset_crs_;
+  PjPtr request_to_dataset_;
+  PjPtr request_to_lon_lat_;
+  std::vector<AreaOfUse> areas_;
+};
+
+}  // namespace locator::gis
+
+#endif  // LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_

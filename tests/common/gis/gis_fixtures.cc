@@ -1,0 +1,74 @@
+#include "tests/common/gis/gis_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "tests/testing/run_binary.h"
+
+namespace locator::gis::testing {
+
+void WriteFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  ASSERT_TRUE(out.good()) << "cannot write " << path;
+}
+
+std::string GeometriesGeoJson(const std::vector<std::string>& geometries) {
+  std::string out = R"({"type":"FeatureCollection","features":[)";
+  for (size_t i = 0; i < geometries.size(); ++i) {
+    out += (i == 0 ? "" : ",");
+    out += R"({"type":"Feature","properties":{"id":)" + std::to_string(i) +
+           R"(},"geometry":)" + geometries[i] + "}";
+  }
+  return out + "]}";
+}
+
+std::string PointsGeoJson(const std::vector<PointZ>& points) {
+  std::ostringstream out;
+  out.precision(17);
+  out << R"({"type":"FeatureCollection","features":[)";
+  for (size_t i = 0; i < points.size(); ++i) {
+    const PointZ& p = points[i];
+    out << (i == 0 ? "" : ",") << R"({"type":"Feature","properties":{"id":)"
+        << i << R"(,"height":)" << p.z
+        << R"(},"geometry":{"type":"Point","coordinates":[)" << p.x << ","
+        << p.y << "," << p.z << "]}}";
+  }
+  out << "]}";
+  return out.str();
+}
+
+std::string RunTool(const std::string& program,
+                    const std::vector<std::string>& args) {
+  const locator::testing::BinaryResult result =
+      locator::testing::RunBinary(program, args);
+  EXPECT_EQ(result.exit_code, 0) << program << " failed: " << result.err;
+  return result.out;
+}
+
+void Ogr2Ogr(const std::vector<std::string>& args) {
+  RunTool(OGR2OGR_PATH, args);
+}
+
+std::vector<PointZ> UtmHill(int n) {
+  constexpr double kCenterX = 500000, kCenterY = 5500000;
+  constexpr double kSpacing = 400, kSigma = 1500;
+  std::vector<PointZ> points;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      // A small deterministic jitter keeps the grid from being cocircular.
+      const double x = kCenterX + (i - n / 2) * kSpacing + (j % 3) * 7.0;
+      const double y = kCenterY + (j - n / 2) * kSpacing + (i % 5) * 5.0;
+      const double r2 =
+          (x - kCenterX) * (x - kCenterX) + (y - kCenterY) * (y - kCenterY);
+      points.push_back(
+          {x, y, 400 + 300 * std::exp(-r2 / (2 * kSigma * kSigma))});
+    }
+  }
+  return points;
+}
+
+}  // namespace locator::gis::testing

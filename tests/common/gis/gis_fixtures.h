@@ -1,0 +1,44 @@
+// GIS fixtures made at test time: GeoJSON text written to a scratch
+// directory and converted with the real ogr2ogr, so that no binary file is
+// kept in the repository.
+//
+// Thread-safety: free functions; each test uses its own directory.
+
+#ifndef LOCATOR_TESTS_COMMON_GIS_GIS_FIXTURES_H_
+#define LOCATOR_TESTS_COMMON_GIS_GIS_FIXTURES_H_
+
+#include <string>
+#include <vector>
+
+namespace locator::gis::testing {
+
+struct PointZ {
+  double x, y, z;
+};
+
+// Writes `text` to `path`.
+void WriteFile(const std::string& path, const std::string& text);
+
+// A GeoJSON FeatureCollection of PointZ features, each with the attribute
+// "height" equal to its z (ogr2ogr can drop the Z and keep the field).
+std::string PointsGeoJson(const std::vector<PointZ>& points);
+
+// A GeoJSON FeatureCollection of features with the given geometry objects
+// (GeoJSON text each, e.g. {"type":"LineString","coordinates":[...]}).
+std::string GeometriesGeoJson(const std::vector<std::string>& geometries);
+
+// Runs ogr2ogr with `args`; a failed run fails the test with its stderr.
+void Ogr2Ogr(const std::vector<std::string>& args);
+
+// Runs `program` (OGR2OGR_PATH or CS2CS_PATH) and returns its stdout; a
+// failed run fails the test with its stderr.
+std::string RunTool(const std::string& program,
+                    const std::vector<std::string>& args);
+
+// A hill of `n` x `n` points around (500000, 5500000) in UTM 33N metres:
+// z = 400 + 300 * exp(-r^2 / 2 sigma^2), sigma 1.5 km, spacing 400 m.
+std::vector<PointZ> UtmHill(int n);
+
+}  // namespace locator::gis::testing
+
+#endif  // LOCATOR_TESTS_COMMON_GIS_GIS_FIXTURES_H_

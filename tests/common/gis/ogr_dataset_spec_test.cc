@@ -1,0 +1,76 @@
+#include "common/gis/ogr_dataset_spec.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace locator::gis {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+TEST(OgrDatasetSpecTest, RecognizesOgrExtensionsAndThePrefix) {
+  EXPECT_TRUE(IsOgrDatasetSpec("dem.gpkg"));
+  EXPECT_TRUE(IsOgrDatasetSpec("/data/Survey.SHP?z=height"));
+  EXPECT_TRUE(IsOgrDatasetSpec("pts.geojson"));
+  EXPECT_TRUE(IsOgrDatasetSpec("pts.fgb"));
+  EXPECT_TRUE(IsOgrDatasetSpec("ogr:points.csv?oo=X_POSSIBLE_NAMES=x"));
+  EXPECT_FALSE(IsOgrDatasetSpec("points.csv"));
+  EXPECT_FALSE(IsOgrDatasetSpec("mesh.node"));
+  EXPECT_FALSE(IsOgrDatasetSpec("uniform:1000"));
+  EXPECT_FALSE(IsOgrDatasetSpec("gpkg"));
+}
+
+TEST(OgrDatasetSpecTest, ParsesEveryOption) {
+  OgrDatasetSpec spec;
+  ASSERT_TRUE(
+      ParseOgrDatasetSpec(
+          "ogr:a.csv?layer=pts&z=h&where=h%20%3E%2010%20AND%20k%3D'a%26b'"
+          "&breaklines=lines&domain=area&a_srs=EPSG:32633"
+          "&oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y",
+          &spec)
+          .ok());
+  EXPECT_EQ(spec.source, "a.csv");
+  EXPECT_EQ(spec.layer, "pts");
+  EXPECT_EQ(spec.z_field, "h");
+  EXPECT_EQ(spec.where, "h > 10 AND k='a&b'");
+  EXPECT_EQ(spec.breaklines_layer, "lines");
+  EXPECT_EQ(spec.domain_layer, "area");
+  EXPECT_EQ(spec.assigned_crs, "EPSG:32633");
+  EXPECT_THAT(spec.open_options,
+              ElementsAre("X_POSSIBLE_NAMES=x", "Y_POSSIBLE_NAMES=y"));
+}
+
+TEST(OgrDatasetSpecTest, APathWithoutOptionsIsJustTheSource) {
+  OgrDatasetSpec spec;
+  ASSERT_TRUE(ParseOgrDatasetSpec("dir/dem.gpkg", &spec).ok());
+  EXPECT_EQ(spec.source, "dir/dem.gpkg");
+  EXPECT_TRUE(spec.layer.empty());
+  EXPECT_TRUE(spec.open_options.empty());
+}
+
+TEST(OgrDatasetSpecTest, RejectsMalformedOptionsNamingThem) {
+  const struct {
+    const char* spec;
+    const char* message;
+  } kCases[] = {
+      {"a.gpkg?color=red", "unknown option 'color'"},
+      {"a.gpkg?layer", "option 'layer' has no '=VALUE'"},
+      {"a.gpkg?layer=a&layer=b", "option 'layer' given twice"},
+      {"a.gpkg?z=", "option 'z' is empty"},
+      {"a.gpkg?where=a%2", "option 'where' has a malformed %-escape"},
+      {"a.gpkg?where=a%zz", "option 'where' has a malformed %-escape"},
+      {"a.gpkg?oo=NOVALUE", "open option 'NOVALUE' is not NAME=VALUE"},
+      {"ogr:?layer=a", "no source before the options"},
+  };
+  for (const auto& c : kCases) {
+    OgrDatasetSpec spec;
+    const Status status = ParseOgrDatasetSpec(c.spec, &spec);
+    EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << c.spec;
+    EXPECT_THAT(status.message(), HasSubstr(c.message)) << c.spec;
+    EXPECT_THAT(status.message(), HasSubstr(c.spec)) << c.spec;
+  }
+}
+
+}  // namespace
+}  // namespace locator::gis
