@@ -40,9 +40,10 @@ void LocateStreamReactor::OnReadDone(bool ok) {
       // is never seen): finish once the queued answers are out.
       if (!outcome_) outcome_ = grpc::Status::OK;
     } else {
+      Point2 point;
       LocateResult result;
-      const v1::Point& point = request_.point();
-      Status status = locate_(Point2{point.x(), point.y()}, &result);
+      Status status = FromLocateRequest(request_, &point);
+      if (status.ok()) status = locate_(point, &result);
       if (status.ok()) {
         ToLocateResponse(result, &answers_.emplace_back());
       } else if (!outcome_) {

@@ -1,5 +1,6 @@
 #include "server/locator_service.h"
 
+#include <type_traits>
 #include <utility>
 
 #include "server/locate_stream_reactor.h"
@@ -28,6 +29,35 @@ grpc::ServerUnaryReactor* FinishNow(grpc::CallbackServerContext* context,
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
   reactor->Finish(status);
   return reactor;
+}
+
+using StreamReactor =
+    grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>;
+
+// The reactor that ends a refused call at once, per kind of call.
+grpc::ServerUnaryReactor* Refuse(grpc::CallbackServerContext* context,
+                                 const grpc::Status& status,
+                                 std::type_identity<grpc::ServerUnaryReactor>) {
+  return FinishNow(context, status);
+}
+StreamReactor* Refuse(grpc::CallbackServerContext* /*context*/,
+                      const grpc::Status& status,
+                      std::type_identity<StreamReactor>) {
+  return new RejectedStreamReactor(status);
+}
+
+// Every handler's prologue: serves the call with `serve(admission)` if
+// service->Admit() lets it in, or ends it with the refusal.
+template <typename Reactor, typename Serve>
+Reactor* AdmitThen(LocatorService* service,
+                   grpc::CallbackServerContext* context,
+                   AccessPolicy::Scope scope, Serve serve) {
+  LocatorService::Admission admission;
+  if (grpc::Status refused = service->Admit(*context, scope, &admission);
+      !refused.ok()) {
+    return Refuse(context, refused, std::type_identity<Reactor>());
+  }
+  return serve(std::move(admission));
 }
 
 }  // namespace
@@ -93,105 +123,96 @@ grpc::Status LocatorService::Admit(const grpc::CallbackServerContext& context,
 grpc::ServerUnaryReactor* LocatorService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
     v1::LocateResponse* response) {
-  Admission call;
-  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
-      !refused.ok()) {
-    return FinishNow(context, refused);
-  }
-  LocateResult result;
-  const Status status = call.engine->Locate(
-      Point2{request->point().x(), request->point().y()}, &result);
-  if (status.ok()) ToLocateResponse(result, response);
-  return FinishNow(context, ToGrpcStatus(status));
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
+        Point2 point;
+        LocateResult result;
+        Status status = FromLocateRequest(*request, &point);
+        if (status.ok()) status = call.engine->Locate(point, &result);
+        if (status.ok()) ToLocateResponse(result, response);
+        return FinishNow(context, ToGrpcStatus(status));
+      });
 }
 
 grpc::ServerUnaryReactor* LocatorService::LocateBatch(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
     v1::LocateBatchResponse* response) {
-  Admission call;
-  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
-      !refused.ok()) {
-    return FinishNow(context, refused);
-  }
-  // The function (and with it the admission) lives until the batch ends.
-  return batch_locator_.Serve(
-      context, *request,
-      [call](std::span<const Point2> points, std::vector<LocateResult>* results,
-             const std::function<bool()>& keep_going) {
-        return call.engine->LocateBatch(points, results, keep_going);
-      },
-      response);
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
+        // The function (and with it the admission) lives until the batch
+        // ends.
+        return batch_locator_.Serve(
+            context, *request,
+            [call = std::move(call)](std::span<const Point2> points,
+                                     std::vector<LocateResult>* results,
+                                     const std::function<bool()>& keep_going) {
+              return call.engine->LocateBatch(points, results, keep_going);
+            },
+            response);
+      });
 }
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
 LocatorService::LocateStream(grpc::CallbackServerContext* context) {
-  Admission call;
-  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
-      !refused.ok()) {
-    return new RejectedStreamReactor(refused);
-  }
-  // The reactor holds the function (and with it the admission) until done.
-  return new LocateStreamReactor(
-      context, default_deadline_,
-      [call](const Point2& point, LocateResult* result) {
-        return call.engine->Locate(point, result);
+  return AdmitThen<StreamReactor>(
+      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
+        // The reactor holds the function (and with it the admission) until
+        // done.
+        return new LocateStreamReactor(
+            context, default_deadline_,
+            [call = std::move(call)](const Point2& point,
+                                     LocateResult* result) {
+              return call.engine->Locate(point, result);
+            });
       });
 }
 
 grpc::ServerUnaryReactor* LocatorService::GetStats(
     grpc::CallbackServerContext* context,
     const v1::GetStatsRequest* /*request*/, v1::GetStatsResponse* response) {
-  Admission call;
-  if (grpc::Status refused = Admit(*context, AccessPolicy::Scope::kData, &call);
-      !refused.ok()) {
-    return FinishNow(context, refused);
-  }
-  ToGetStatsResponse(call.engine->Stats(), response);
-  response->set_generation(call.generation);
-  response->set_reload_in_progress(reloader_.in_progress());
-  if (redact_) RedactStats(response);
-  return FinishNow(context, grpc::Status::OK);
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
+        ToGetStatsResponse(call.engine->Stats(), response);
+        response->set_generation(call.generation);
+        response->set_reload_in_progress(reloader_.in_progress());
+        if (redact_) RedactStats(response);
+        return FinishNow(context, grpc::Status::OK);
+      });
 }
 
 grpc::ServerUnaryReactor* LocatorService::Retune(
     grpc::CallbackServerContext* context, const v1::RetuneRequest* /*request*/,
     v1::RetuneResponse* response) {
-  Admission call;
-  if (grpc::Status refused =
-          Admit(*context, AccessPolicy::Scope::kAdmin, &call);
-      !refused.ok()) {
-    return FinishNow(context, refused);
-  }
-  call.engine->Retune();
-  ToTuningStats(call.engine->Stats().tuning, /*include_histogram=*/false,
-                response->mutable_tuning());
-  return FinishNow(context, grpc::Status::OK);
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kAdmin, [&](Admission call) {
+        call.engine->Retune();
+        ToTuningStats(call.engine->Stats().tuning,
+                      /*include_histogram=*/false, response->mutable_tuning());
+        return FinishNow(context, grpc::Status::OK);
+      });
 }
 
 grpc::ServerUnaryReactor* LocatorService::Reload(
     grpc::CallbackServerContext* context, const v1::ReloadRequest* request,
     v1::ReloadResponse* response) {
-  Admission call;
-  if (grpc::Status refused =
-          Admit(*context, AccessPolicy::Scope::kAdmin, &call);
-      !refused.ok()) {
-    return FinishNow(context, refused);
-  }
-  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  // The reload thread finishes the call; the admission it holds until then
-  // keeps a drain waiting for the build.
-  const Status started =
-      StartReload(request->dataset(),
-                  [reactor, response, call](const Status& status,
-                                            std::shared_ptr<Engine> engine,
-                                            uint64_t generation) {
-                    if (status.ok()) {
-                      ToReloadResponse(engine->Stats(), generation, response);
-                    }
-                    reactor->Finish(ToGrpcStatus(status));
-                  });
-  if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
-  return reactor;
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kAdmin, [&](Admission call) {
+        grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+        // The reload thread finishes the call; the admission it holds until
+        // then keeps a drain waiting for the build.
+        const Status started = StartReload(
+            request->dataset(),
+            [reactor, response, call = std::move(call)](
+                const Status& status, std::shared_ptr<Engine> engine,
+                uint64_t generation) {
+              if (status.ok()) {
+                ToReloadResponse(engine->Stats(), generation, response);
+              }
+              reactor->Finish(ToGrpcStatus(status));
+            });
+        if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
+        return reactor;
+      });
 }
 
 }  // namespace locator

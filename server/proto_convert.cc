@@ -56,6 +56,12 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
 
 }  // namespace
 
+Status FromLocateRequest(const v1::LocateRequest& request, Point2* point) {
+  if (!request.has_point()) return Status::InvalidArgument("point is required");
+  *point = Point2{request.point().x(), request.point().y()};
+  return Status::OK();
+}
+
 void ToLocateResponse(const LocateResult& result,
                       v1::LocateResponse* response) {
   response->set_type(ToProtoLocationType(result.type));

@@ -16,8 +16,14 @@
 #include "server/core/engine.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
+#include "server/core/status.h"
 
 namespace locator {
+
+// Sets `*point` to the point of `request`. InvalidArgument "point is
+// required" if the request has none: proto3 gives message fields presence,
+// and a missing point is not (0, 0).
+Status FromLocateRequest(const v1::LocateRequest& request, Point2* point);
 
 // Fills `response` with every field of `result`, as locator.proto documents
 // them (barycentric empty and hull_edge_vertex_ids set outside the hull; value

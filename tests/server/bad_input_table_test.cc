@@ -190,6 +190,29 @@ grpc::Status StreamWithInfinitePoint(const Env& env) {
   return stream->Finish();
 }
 
+// A Locate whose request has no point at all.
+grpc::Status LocateWithoutPoint(const Env& env) {
+  grpc::ClientContext context;
+  v1::LocateResponse response;
+  return env.stub.Locate(&context, v1::LocateRequest(), &response);
+}
+
+// A stream of one good point, a request without a point and another good
+// point: the first answer arrives, then the stream ends.
+grpc::Status StreamWithoutPoint(const Env& env) {
+  grpc::ClientContext context;
+  auto stream = env.stub.LocateStream(&context);
+  stream->Write(LocateRequestFor({1.25, 2.5}));
+  stream->Write(v1::LocateRequest());
+  stream->Write(LocateRequestFor({3, 4}));
+  stream->WritesDone();
+  int answers = 0;
+  v1::LocateResponse response;
+  while (stream->Read(&response)) ++answers;
+  EXPECT_EQ(answers, 1);
+  return stream->Finish();
+}
+
 // A stream the client cancels after five round trips.
 grpc::Status StreamCancelledMidway(const Env& env) {
   grpc::ClientContext context;
@@ -261,6 +284,8 @@ std::vector<CallRow> CallRows() {
        Code::INVALID_ARGUMENT, "non-finite coordinate"},
       {"LocateMinusInf", "Locate (-inf, 0)", kLimits, LocateCall({-kInf, 0}),
        Code::INVALID_ARGUMENT, "non-finite coordinate"},
+      {"LocateWithoutPoint", "Locate with no point field", kLimits,
+       LocateWithoutPoint, Code::INVALID_ARGUMENT, "point is required"},
       // ±1e308 are finite: answered exactly, outside the hull.
       {"LocatePlus1e308", "Locate (1e308, 1e308)", kLimits,
        LocateCall({big, big}), Code::OK, ""},
@@ -283,6 +308,9 @@ std::vector<CallRow> CallRows() {
       {"StreamInf", "LocateStream of 2 good points, then (+inf, 1)", kLimits,
        StreamWithInfinitePoint, Code::INVALID_ARGUMENT,
        "non-finite coordinate"},
+      {"StreamWithoutPoint",
+       "LocateStream of a good point, then a request with no point", kLimits,
+       StreamWithoutPoint, Code::INVALID_ARGUMENT, "point is required"},
       {"EmptyBatch", "LocateBatch with no points", kLimits, EmptyBatch,
        Code::OK, ""},
       {"MismatchedColumns", "LocateBatch with 6 xs and 5 ys", kLimits,
