@@ -66,6 +66,7 @@ LocatorService::LocatorService(const LocatorServiceOptions& options)
     : default_deadline_(options.default_deadline),
       redact_(options.access.redact),
       access_(options.access.data_token, options.access.admin_token),
+      reload_policy_(options.reload_policy),
       batch_locator_(options.batch_threads, options.max_batch_points,
                      options.default_deadline),
       reloader_(
@@ -197,14 +198,19 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
     v1::ReloadResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
       this, context, AccessPolicy::Scope::kAdmin, [&](Admission call) {
+        std::string dataset;
+        if (grpc::Status denied =
+                reload_policy_.Resolve(request->dataset(), &dataset);
+            !denied.ok()) {
+          return FinishNow(context, denied);
+        }
         grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
         // The reload thread finishes the call; the admission it holds until
         // then keeps a drain waiting for the build.
         const Status started = StartReload(
-            request->dataset(),
-            [reactor, response, call = std::move(call)](
-                const Status& status, std::shared_ptr<Engine> engine,
-                uint64_t generation) {
+            dataset, [reactor, response, call = std::move(call)](
+                         const Status& status, std::shared_ptr<Engine> engine,
+                         uint64_t generation) {
               if (status.ok()) {
                 ToReloadResponse(engine->Stats(), generation, response);
               }

@@ -35,6 +35,7 @@
 #include "server/core/status.h"
 #include "server/drain_gate.h"
 #include "server/engine_reloader.h"
+#include "server/reload_policy.h"
 #include "server/security_config.h"
 
 namespace locator {
@@ -49,6 +50,9 @@ struct LocatorServiceOptions {
   std::chrono::milliseconds default_deadline{0};
   // Tokens and redaction.
   AccessConfig access;
+  // Which datasets a Reload RPC may load (the default: only the configured
+  // one).
+  ReloadPolicy reload_policy;
   // Builds the engine for a dataset spec ("": the configured dataset), given
   // the engine serving now (null before the first); runs on the reload
   // thread. Unset: reloads fail with FAILED_PRECONDITION.
@@ -110,6 +114,7 @@ class LocatorService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Retune(grpc::CallbackServerContext* context,
                                    const v1::RetuneRequest* request,
                                    v1::RetuneResponse* response) override;
+  // Loads what options.reload_policy allows (PERMISSION_DENIED otherwise).
   // Finishes when the new engine serves or the build failed (see
   // StartReload); the callback thread is not held meanwhile.
   grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
@@ -120,6 +125,7 @@ class LocatorService final : public v1::Locator::CallbackService {
   const std::chrono::milliseconds default_deadline_;
   const bool redact_;
   const AccessPolicy access_;
+  const ReloadPolicy reload_policy_;
   DrainGate drain_gate_;
   mutable std::mutex engine_mu_;
   std::shared_ptr<Engine> engine_;  // guarded by engine_mu_

@@ -191,6 +191,7 @@ int Main(int argc, char** argv) {
       .max_batch_points = config.serving.max_batch_points,
       .default_deadline = config.serving.transport.default_deadline,
       .access = config.access,
+      .reload_policy = ReloadPolicy(config.dataset, config.reload_dir),
       .build_engine = [&config](const std::string& spec, Engine* serving,
                                 std::shared_ptr<Engine>* engine) {
         return BuildEngine(config, spec, serving, engine);
