@@ -93,6 +93,30 @@ std::shared_ptr<Engine> LocatorService::engine() const {
   return engine_;
 }
 
+bool LocatorService::CurrentStats(v1::GetStatsResponse* stats) const {
+  std::shared_ptr<Engine> engine;
+  uint64_t generation;
+  {
+    std::lock_guard<std::mutex> lock(engine_mu_);
+    engine = engine_;
+    generation = generation_;
+  }
+  if (engine == nullptr) return false;
+  FillStats(*engine, generation, stats);
+  return true;
+}
+
+EngineStats LocatorService::OutputStats(const Engine& engine) const {
+  return redact_ ? RedactStats(engine.Stats()) : engine.Stats();
+}
+
+void LocatorService::FillStats(const Engine& engine, uint64_t generation,
+                               v1::GetStatsResponse* response) const {
+  ToGetStatsResponse(OutputStats(engine), response);
+  response->set_generation(generation);
+  response->set_reload_in_progress(reloader_.in_progress());
+}
+
 Status LocatorService::StartReload(const std::string& dataset,
                                    EngineReloader::Done done) {
   return reloader_.Start(dataset, std::move(done));
@@ -173,10 +197,7 @@ grpc::ServerUnaryReactor* LocatorService::GetStats(
     const v1::GetStatsRequest* /*request*/, v1::GetStatsResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
       this, context, AccessPolicy::Scope::kData, [&](Admission call) {
-        ToGetStatsResponse(call.engine->Stats(), response);
-        response->set_generation(call.generation);
-        response->set_reload_in_progress(reloader_.in_progress());
-        if (redact_) RedactStats(response);
+        FillStats(*call.engine, call.generation, response);
         return FinishNow(context, grpc::Status::OK);
       });
 }
@@ -187,7 +208,7 @@ grpc::ServerUnaryReactor* LocatorService::Retune(
   return AdmitThen<grpc::ServerUnaryReactor>(
       this, context, AccessPolicy::Scope::kAdmin, [&](Admission call) {
         call.engine->Retune();
-        ToTuningStats(call.engine->Stats().tuning,
+        ToTuningStats(OutputStats(*call.engine).tuning,
                       /*include_histogram=*/false, response->mutable_tuning());
         return FinishNow(context, grpc::Status::OK);
       });
@@ -208,11 +229,11 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
         // The reload thread finishes the call; the admission it holds until
         // then keeps a drain waiting for the build.
         const Status started = StartReload(
-            dataset, [reactor, response, call = std::move(call)](
+            dataset, [this, reactor, response, call = std::move(call)](
                          const Status& status, std::shared_ptr<Engine> engine,
                          uint64_t generation) {
               if (status.ok()) {
-                ToReloadResponse(engine->Stats(), generation, response);
+                ToReloadResponse(OutputStats(*engine), generation, response);
               }
               reactor->Finish(ToGrpcStatus(status));
             });

@@ -7,6 +7,10 @@
 // have finished. (Not std::atomic<std::shared_ptr>: libstdc++ 12's spins on
 // a lock bit; see server/core/snapshot_slot.h.)
 //
+// Every output of the engine's statistics, here (GetStats, Retune, Reload)
+// and elsewhere (CurrentStats(): /api/stats, /metrics, logs), is made from
+// OutputStats(), which applies --redact once.
+//
 // Every handler starts with Admit(), which refuses, in this order: calls
 // started after Drain() began (UNAVAILABLE "server is shutting down"; see
 // DrainGate), calls the AccessPolicy does not allow (UNAUTHENTICATED /
@@ -72,6 +76,10 @@ class LocatorService final : public v1::Locator::CallbackService {
   // The engine new calls use, or null while the dataset is loading.
   std::shared_ptr<Engine> engine() const;
 
+  // Fills `stats` as GetStats would answer now (redacted with --redact);
+  // false, and nothing filled, while the dataset is loading.
+  bool CurrentStats(v1::GetStatsResponse* stats) const;
+
   // Builds an engine for `dataset` ("": the configured one) with
   // options.build_engine on the reload thread and publishes it; then calls
   // `done` there with the outcome (see EngineReloader::Start).
@@ -122,6 +130,13 @@ class LocatorService final : public v1::Locator::CallbackService {
                                    v1::ReloadResponse* response) override;
 
  private:
+  // `engine`'s statistics as every output shows them: redacted with
+  // --redact.
+  EngineStats OutputStats(const Engine& engine) const;
+  // Fills `response` for `engine` serving as `generation`.
+  void FillStats(const Engine& engine, uint64_t generation,
+                 v1::GetStatsResponse* response) const;
+
   const std::chrono::milliseconds default_deadline_;
   const bool redact_;
   const AccessPolicy access_;

@@ -7,6 +7,7 @@
 // signal-initiated drain, 1 when the dataset cannot be served or the address
 // cannot be bound, 2 for bad flags.
 
+#include <array>
 #include <boost/asio/post.hpp>
 #include <chrono>
 #include <iostream>
@@ -144,10 +145,11 @@ void StartPeriodicWork(const ServerConfig& config,
   }
   if (config.stats_interval_s > 0) {
     runner->RunEvery(config.stats_interval_s, [&service] {
-      const EngineStats stats = service.engine()->Stats();
-      LogLine() << "stats: queries=" << stats.queries
-                << " mean_cost_recent=" << stats.mean_cost_recent
-                << " snapshot_version=" << stats.tuning.snapshot_version;
+      v1::GetStatsResponse stats;
+      if (!service.CurrentStats(&stats)) return;
+      LogLine() << "stats: queries=" << stats.queries_served()
+                << " mean_cost_recent=" << stats.mean_cost_recent()
+                << " snapshot_version=" << stats.tuning().snapshot_version();
     });
   }
   if (config.retune_interval_s > 0) {
@@ -202,8 +204,18 @@ int Main(int argc, char** argv) {
       std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
       interceptors;
   if (config.http_enabled()) {
-    status_server =
-        std::make_unique<StatusServer>([&service] { return service.engine(); });
+    // It gets the statistics as GetStats answers them (redacted with
+    // --redact), never the engine's own.
+    status_server = std::make_unique<StatusServer>(
+        [&service](v1::GetStatsResponse* stats) {
+          return service.CurrentStats(stats);
+        },
+        [&service](std::vector<std::array<Point2, 2>>* edges) {
+          const std::shared_ptr<Engine> engine = service.engine();
+          if (engine == nullptr) return false;
+          *edges = engine->EdgeSample();
+          return true;
+        });
     interceptors.push_back(status_server->NewInterceptorFactory());
   }
   const std::unique_ptr<ServerRunner> runner = ServerRunner::StartOrExit(

@@ -57,7 +57,9 @@ void ToTuningStats(const TuningSummary& summary, bool include_histogram,
                    v1::TuningStats* tuning);
 
 // Fills `response` with everything GetStats reports about the engine (the
-// service adds its generation and reload state).
+// service adds its generation and reload state). The one mapping of
+// EngineStats: every output of the statistics (GetStats, /api/stats,
+// /metrics) is made from its result.
 void ToGetStatsResponse(const EngineStats& stats,
                         v1::GetStatsResponse* response);
 

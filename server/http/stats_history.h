@@ -32,8 +32,9 @@ class StatsHistory {
   static constexpr size_t kCapacity = 300;
 
   // Records the counters of the engine identified by `engine_id` (any value
-  // that differs between engines), taken at `now`.
-  void Record(uintptr_t engine_id, uint64_t queries, uint64_t total_cost,
+  // that differs between engines, e.g. its serving generation), taken at
+  // `now`.
+  void Record(uint64_t engine_id, uint64_t queries, uint64_t total_cost,
               std::chrono::system_clock::time_point now);
 
   // The samples, oldest first.
@@ -44,7 +45,7 @@ class StatsHistory {
   std::deque<StatsSample> samples_;  // guarded by mu_
   // The previous Record()'s input; guarded by mu_.
   bool has_previous_ = false;
-  uintptr_t engine_id_ = 0;
+  uint64_t engine_id_ = 0;
   uint64_t queries_ = 0;
   uint64_t total_cost_ = 0;
   std::chrono::system_clock::time_point time_;
