@@ -16,9 +16,11 @@ grpc::Status LoadingStatus() {
                       "dataset is still loading");
 }
 
+using StreamReactor =
+    grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>;
+
 // Ends a stream at once, before reading anything.
-class RejectedStreamReactor final
-    : public grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse> {
+class RejectedStreamReactor final : public StreamReactor {
  public:
   explicit RejectedStreamReactor(const grpc::Status& status) { Finish(status); }
   void OnDone() override { delete this; }
@@ -30,9 +32,6 @@ grpc::ServerUnaryReactor* FinishNow(grpc::CallbackServerContext* context,
   reactor->Finish(status);
   return reactor;
 }
-
-using StreamReactor =
-    grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>;
 
 // The reactor that ends a refused call at once, per kind of call.
 grpc::ServerUnaryReactor* Refuse(grpc::CallbackServerContext* context,

@@ -173,21 +173,29 @@ grpc::Status EmptyBatch(const Env& env) {
   return status;
 }
 
+// Writes `requests` on one stream, half-closes it and reads every answer:
+// there must be `answers`, those before the first bad request.
+grpc::Status StreamOf(const Env& env,
+                      const std::vector<v1::LocateRequest>& requests,
+                      int answers) {
+  grpc::ClientContext context;
+  auto stream = env.stub.LocateStream(&context);
+  for (const v1::LocateRequest& request : requests) stream->Write(request);
+  stream->WritesDone();
+  int read = 0;
+  v1::LocateResponse response;
+  while (stream->Read(&response)) ++read;
+  EXPECT_EQ(read, answers);
+  return stream->Finish();
+}
+
 // A stream of two good points, an infinite one and another good one: the
 // answers before the bad point arrive, then the stream ends.
 grpc::Status StreamWithInfinitePoint(const Env& env) {
-  grpc::ClientContext context;
-  auto stream = env.stub.LocateStream(&context);
-  for (const Point2& q :
-       std::vector<Point2>{{1.25, 2.5}, {3, 4}, {kInf, 1}, {5, 5}}) {
-    stream->Write(LocateRequestFor(q));
-  }
-  stream->WritesDone();
-  int answers = 0;
-  v1::LocateResponse response;
-  while (stream->Read(&response)) ++answers;
-  EXPECT_EQ(answers, 2);
-  return stream->Finish();
+  return StreamOf(env,
+                  {LocateRequestFor({1.25, 2.5}), LocateRequestFor({3, 4}),
+                   LocateRequestFor({kInf, 1}), LocateRequestFor({5, 5})},
+                  2);
 }
 
 // A Locate whose request has no point at all.
@@ -200,17 +208,10 @@ grpc::Status LocateWithoutPoint(const Env& env) {
 // A stream of one good point, a request without a point and another good
 // point: the first answer arrives, then the stream ends.
 grpc::Status StreamWithoutPoint(const Env& env) {
-  grpc::ClientContext context;
-  auto stream = env.stub.LocateStream(&context);
-  stream->Write(LocateRequestFor({1.25, 2.5}));
-  stream->Write(v1::LocateRequest());
-  stream->Write(LocateRequestFor({3, 4}));
-  stream->WritesDone();
-  int answers = 0;
-  v1::LocateResponse response;
-  while (stream->Read(&response)) ++answers;
-  EXPECT_EQ(answers, 1);
-  return stream->Finish();
+  return StreamOf(env,
+                  {LocateRequestFor({1.25, 2.5}), v1::LocateRequest(),
+                   LocateRequestFor({3, 4})},
+                  1);
 }
 
 // A stream the client cancels after five round trips.
