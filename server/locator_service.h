@@ -7,6 +7,10 @@
 // have finished. (Not std::atomic<std::shared_ptr>: libstdc++ 12's spins on
 // a lock bit; see server/core/snapshot_slot.h.)
 //
+// Every output of the engine's statistics, here (GetStats, Retune, Reload)
+// and elsewhere (CurrentStats(): /api/stats, /metrics, logs), is made from
+// OutputStats(), which applies --redact once.
+//
 // Every handler starts with Admit(), which refuses, in this order: calls
 // started after Drain() began (UNAVAILABLE "server is shutting down"; see
 // DrainGate), calls the AccessPolicy does not allow (UNAUTHENTICATED /
@@ -35,6 +39,7 @@
 #include "server/core/engine.h"
 #include "server/drain_gate.h"
 #include "server/engine_reloader.h"
+#include "server/reload_policy.h"
 #include "server/security_config.h"
 
 namespace locator {
@@ -49,6 +54,9 @@ struct LocatorServiceOptions {
   std::chrono::milliseconds default_deadline{0};
   // Tokens and redaction.
   AccessConfig access;
+  // Which datasets a Reload RPC may load (the default: only the configured
+  // one).
+  ReloadPolicy reload_policy;
   // Builds the engine for a dataset spec ("": the configured dataset), given
   // the engine serving now (null before the first); runs on the reload
   // thread. Unset: reloads fail with FAILED_PRECONDITION.
@@ -67,6 +75,10 @@ class LocatorService final : public v1::Locator::CallbackService {
 
   // The engine new calls use, or null while the dataset is loading.
   std::shared_ptr<Engine> engine() const EXCLUDES(engine_mu_);
+
+  // Fills `stats` as GetStats would answer now (redacted with --redact);
+  // false, and nothing filled, while the dataset is loading.
+  bool CurrentStats(v1::GetStatsResponse* stats) const EXCLUDES(engine_mu_);
 
   // Builds an engine for `dataset` ("": the configured one) with
   // options.build_engine on the reload thread and publishes it; then calls
@@ -110,6 +122,7 @@ class LocatorService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Retune(grpc::CallbackServerContext* context,
                                    const v1::RetuneRequest* request,
                                    v1::RetuneResponse* response) override;
+  // Loads what options.reload_policy allows (PERMISSION_DENIED otherwise).
   // Finishes when the new engine serves or the build failed (see
   // StartReload); the callback thread is not held meanwhile.
   grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
@@ -117,9 +130,17 @@ class LocatorService final : public v1::Locator::CallbackService {
                                    v1::ReloadResponse* response) override;
 
  private:
+  // `engine`'s statistics as every output shows them: redacted with
+  // --redact.
+  EngineStats OutputStats(const Engine& engine) const;
+  // Fills `response` for `engine` serving as `generation`.
+  void FillStats(const Engine& engine, uint64_t generation,
+                 v1::GetStatsResponse* response) const;
+
   const std::chrono::milliseconds default_deadline_;
   const bool redact_;
   const AccessPolicy access_;
+  const ReloadPolicy reload_policy_;
   DrainGate drain_gate_;
   mutable Mutex engine_mu_;
   std::shared_ptr<Engine> engine_ GUARDED_BY(engine_mu_);

@@ -7,6 +7,7 @@
 // signal-initiated drain, 1 when the dataset cannot be served or the address
 // cannot be bound, 2 for bad flags.
 
+#include <array>
 #include <boost/asio/post.hpp>
 #include <chrono>
 #include <cstdlib>
@@ -146,10 +147,11 @@ void StartPeriodicWork(const ServerConfig& config,
   }
   if (config.stats_interval_s > 0) {
     runner->RunEvery(config.stats_interval_s, [&service] {
-      const EngineStats stats = service.engine()->Stats();
-      LogLine() << "stats: queries=" << stats.queries
-                << " mean_cost_recent=" << stats.mean_cost_recent
-                << " snapshot_version=" << stats.tuning.snapshot_version;
+      v1::GetStatsResponse stats;
+      if (!service.CurrentStats(&stats)) return;
+      LogLine() << "stats: queries=" << stats.queries_served()
+                << " mean_cost_recent=" << stats.mean_cost_recent()
+                << " snapshot_version=" << stats.tuning().snapshot_version();
     });
   }
   if (config.retune_interval_s > 0) {
@@ -202,6 +204,7 @@ int Main(int argc, char** argv) {
       .max_batch_points = config.serving.max_batch_points,
       .default_deadline = config.serving.transport.default_deadline,
       .access = config.access,
+      .reload_policy = ReloadPolicy(config.dataset, config.reload_dir),
       .build_engine = [&config](const std::string& spec, Engine* serving,
                                 std::shared_ptr<Engine>* engine) {
         return BuildEngine(config, spec, serving, engine);
@@ -212,8 +215,18 @@ int Main(int argc, char** argv) {
       std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
       interceptors;
   if (config.http_enabled()) {
-    status_server =
-        std::make_unique<StatusServer>([&service] { return service.engine(); });
+    // It gets the statistics as GetStats answers them (redacted with
+    // --redact), never the engine's own.
+    status_server = std::make_unique<StatusServer>(
+        [&service](v1::GetStatsResponse* stats) {
+          return service.CurrentStats(stats);
+        },
+        [&service](std::vector<std::array<Point2, 2>>* edges) {
+          const std::shared_ptr<Engine> engine = service.engine();
+          if (engine == nullptr) return false;
+          *edges = engine->EdgeSample();
+          return true;
+        });
     interceptors.push_back(status_server->NewInterceptorFactory());
   }
   std::unique_ptr<ServerRunner> runner;

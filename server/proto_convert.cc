@@ -71,6 +71,12 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
 
 }  // namespace
 
+Status FromLocateRequest(const v1::LocateRequest& request, Point2* point) {
+  if (!request.has_point()) return Status::InvalidArgument("point is required");
+  *point = Point2{request.point().x(), request.point().y()};
+  return Status::OK();
+}
+
 void ToLocateResponse(const LocateResult& result,
                       v1::LocateResponse* response) {
   response->set_type(ToProtoLocationType(result.type));
@@ -169,6 +175,8 @@ void ToTuningStats(const TuningSummary& summary, bool include_histogram,
     ToProtoPoint(start, tuning->add_start_points());
   }
   tuning->set_start_point_count(summary.start_point_count);
+  tuning->set_hot_queries(summary.hot_queries);
+  tuning->set_fallback_queries(summary.fallback_queries);
   const PersistenceSummary& persistence = summary.persistence;
   v1::TuningPersistence* out = tuning->mutable_persistence();
   out->set_state_path(persistence.state_path);
@@ -187,6 +195,13 @@ void ToGetStatsResponse(const EngineStats& stats,
   response->set_mean_cost_lifetime(stats.mean_cost_lifetime);
   response->set_mean_cost_recent(stats.mean_cost_recent);
   response->set_recent_window(Engine::kStatsWindow);
+  response->set_total_cost(stats.total_cost);
+  v1::WalkFacesHistogram* walk_faces = response->mutable_walk_faces();
+  walk_faces->mutable_upper_bounds()->Add(stats.walk_costs.upper_bounds.begin(),
+                                          stats.walk_costs.upper_bounds.end());
+  walk_faces->mutable_counts()->Add(stats.walk_costs.counts.begin(),
+                                    stats.walk_costs.counts.end());
+  walk_faces->set_faces_sum(stats.walk_costs.faces_sum);
   ToTuningStats(stats.tuning, /*include_histogram=*/true,
                 response->mutable_tuning());
 

@@ -12,12 +12,18 @@
 #include <cstdint>
 #include <span>
 
+#include "common/status.h"
 #include "locator/v1/locator.pb.h"
 #include "server/core/engine.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
 
 namespace locator {
+
+// Sets `*point` to the point of `request`. InvalidArgument "point is
+// required" if the request has none: proto3 gives message fields presence,
+// and a missing point is not (0, 0).
+Status FromLocateRequest(const v1::LocateRequest& request, Point2* point);
 
 // Fills `response` with every field of `result`, as locator.proto documents
 // them (barycentric empty and hull_edge_vertex_ids set outside the hull; value
@@ -51,7 +57,9 @@ void ToTuningStats(const TuningSummary& summary, bool include_histogram,
                    v1::TuningStats* tuning);
 
 // Fills `response` with everything GetStats reports about the engine (the
-// service adds its generation and reload state).
+// service adds its generation and reload state). The one mapping of
+// EngineStats: every output of the statistics (GetStats, /api/stats,
+// /metrics) is made from its result.
 void ToGetStatsResponse(const EngineStats& stats,
                         v1::GetStatsResponse* response);
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
+#include "server/proto_convert.h"
 
 namespace locator {
 namespace {
@@ -27,7 +28,10 @@ Status TransformerFor(const Engine& engine, const std::string& request_crs,
 Status LocateInRequestCrs(const Engine& engine,
                           const v1::LocateRequest& request,
                           LocateResult* result) {
-  Point2 point{request.point().x(), request.point().y()};
+  Point2 point;
+  if (Status status = FromLocateRequest(request, &point); !status.ok()) {
+    return status;
+  }
   if (request.crs().empty()) return engine.Locate(point, result);
   gis::CrsTransformer* transformer = nullptr;
   if (Status status = TransformerFor(engine, request.crs(), &transformer);

@@ -115,9 +115,11 @@ void AddAccessFlags(AccessFlags* flags, po::options_description* options) {
       "require 'authorization: Bearer <token>' with this file's token on "
       "every RPC (the admin token is accepted too)")(
       "admin-token-file", po::value(&flags->admin_token_file),
-      "require this file's token on admin RPCs (Retune)")(
+      "require this file's token on admin RPCs (Retune, Reload)")(
       "redact", po::bool_switch(&flags->redact),
-      "GetStats reveals no file paths (the dataset source is left empty)");
+      "no output reveals a file path: GetStats, Retune and Reload answers, "
+      "/api/stats and /metrics leave the dataset source and the state path "
+      "empty");
 }
 
 Status ReadAccessFlags(const AccessFlags& flags, AccessConfig* config) {

@@ -58,7 +58,8 @@ struct AccessConfig {
   std::string data_token;
   // --admin-token-file: required on admin RPCs when set.
   std::string admin_token;
-  // --redact: GetStats leaves out file paths.
+  // --redact: no output of the statistics shows a file path (see
+  // RedactStats).
   bool redact = false;
 };
 

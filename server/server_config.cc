@@ -258,6 +258,7 @@ Status ParseServerConfig(int argc, const char* const argv[],
   const ServerConfig defaults;
   std::string dataset;
   std::string max_dataset_points;
+  std::string reload_dir;
   ServingFlags serving;
   EngineFlags engine;
   AccessFlags access;
@@ -271,7 +272,11 @@ Status ParseServerConfig(int argc, const char* const argv[],
       po::value(&max_dataset_points)
           ->default_value(std::to_string(defaults.dataset_limits.max_points)),
       "larger datasets fail before they are triangulated (~200 bytes per "
-      "point once built)");
+      "point once built)")(
+      "reload-dir", po::value(&reload_dir)->default_value(""),
+      "a Reload RPC may also load generator specs and the files inside this "
+      "directory (resolved; no escape by .. or symlinks); everything else "
+      "but --dataset is PERMISSION_DENIED; empty = only --dataset");
   AddServingFlags(defaults.serving, &serving, &description);
   AddEngineFlags(defaults, &engine, &description);
   AddAccessFlags(&access, &description);
@@ -281,6 +286,12 @@ Status ParseServerConfig(int argc, const char* const argv[],
   if (dataset.empty())
     return FlagError("dataset", dataset, "must not be empty");
   config->dataset = dataset;
+  std::error_code error;
+  if (!reload_dir.empty() &&
+      !std::filesystem::is_directory(reload_dir, error)) {
+    return FlagError("reload-dir", reload_dir, "not a directory");
+  }
+  config->reload_dir = reload_dir;
   status = ParseCountAs("max-dataset-points", max_dataset_points, 3,
                         std::numeric_limits<uint32_t>::max(),
                         &config->dataset_limits.max_points);

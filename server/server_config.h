@@ -49,6 +49,10 @@ struct ServerConfig {
   // --max-dataset-points: a larger dataset fails before it is triangulated
   // (each point costs ~200 bytes resident once triangulated).
   DatasetLimits dataset_limits{.max_points = 10'000'000};
+  // --reload-dir: a Reload RPC may load generator specs and the files inside
+  // this directory besides --dataset (see ReloadPolicy). Empty: only
+  // --dataset.
+  std::string reload_dir;
   // --token-file, --admin-token-file, --redact.
   AccessConfig access;
   // --strategy, --grid, --warmup, --retune-every, --budget, --state-dir; the

@@ -2,19 +2,15 @@
 
 namespace locator {
 
-void RedactStats(v1::GetStatsResponse* response) {
+EngineStats RedactStats(EngineStats stats) {
   // locator.proto documents an empty source as "redacted".
-  response->mutable_dataset()->clear_source();
+  stats.dataset.source.clear();
   // The state file's path, and errors about it, name the state dir.
-  v1::TuningPersistence* persistence =
-      response->mutable_tuning()->mutable_persistence();
-  persistence->clear_state_path();
-  if (!persistence->load_error().empty()) {
-    persistence->set_load_error("<redacted>");
-  }
-  if (!persistence->save_error().empty()) {
-    persistence->set_save_error("<redacted>");
-  }
+  PersistenceSummary& persistence = stats.tuning.persistence;
+  persistence.state_path.clear();
+  if (!persistence.load_error.empty()) persistence.load_error = "<redacted>";
+  if (!persistence.save_error.empty()) persistence.save_error = "<redacted>";
+  return stats;
 }
 
 }  // namespace locator

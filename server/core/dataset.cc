@@ -229,13 +229,16 @@ size_t ReserveEstimate(std::string_view text, size_t at_most) {
 
 }  // namespace
 
+bool IsGeneratorSpec(std::string_view spec) {
+  return spec.starts_with("uniform:") || spec.starts_with("clusters:");
+}
+
 Status LoadDataset(const std::string& spec, Dataset* out,
                    const DatasetLimits& limits) {
-  const std::vector<std::string_view> parts = SplitOnColon(spec);
   Dataset ds;
   Status status;
-  if (parts.size() > 1 && (parts[0] == "uniform" || parts[0] == "clusters")) {
-    status = RunGenerator(spec, parts, limits, &ds);
+  if (IsGeneratorSpec(spec)) {
+    status = RunGenerator(spec, SplitOnColon(spec), limits, &ds);
   } else {
     std::string text;
     status = ReadWholeFile(spec, "dataset", &text);

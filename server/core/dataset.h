@@ -83,6 +83,9 @@ struct DatasetLimits {
   size_t max_points = 50'000'000;
 };
 
+// Whether `spec` names a generator (uniform:, clusters:) rather than a file.
+bool IsGeneratorSpec(std::string_view spec);
+
 // Loads a dataset from a file path or a generator spec (see above).
 Status LoadDataset(const std::string& spec, Dataset* out,
                    const DatasetLimits& limits = DatasetLimits());

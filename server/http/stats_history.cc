@@ -4,7 +4,7 @@
 
 namespace locator {
 
-void StatsHistory::Record(uintptr_t engine_id, uint64_t queries,
+void StatsHistory::Record(uint64_t engine_id, uint64_t queries,
                           uint64_t total_cost,
                           std::chrono::system_clock::time_point now) {
   MutexLock lock(&mu_);

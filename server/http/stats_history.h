@@ -33,8 +33,9 @@ class StatsHistory {
   static constexpr size_t kCapacity = 300;
 
   // Records the counters of the engine identified by `engine_id` (any value
-  // that differs between engines), taken at `now`.
-  void Record(uintptr_t engine_id, uint64_t queries, uint64_t total_cost,
+  // that differs between engines, e.g. its serving generation), taken at
+  // `now`.
+  void Record(uint64_t engine_id, uint64_t queries, uint64_t total_cost,
               std::chrono::system_clock::time_point now) EXCLUDES(mu_);
 
   // The samples, oldest first.
@@ -45,7 +46,7 @@ class StatsHistory {
   std::deque<StatsSample> samples_ GUARDED_BY(mu_);
   // The previous Record()'s input.
   bool has_previous_ GUARDED_BY(mu_) = false;
-  uintptr_t engine_id_ GUARDED_BY(mu_) = 0;
+  uint64_t engine_id_ GUARDED_BY(mu_) = 0;
   uint64_t queries_ GUARDED_BY(mu_) = 0;
   uint64_t total_cost_ GUARDED_BY(mu_) = 0;
   std::chrono::system_clock::time_point time_ GUARDED_BY(mu_);

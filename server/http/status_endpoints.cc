@@ -1,8 +1,10 @@
 #include "server/http/status_endpoints.h"
 
+#include <google/protobuf/util/json_util.h>
+
 #include <utility>
 
-#include "server/http/stats_json.h"
+#include "server/http/json_writer.h"
 #include "server/http/status_page_files.h"
 
 namespace locator {
@@ -11,6 +13,48 @@ namespace {
 constexpr char kJson[] = "application/json";
 constexpr char kMetricsContentType[] =
     "text/plain; version=0.0.4; charset=utf-8";
+
+HttpResponse Loading() {
+  return HttpResponse{503, kJson, R"({"state":"loading"})"};
+}
+
+// The proto JSON of `stats`, printed as the CLI prints it.
+std::string StatsJson(const v1::GetStatsResponse& stats) {
+  google::protobuf::util::JsonPrintOptions options;
+  options.always_print_primitive_fields = true;
+  options.preserve_proto_field_names = true;
+  std::string json;
+  // Serializing a message that was just built cannot fail.
+  (void)google::protobuf::util::MessageToJsonString(stats, &json, options);
+  return json;
+}
+
+std::string HistoryJson(const std::vector<StatsSample>& history) {
+  JsonWriter json;
+  json.BeginObject().Key("t").BeginArray();
+  for (const StatsSample& s : history) json.Number(s.unix_seconds);
+  json.EndArray().Key("qps").BeginArray();
+  for (const StatsSample& s : history) json.Number(s.qps);
+  json.EndArray().Key("mean_cost").BeginArray();
+  for (const StatsSample& s : history) json.Number(s.mean_cost);
+  json.EndArray().EndObject();
+  return json.text();
+}
+
+std::string EdgesJson(const std::vector<std::array<Point2, 2>>& edges) {
+  JsonWriter json;
+  json.BeginObject().Key("segments").BeginArray();
+  for (const auto& [a, b] : edges) {
+    json.BeginArray()
+        .Number(a.x)
+        .Number(a.y)
+        .Number(b.x)
+        .Number(b.y)
+        .EndArray();
+  }
+  json.EndArray().EndObject();
+  return json.text();
+}
 
 HttpResponse NotFound() {
   return HttpResponse{404, "text/plain; charset=utf-8", "not found\n"};
@@ -42,14 +86,20 @@ HttpResponse StatusEndpoints::Handle(std::string_view path) const {
 }
 
 HttpResponse StatusEndpoints::Api(std::string_view path) const {
-  if (path != "/api/stats" && path != "/api/edges") return NotFound();
-  const std::shared_ptr<Engine> engine = sources_.current_engine();
-  if (engine == nullptr) return HttpResponse{503, kJson, LoadingJson()};
-  if (path == "/api/edges") {
-    return HttpResponse{200, kJson, EdgesJson(engine->EdgeSample())};
+  if (path == "/api/stats") {
+    v1::GetStatsResponse stats;
+    if (!sources_.stats(&stats)) return Loading();
+    return HttpResponse{200, kJson, StatsJson(stats)};
   }
-  return HttpResponse{200, kJson,
-                      StatsJson(engine->Stats(), sources_.history->Samples())};
+  if (path == "/api/history") {
+    return HttpResponse{200, kJson, HistoryJson(sources_.history->Samples())};
+  }
+  if (path == "/api/edges") {
+    std::vector<std::array<Point2, 2>> edges;
+    if (!sources_.edges(&edges)) return Loading();
+    return HttpResponse{200, kJson, EdgesJson(edges)};
+  }
+  return NotFound();
 }
 
 HttpResponse StatusEndpoints::PageFile(std::string_view path) {

@@ -1,35 +1,50 @@
 // StatusEndpoints: what locatord's HTTP server answers, path by path:
 //
-//   /metrics     Prometheus text format 0.0.4
-//   /api/stats   the engine's statistics and recent history (stats_json.h);
-//                503 with {"state": "loading"} until an engine serves
-//   /api/edges   a sample of the triangulation's edges; 503 while loading
+//   /metrics      Prometheus text format 0.0.4
+//   /api/stats    the engine's statistics: locator.v1.GetStatsResponse as
+//                 proto JSON (field names as in the proto, every field
+//                 present; 64-bit integers are strings), exactly what
+//                 `locator --json stats` prints; 503 with
+//                 {"state":"loading"} until an engine serves
+//   /api/history  the recent throughput and cost, oldest first:
+//                 {"t": [unix s], "qps": [...], "mean_cost": [...]}, null
+//                 where an interval located no point
+//   /api/edges    a sample of the triangulation's edges,
+//                 {"segments": [[x0, y0, x1, y1], ...]}; 503 while loading
 //   /            the status page (index.html); other embedded page files
 //                by name, e.g. /app.js
 //   otherwise    404
 //
-// Owns nothing but the functions and pointers it reads from; the engine is
-// fetched per request, so a swapped engine shows at once.
+// Owns nothing but the functions and pointers it reads from; the statistics
+// are fetched per request, so a swapped engine shows at once. They come
+// already redacted (--redact): this class never sees an Engine.
 // Thread-safety: Handle() may be called from any thread, as far as the
 // sources allow it (they are all thread-safe in locatord).
 
 #ifndef LOCATOR_SERVER_HTTP_STATUS_ENDPOINTS_H_
 #define LOCATOR_SERVER_HTTP_STATUS_ENDPOINTS_H_
 
+#include <array>
 #include <functional>
-#include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "server/core/engine.h"
+#include "common/geometry.h"
 #include "server/http/http_server.h"
 #include "server/http/stats_history.h"
+#include "server/metrics/engine_collector.h"
 
 namespace locator {
 
+// Fills its argument with a sample of the serving triangulation's edges;
+// false while no engine serves.
+using EdgeSource = std::function<bool(std::vector<std::array<Point2, 2>>*)>;
+
 struct StatusSources {
-  // The engine new calls use, or null while loading.
-  std::function<std::shared_ptr<Engine>()> current_engine;
+  // The serving engine's statistics, as GetStats answers them.
+  StatsSource stats;
+  EdgeSource edges;
   // Must outlive the endpoints.
   const StatsHistory* history = nullptr;
   // The /metrics body.

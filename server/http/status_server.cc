@@ -7,14 +7,14 @@
 
 namespace locator {
 
-StatusServer::StatusServer(
-    std::function<std::shared_ptr<Engine>()> current_engine)
-    : current_engine_(std::move(current_engine)),
+StatusServer::StatusServer(StatsSource stats, EdgeSource edges)
+    : stats_(std::move(stats)),
       registry_(std::make_shared<prometheus::Registry>()),
       rpc_metrics_(registry_.get()),
-      engine_collector_(std::make_shared<EngineCollector>(current_engine_)),
+      engine_collector_(std::make_shared<EngineCollector>(stats_)),
       endpoints_(
-          StatusSources{.current_engine = current_engine_,
+          StatusSources{.stats = stats_,
+                        .edges = std::move(edges),
                         .history = &history_,
                         .metrics_text = [this] {
                           return MetricsText({registry_, engine_collector_});
@@ -33,11 +33,10 @@ Status StatusServer::Listen(const std::string& host, int port) {
 }
 
 void StatusServer::SampleHistory() {
-  const std::shared_ptr<Engine> engine = current_engine_();
-  if (engine == nullptr) return;
-  const EngineStats stats = engine->Stats();
-  history_.Record(reinterpret_cast<uintptr_t>(engine.get()), stats.queries,
-                  stats.total_cost, std::chrono::system_clock::now());
+  v1::GetStatsResponse stats;
+  if (!stats_(&stats)) return;
+  history_.Record(stats.generation(), stats.queries_served(),
+                  stats.total_cost(), std::chrono::system_clock::now());
 }
 
 }  // namespace locator

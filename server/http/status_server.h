@@ -3,8 +3,9 @@
 // engine series (read at scrape time), the stats history the status page
 // charts, and the HTTP server that answers StatusEndpoints' paths.
 //
-// Owns all of them. The engine is always fetched through `current_engine`,
-// never kept, so a swapped engine is followed.
+// Owns all of them. It never sees an Engine: the statistics (already
+// redacted, see StatsSource) and the edge sample are fetched through the
+// functions it is given, per use, so a swapped engine is followed.
 // Thread-safety: SampleHistory() may be called from any thread; the
 // interceptor factory and the HTTP server run on gRPC's and their own
 // threads; Listen() once, before port().
@@ -15,11 +16,9 @@
 #include <grpcpp/support/server_interceptor.h>
 #include <prometheus/registry.h>
 
-#include <functional>
 #include <memory>
 #include <string>
 
-#include "server/core/engine.h"
 #include "server/http/http_server.h"
 #include "server/http/stats_history.h"
 #include "server/http/status_endpoints.h"
@@ -33,8 +32,7 @@ class StatusServer {
   // Sample the history this often (SampleHistory()'s intended period).
   static constexpr double kHistorySeconds = 1.0;
 
-  explicit StatusServer(
-      std::function<std::shared_ptr<Engine>()> current_engine);
+  StatusServer(StatsSource stats, EdgeSource edges);
 
   // For grpc::ServerBuilder: counts every call into the RPC series. This
   // object must outlive the gRPC server.
@@ -47,12 +45,12 @@ class StatusServer {
   // The HTTP port bound by Listen().
   int port() const { return http_->port(); }
 
-  // Adds the current engine's counters to the history (nothing while no
+  // Adds the serving engine's counters to the history (nothing while no
   // engine serves).
   void SampleHistory();
 
  private:
-  const std::function<std::shared_ptr<Engine>()> current_engine_;
+  const StatsSource stats_;
   std::shared_ptr<prometheus::Registry> registry_;
   RpcMetrics rpc_metrics_;
   std::shared_ptr<EngineCollector> engine_collector_;

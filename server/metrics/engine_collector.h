@@ -1,6 +1,8 @@
-// EngineCollector: Prometheus metrics read from the current Engine at scrape
-// time, so they follow whichever engine the service publishes (a Reload may
-// swap it; counters then restart, which Prometheus treats as a reset).
+// EngineCollector: Prometheus metrics of the serving engine, read at scrape
+// time from its statistics as GetStats answers them (the one mapping of the
+// engine's statistics, already redacted as configured), so they follow
+// whichever engine the service publishes (a Reload may swap it; counters
+// then restart, which Prometheus treats as a reset).
 //
 //   locator_engine_loaded                  1 once an engine serves, else 0
 //   locator_queries_total                  points located
@@ -16,7 +18,7 @@
 //   locator_tuning_bytes                   memory of the tuning structures
 //   locator_dataset_vertices, locator_dataset_triangles
 //
-// Owns only the function that yields the current engine.
+// Owns only the function that yields the statistics.
 // Thread-safety: Collect() may be called from any thread.
 
 #ifndef LOCATOR_SERVER_METRICS_ENGINE_COLLECTOR_H_
@@ -26,24 +28,26 @@
 #include <prometheus/metric_family.h>
 
 #include <functional>
-#include <memory>
 #include <vector>
 
-#include "server/core/engine.h"
+#include "locator/v1/locator.pb.h"
 
 namespace locator {
 
+// Fills its argument with the serving engine's statistics as GetStats answers
+// them; false (nothing filled) while no engine serves.
+using StatsSource = std::function<bool(v1::GetStatsResponse*)>;
+
 class EngineCollector final : public prometheus::Collectable {
  public:
-  // `current_engine` returns the engine new calls use, or null while none
-  // is loaded; it is called once per Collect().
-  explicit EngineCollector(
-      std::function<std::shared_ptr<Engine>()> current_engine);
+  // `stats` is called once per Collect().
+  explicit EngineCollector(StatsSource stats);
 
+  // The series listed above from one call of the stats source.
   std::vector<prometheus::MetricFamily> Collect() const override;
 
  private:
-  const std::function<std::shared_ptr<Engine>()> current_engine_;
+  const StatsSource stats_;
 };
 
 }  // namespace locator

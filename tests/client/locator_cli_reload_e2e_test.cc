@@ -27,7 +27,9 @@ class LocatorCliReloadTest : public ::testing::Test {
   void SetUp() override {
     const Status status = ServerProcess::Start(
         LOCATORD_PATH,
-        {"--dataset", "uniform:300:7", "--listen", "127.0.0.1:0"}, &server_);
+        {"--dataset", "uniform:300:7", "--listen", "127.0.0.1:0",
+         "--reload-dir", ::testing::TempDir()},
+        &server_);
     ASSERT_TRUE(status.ok()) << status.ToString();
   }
 

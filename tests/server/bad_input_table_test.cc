@@ -174,21 +174,45 @@ grpc::Status EmptyBatch(const Env& env) {
   return status;
 }
 
+// Writes `requests` on one stream, half-closes it and reads every answer:
+// there must be `answers`, those before the first bad request.
+grpc::Status StreamOf(const Env& env,
+                      const std::vector<v1::LocateRequest>& requests,
+                      int answers) {
+  grpc::ClientContext context;
+  auto stream = env.stub.LocateStream(&context);
+  for (const v1::LocateRequest& request : requests) stream->Write(request);
+  stream->WritesDone();
+  int read = 0;
+  v1::LocateResponse response;
+  while (stream->Read(&response)) ++read;
+  EXPECT_EQ(read, answers);
+  return stream->Finish();
+}
+
 // A stream of two good points, an infinite one and another good one: the
 // answers before the bad point arrive, then the stream ends.
 grpc::Status StreamWithInfinitePoint(const Env& env) {
+  return StreamOf(env,
+                  {LocateRequestFor({1.25, 2.5}), LocateRequestFor({3, 4}),
+                   LocateRequestFor({kInf, 1}), LocateRequestFor({5, 5})},
+                  2);
+}
+
+// A Locate whose request has no point at all.
+grpc::Status LocateWithoutPoint(const Env& env) {
   grpc::ClientContext context;
-  auto stream = env.stub.LocateStream(&context);
-  for (const Point2& q :
-       std::vector<Point2>{{1.25, 2.5}, {3, 4}, {kInf, 1}, {5, 5}}) {
-    stream->Write(LocateRequestFor(q));
-  }
-  stream->WritesDone();
-  int answers = 0;
   v1::LocateResponse response;
-  while (stream->Read(&response)) ++answers;
-  EXPECT_EQ(answers, 2);
-  return stream->Finish();
+  return env.stub.Locate(&context, v1::LocateRequest(), &response);
+}
+
+// A stream of one good point, a request without a point and another good
+// point: the first answer arrives, then the stream ends.
+grpc::Status StreamWithoutPoint(const Env& env) {
+  return StreamOf(env,
+                  {LocateRequestFor({1.25, 2.5}), v1::LocateRequest(),
+                   LocateRequestFor({3, 4})},
+                  1);
 }
 
 // A stream the client cancels after five round trips.
@@ -261,6 +285,8 @@ std::vector<CallRow> CallRows() {
        Code::INVALID_ARGUMENT, "non-finite coordinate"},
       {"LocateMinusInf", "Locate (-inf, 0)", kLimits, LocateCall({-kInf, 0}),
        Code::INVALID_ARGUMENT, "non-finite coordinate"},
+      {"LocateWithoutPoint", "Locate with no point field", kLimits,
+       LocateWithoutPoint, Code::INVALID_ARGUMENT, "point is required"},
       // ±1e308 are finite: answered exactly, outside the hull.
       {"LocatePlus1e308", "Locate (1e308, 1e308)", kLimits,
        LocateCall({big, big}), Code::OK, ""},
@@ -283,6 +309,9 @@ std::vector<CallRow> CallRows() {
       {"StreamInf", "LocateStream of 2 good points, then (+inf, 1)", kLimits,
        StreamWithInfinitePoint, Code::INVALID_ARGUMENT,
        "non-finite coordinate"},
+      {"StreamWithoutPoint",
+       "LocateStream of a good point, then a request with no point", kLimits,
+       StreamWithoutPoint, Code::INVALID_ARGUMENT, "point is required"},
       {"EmptyBatch", "LocateBatch with no points", kLimits, EmptyBatch,
        Code::OK, ""},
       {"MismatchedColumns", "LocateBatch with 6 xs and 5 ys", kLimits,

@@ -78,7 +78,8 @@ TEST(LocatordReloadTest, TheNewDatasetIsServedExactly) {
   const std::string second = dir.path() + "/second.csv";
   WriteCsv(second, 2000, 9);
   std::unique_ptr<ServerProcess> server;
-  ASSERT_TRUE(StartLocatord(first.path(), {}, &server).ok());
+  ASSERT_TRUE(
+      StartLocatord(first.path(), {"--reload-dir", dir.path()}, &server).ok());
   auto stub = NewStub(*server);
   EXPECT_EQ(GetStats(*stub).generation(), 1u);
 
@@ -102,15 +103,18 @@ TEST(LocatordReloadTest, ABadFileKeepsTheOldDatasetServing) {
   const std::string bad = dir.path() + "/bad.csv";
   std::ofstream(bad) << "x,y,z\n0,0,1\n1,oops,2\n";
   std::unique_ptr<ServerProcess> server;
-  ASSERT_TRUE(StartLocatord(first.path(), {}, &server).ok());
+  ASSERT_TRUE(
+      StartLocatord(first.path(), {"--reload-dir", dir.path()}, &server).ok());
   auto stub = NewStub(*server);
 
   v1::ReloadResponse response;
   grpc::Status status = Reload(*stub, bad, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_THAT(status.error_message(), HasSubstr(bad + ":3"));
+  // A missing file is refused like a file outside the reload dir (see
+  // locatord_reload_policy_test.cc).
   status = Reload(*stub, dir.path() + "/missing.csv", &response);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::NOT_FOUND);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::PERMISSION_DENIED);
 
   const v1::GetStatsResponse stats = GetStats(*stub);
   EXPECT_EQ(stats.generation(), 1u);
@@ -150,8 +154,12 @@ TEST(LocatordReloadTest, CallsInFlightFinishOnTheOldEngine) {
   const TestDatasetFile first;
   std::unique_ptr<Reference> reference;
   ASSERT_TRUE(Reference::Build(first.path(), &reference).ok());
+  // A reload dir lets Reload load kBigDataset, a generator spec.
+  ScratchDir reload_dir;
   std::unique_ptr<ServerProcess> server;
-  ASSERT_TRUE(StartLocatord(first.path(), {}, &server).ok());
+  ASSERT_TRUE(
+      StartLocatord(first.path(), {"--reload-dir", reload_dir.path()}, &server)
+          .ok());
   auto stub = NewStub(*server);
   const std::vector<Point2> queries = TestQueries();
 

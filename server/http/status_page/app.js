@@ -1,6 +1,8 @@
-// locatord status page: polls /api/stats, draws the query heat map with hot
-// regions, start points and an edge sample, charts cost and throughput, and
-// records what it rendered in data attributes for scripts and tests.
+// locatord status page: polls /api/stats (GetStatsResponse as proto JSON:
+// 64-bit integers arrive as strings) and /api/history, draws the query heat
+// map with hot regions, start points and an edge sample, charts cost and
+// throughput, and records what it rendered in data attributes for scripts
+// and tests.
 'use strict';
 
 const REFRESH_MS = 1500;
@@ -15,7 +17,7 @@ const COLORS = {
 };
 
 let edgeSegments = [];
-let edgesDataset = null;  // which dataset edgeSegments belong to
+let edgesGeneration = null;  // the serving generation edgeSegments are of
 let renderCount = 0;
 
 function setText(id, text) {
@@ -39,7 +41,7 @@ function formatNumber(x, digits) {
 
 function formatBytes(bytes) {
   const units = ['B', 'KiB', 'MiB', 'GiB'];
-  let value = bytes;
+  let value = Number(bytes);
   let unit = 0;
   while (value >= 1024 && unit < units.length - 1) {
     value /= 1024;
@@ -135,7 +137,7 @@ function drawMap(stats) {
   }
 
   ctx.fillStyle = COLORS.start;
-  for (const [x, y] of tuning.start_points) {
+  for (const {x, y} of tuning.start_points) {
     ctx.fillRect(t.x(x) - 1, t.y(y) - 1, 2, 2);
   }
 
@@ -192,44 +194,45 @@ function drawChart(id, times, values, color) {
   ctx.stroke();
 }
 
-function renderFigures(stats) {
+function renderFigures(stats, history) {
   const tuning = stats.tuning;
   const dataset = stats.dataset;
-  setText('dataset', `${dataset.source}: ${formatCount(dataset.vertices)} ` +
+  const source = dataset.source || '(redacted)';
+  setText('dataset', `${source}: ${formatCount(dataset.vertices)} ` +
                          `points, ${formatCount(dataset.triangles)} triangles`);
   setText('strategy', `strategy ${stats.strategy}`);
-  setFigure('queries', stats.queries, formatCount(stats.queries));
-  setFigure('qps', stats.qps, formatNumber(stats.qps, 0));
+  const queries = Number(stats.queries_served);
+  setFigure('queries', queries, formatCount(queries));
+  const qps = history.qps.length > 0 ? history.qps[history.qps.length - 1]
+                                     : null;
+  setFigure('qps', qps, formatNumber(qps, 0));
   setFigure('mean-cost-recent', stats.mean_cost_recent,
             formatNumber(stats.mean_cost_recent, 2));
   setFigure('mean-cost-lifetime', stats.mean_cost_lifetime,
             formatNumber(stats.mean_cost_lifetime, 2));
-  setFigure('snapshot-version', tuning.snapshot_version,
+  const count = (id, value) => setFigure(id, Number(value), formatCount(value));
+  const bytes = (id, value) => setFigure(id, Number(value), formatBytes(value));
+  setFigure('snapshot-version', Number(tuning.snapshot_version),
             String(tuning.snapshot_version));
-  setFigure('retunes', tuning.retune_count, String(tuning.retune_count));
-  setFigure('hot-queries', tuning.hot_queries, formatCount(tuning.hot_queries));
-  setFigure('fallback-queries', tuning.fallback_queries,
-            formatCount(tuning.fallback_queries));
-  setFigure('start-points', tuning.start_point_count,
-            formatCount(tuning.start_point_count));
-  setFigure('triangulation-bytes', dataset.triangulation_bytes,
-            formatBytes(dataset.triangulation_bytes));
-  setFigure('tuning-bytes', tuning.memory_bytes,
-            formatBytes(tuning.memory_bytes));
+  setFigure('retunes', Number(tuning.retune_count), String(tuning.retune_count));
+  count('hot-queries', tuning.hot_queries);
+  count('fallback-queries', tuning.fallback_queries);
+  count('start-points', tuning.start_point_count);
+  bytes('triangulation-bytes', stats.memory.triangulation_bytes);
+  bytes('tuning-bytes', stats.memory.tuning_bytes);
 }
 
-function render(stats) {
+function render(stats, history) {
   const state = document.getElementById('state');
   state.textContent = 'serving';
   state.className = 'state serving';
-  renderFigures(stats);
+  renderFigures(stats, history);
   drawMap(stats);
-  drawChart('cost-chart', stats.history.t, stats.history.mean_cost,
-            COLORS.cost);
-  drawChart('qps-chart', stats.history.t, stats.history.qps, COLORS.qps);
+  drawChart('cost-chart', history.t, history.mean_cost, COLORS.cost);
+  drawChart('qps-chart', history.t, history.qps, COLORS.qps);
   renderCount++;
   document.body.dataset.renderedVersion = String(stats.tuning.snapshot_version);
-  document.body.dataset.renderedQueries = String(stats.queries);
+  document.body.dataset.renderedQueries = String(stats.queries_served);
   document.body.dataset.renderCount = String(renderCount);
 }
 
@@ -245,22 +248,23 @@ async function fetchJson(path) {
   return {status: response.status, body};
 }
 
-// Fetches the edge sample once per dataset (it never changes otherwise).
-async function ensureEdges(dataset) {
-  const key = `${dataset.source}|${dataset.vertices}|${dataset.triangles}`;
-  if (key === edgesDataset) return;
+// Fetches the edge sample once per serving generation (it changes only when
+// a reload swaps the dataset).
+async function ensureEdges(generation) {
+  if (generation === edgesGeneration) return;
   const edges = await fetchJson('/api/edges');
   if (edges.status !== 200) return;
   edgeSegments = edges.body.segments;
-  edgesDataset = key;
+  edgesGeneration = generation;
 }
 
 async function refresh() {
   try {
     const stats = await fetchJson('/api/stats');
     if (stats.status === 200) {
-      await ensureEdges(stats.body.dataset);
-      render(stats.body);
+      const history = await fetchJson('/api/history');
+      await ensureEdges(stats.body.generation);
+      render(stats.body, history.body);
     } else {
       showState(stats.body.state || `HTTP ${stats.status}`, 'loading');
     }

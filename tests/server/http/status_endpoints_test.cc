@@ -3,12 +3,16 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "server/core/dataset.h"
+#include "server/core/engine.h"
 #include "server/metrics/engine_collector.h"
 #include "server/metrics/metrics_text.h"
+#include "server/proto_convert.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/prometheus_text.h"
 
@@ -23,11 +27,23 @@ using ::testing::HasSubstr;
 
 class StatusEndpointsTest : public ::testing::Test {
  protected:
+  // Endpoints over engine_, wired as locatord wires them (there through
+  // LocatorService::CurrentStats).
   StatusEndpoints Endpoints() {
-    const auto current = [this] { return engine_; };
-    auto collector = std::make_shared<EngineCollector>(current);
+    const StatsSource stats = [this](v1::GetStatsResponse* out) {
+      if (engine_ == nullptr) return false;
+      ToGetStatsResponse(engine_->Stats(), out);
+      return true;
+    };
+    auto collector = std::make_shared<EngineCollector>(stats);
     return StatusEndpoints(
-        {.current_engine = current,
+        {.stats = stats,
+         .edges =
+             [this](std::vector<std::array<Point2, 2>>* edges) {
+               if (engine_ == nullptr) return false;
+               *edges = engine_->EdgeSample();
+               return true;
+             },
          .history = &history_,
          .metrics_text = [collector] { return MetricsText({collector}); }});
   }
@@ -52,6 +68,9 @@ TEST_F(StatusEndpointsTest, WhileLoadingTheApiIs503AndMetricsSayNotLoaded) {
     EXPECT_EQ(reply.content_type, "application/json");
     EXPECT_EQ(reply.body, R"({"state":"loading"})");
   }
+  const HttpResponse history = endpoints.Handle("/api/history");
+  EXPECT_EQ(history.status, 200u);
+  EXPECT_EQ(history.body, R"({"t":[],"qps":[],"mean_cost":[]})");
   const HttpResponse metrics = endpoints.Handle("/metrics");
   EXPECT_EQ(metrics.status, 200u);
   PrometheusText text;
@@ -73,9 +92,12 @@ TEST_F(StatusEndpointsTest, FollowsTheCurrentEngine) {
                   std::chrono::system_clock::now() + std::chrono::seconds(1));
   JsonValue stats;
   ASSERT_TRUE(ParseJson(endpoints.Handle("/api/stats").body, &stats).ok());
-  EXPECT_EQ(stats["queries"].number(), 10);
-  EXPECT_EQ(stats["history"]["mean_cost"].array().at(0).number(), 4);
+  // Proto JSON: 64-bit integers are strings.
+  EXPECT_EQ(stats["queries_served"].string(), "10");
   EXPECT_EQ(stats["dataset"]["source"].string(), "uniform:2000:3");
+  JsonValue history;
+  ASSERT_TRUE(ParseJson(endpoints.Handle("/api/history").body, &history).ok());
+  EXPECT_EQ(history["mean_cost"].array().at(0).number(), 4);
 
   PrometheusText text;
   ASSERT_TRUE(
@@ -85,7 +107,7 @@ TEST_F(StatusEndpointsTest, FollowsTheCurrentEngine) {
   // A new engine: the same endpoints now describe it.
   Load();
   ASSERT_TRUE(ParseJson(endpoints.Handle("/api/stats").body, &stats).ok());
-  EXPECT_EQ(stats["queries"].number(), 0);
+  EXPECT_EQ(stats["queries_served"].string(), "0");
   JsonValue edges;
   ASSERT_TRUE(ParseJson(endpoints.Handle("/api/edges").body, &edges).ok());
   EXPECT_EQ(edges["segments"].array().size(), engine_->EdgeSample().size());

@@ -1,9 +1,12 @@
 // locatord's HTTP side end to end: /metrics counts exactly the gRPC calls
-// the test makes and parses as strict Prometheus text; /api/stats and
-// /api/edges are valid JSON agreeing with the traffic; unknown paths, other
-// methods and an address in use are refused.
+// the test makes and parses as strict Prometheus text; /api/stats is
+// GetStats's answer as proto JSON, /api/history and /api/edges are valid
+// JSON agreeing with the traffic; with --redact no HTTP output shows a
+// server path; unknown paths, other methods and an address in use are
+// refused.
 
 #include <gmock/gmock.h>
+#include <google/protobuf/util/json_util.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "client/health_check.h"
+#include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 #include "tests/server/http/http_test_client.h"
 #include "tests/server/http/prometheus_text.h"
@@ -23,6 +27,7 @@ namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr char kDataset[] = "uniform:20000:1";
 constexpr int kLocateCalls = 137;
@@ -149,24 +154,47 @@ TEST_F(StatusHttpTest, EngineMetricsMatchTheQueriesLocated) {
   }
 }
 
-TEST_F(StatusHttpTest, StatsJsonDescribesTheEngine) {
+// Proto JSON writes 64-bit integers as strings.
+uint64_t Uint64(const JsonValue& value) { return std::stoull(value.string()); }
+
+TEST_F(StatusHttpTest, StatsJsonIsGetStatsAsProtoJson) {
   const JsonValue stats = GetJson(server_->http_port(), "/api/stats");
   ASSERT_FALSE(stats.is_null());
-  EXPECT_EQ(stats["state"].string(), "serving");
   EXPECT_EQ(stats["strategy"].string(), "self-tuning");
   EXPECT_EQ(stats["dataset"]["source"].string(), kDataset);
-  EXPECT_EQ(stats["dataset"]["vertices"].number(), 20000);
-  EXPECT_EQ(stats["queries"].number(), kLocateCalls + kBatchPoints);
+  EXPECT_EQ(Uint64(stats["dataset"]["vertices"]), 20000u);
+  EXPECT_EQ(Uint64(stats["queries_served"]), kLocateCalls + kBatchPoints);
+  EXPECT_EQ(Uint64(stats["total_cost"]), cost_sum_);
   EXPECT_DOUBLE_EQ(stats["mean_cost_lifetime"].number(),
                    double(cost_sum_) / (kLocateCalls + kBatchPoints));
+  EXPECT_EQ(Uint64(stats["generation"]), 1u);
   const JsonValue& tuning = stats["tuning"];
   const double grid = tuning["grid_size"].number();
   EXPECT_GT(grid, 0);
   EXPECT_EQ(tuning["histogram"].array().size(), grid * grid);
   EXPECT_LE(tuning["start_points"].array().size(),
-            tuning["start_point_count"].number());
-  EXPECT_GT(tuning["memory_bytes"].number(), 0);
-  const JsonValue& history = stats["history"];
+            Uint64(tuning["start_point_count"]));
+  EXPECT_EQ(Uint64(tuning["hot_queries"]) + Uint64(tuning["fallback_queries"]),
+            kLocateCalls + kBatchPoints);
+  EXPECT_GT(Uint64(stats["memory"]["tuning_bytes"]), 0u);
+
+  // The same message GetStats answers (its volatile fields aside).
+  HttpReply reply;
+  ASSERT_TRUE(HttpGet(server_->http_port(), "/api/stats", &reply).ok());
+  v1::GetStatsResponse from_http;
+  ASSERT_TRUE(
+      google::protobuf::util::JsonStringToMessage(reply.body, &from_http).ok());
+  v1::GetStatsResponse from_grpc = e2e::GetStats(*server_->NewStub());
+  EXPECT_EQ(from_http.dataset().DebugString(),
+            from_grpc.dataset().DebugString());
+  EXPECT_EQ(from_http.walk_faces().DebugString(),
+            from_grpc.walk_faces().DebugString());
+  EXPECT_EQ(from_http.queries_served(), from_grpc.queries_served());
+}
+
+TEST_F(StatusHttpTest, HistoryHasOneValuePerSample) {
+  const JsonValue history = GetJson(server_->http_port(), "/api/history");
+  ASSERT_FALSE(history.is_null());
   EXPECT_EQ(history["t"].array().size(), history["qps"].array().size());
   EXPECT_EQ(history["t"].array().size(), history["mean_cost"].array().size());
 }
@@ -223,6 +251,56 @@ TEST_F(StatusHttpTest, AnHttpAddressInUseExitsOne) {
           .ok());
   EXPECT_EQ(second->WaitForExit(std::chrono::seconds(30)), 1);
   EXPECT_THAT(second->StderrText(), HasSubstr("cannot listen on 127.0.0.1:"));
+}
+
+// Everything the HTTP side serves, for a locatord serving a dataset file,
+// with a state dir, and `flags`.
+struct HttpOutputs {
+  std::string dataset_path;
+  std::string state_dir;
+  std::string text;  // every body, one after another
+  JsonValue stats;
+};
+
+void ReadHttpOutputs(const std::vector<std::string>& flags,
+                     HttpOutputs* outputs) {
+  const e2e::TestDatasetFile dataset;
+  const test::ScratchDir state_dir;
+  outputs->dataset_path = dataset.path();
+  outputs->state_dir = state_dir.path();
+  std::vector<std::string> all = {"--state-dir", state_dir.path()};
+  all.insert(all.end(), flags.begin(), flags.end());
+  std::unique_ptr<LocatordWithHttp> server;
+  const Status started = LocatordWithHttp::Start(dataset.path(), all, &server);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  v1::LocateResponse located;
+  ASSERT_TRUE(e2e::LocateOne(*server->NewStub(), {30.5, 20.25}, &located).ok());
+  for (const std::string path :
+       {"/api/stats", "/api/history", "/api/edges", "/metrics", "/"}) {
+    HttpReply reply;
+    ASSERT_TRUE(HttpGet(server->http_port(), path, &reply).ok());
+    ASSERT_EQ(reply.status, 200u) << path;
+    outputs->text += reply.body;
+  }
+  outputs->stats = GetJson(server->http_port(), "/api/stats");
+}
+
+TEST(StatusHttpRedactTest, WithRedactNoHttpOutputShowsAServerPath) {
+  HttpOutputs outputs;
+  ASSERT_NO_FATAL_FAILURE(ReadHttpOutputs({"--redact"}, &outputs));
+  EXPECT_THAT(outputs.text, Not(HasSubstr(outputs.dataset_path)));
+  EXPECT_THAT(outputs.text, Not(HasSubstr(outputs.state_dir)));
+  EXPECT_EQ(outputs.stats["dataset"]["source"].string(), "");
+  EXPECT_EQ(outputs.stats["tuning"]["persistence"]["state_path"].string(), "");
+}
+
+// The test above would pass vacuously if the paths never showed.
+TEST(StatusHttpRedactTest, WithoutRedactStatsShowThePaths) {
+  HttpOutputs outputs;
+  ASSERT_NO_FATAL_FAILURE(ReadHttpOutputs({}, &outputs));
+  EXPECT_THAT(outputs.text, HasSubstr(outputs.dataset_path));
+  EXPECT_THAT(outputs.text, HasSubstr(outputs.state_dir));
+  EXPECT_EQ(outputs.stats["dataset"]["source"].string(), outputs.dataset_path);
 }
 
 }  // namespace

@@ -1,0 +1,78 @@
+#include "server/reload_policy.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+#include <utility>
+
+#include "server/core/dataset.h"
+#include "server/status_mapping.h"
+
+namespace locator {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool HasDotDot(const fs::path& path) {
+  for (const fs::path& part : path) {
+    if (part == "..") return true;
+  }
+  return false;
+}
+
+// Whether `path` is `dir` itself or below it; both canonical.
+bool IsInside(const fs::path& path, const fs::path& dir) {
+  const auto [dir_end, path_at] =
+      std::mismatch(dir.begin(), dir.end(), path.begin(), path.end());
+  return dir_end == dir.end() && path_at != path.end();
+}
+
+}  // namespace
+
+ReloadPolicy::ReloadPolicy(std::string configured_dataset,
+                           std::string reload_dir)
+    : configured_dataset_(std::move(configured_dataset)),
+      reload_dir_(std::move(reload_dir)) {}
+
+grpc::Status ReloadPolicy::Resolve(const std::string& requested,
+                                   std::string* spec) const {
+  if (requested.empty() || requested == configured_dataset_) {
+    *spec = "";
+    return grpc::Status::OK;
+  }
+  if (reload_dir_.empty()) {
+    return ToGrpcStatus(Refusal::kPermissionDenied,
+                        "this server reloads only its configured dataset "
+                        "(start it with --reload-dir to allow others)");
+  }
+  if (IsGeneratorSpec(requested)) {
+    *spec = requested;
+    return grpc::Status::OK;
+  }
+  std::string file = FileInReloadDir(requested);
+  if (file.empty()) {
+    return ToGrpcStatus(Refusal::kPermissionDenied,
+                        "dataset '" + requested +
+                            "' is not a file in this server's reload dir");
+  }
+  *spec = std::move(file);
+  return grpc::Status::OK;
+}
+
+std::string ReloadPolicy::FileInReloadDir(const std::string& requested) const {
+  const fs::path path(requested);
+  if (HasDotDot(path)) return "";
+  std::error_code error;
+  const fs::path dir = fs::canonical(reload_dir_, error);
+  if (error) return "";
+  // canonical() resolves every symlink on the way, so the prefix test below
+  // sees where the file really is.
+  const fs::path file =
+      fs::canonical(path.is_absolute() ? path : dir / path, error);
+  if (error || !IsInside(file, dir) || !fs::is_regular_file(file, error)) {
+    return "";
+  }
+  return file.string();
+}
+
+}  // namespace locator
