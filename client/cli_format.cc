@@ -1,12 +1,11 @@
 #include "client/cli_format.h"
 
-#include <google/protobuf/util/json_util.h>
-
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <string_view>
 
+#include "common/proto_json.h"
 #include "common/str_cat.h"
 
 namespace locator {
@@ -103,14 +102,10 @@ std::string LocationTypeName(v1::LocationType type) {
   return name.empty() ? std::to_string(static_cast<int>(type)) : name;
 }
 
-std::string MessageToJson(const google::protobuf::Message& message) {
-  google::protobuf::util::JsonPrintOptions options;
-  options.always_print_primitive_fields = true;
-  options.preserve_proto_field_names = true;
-  std::string json;
-  // Printing a valid message into a string cannot fail.
-  (void)google::protobuf::util::MessageToJsonString(message, &json, options);
-  return json + "\n";
+std::string MessageToJson(const google::protobuf::Message& message){
+    return ProtoJson(message) +
+           "
+           ";
 }
 
 std::string FormatLocate(const v1::LocateResponse& response) {

@@ -1,9 +1,8 @@
 #include "server/http/status_endpoints.h"
 
-#include <google/protobuf/util/json_util.h>
-
 #include <utility>
 
+#include "common/proto_json.h"
 #include "server/http/json_writer.h"
 #include "server/http/status_page_files.h"
 
@@ -16,17 +15,6 @@ constexpr char kMetricsContentType[] =
 
 HttpResponse Loading() {
   return HttpResponse{503, kJson, R"({"state":"loading"})"};
-}
-
-// The proto JSON of `stats`, printed as the CLI prints it.
-std::string StatsJson(const v1::GetStatsResponse& stats) {
-  google::protobuf::util::JsonPrintOptions options;
-  options.always_print_primitive_fields = true;
-  options.preserve_proto_field_names = true;
-  std::string json;
-  // Serializing a message that was just built cannot fail.
-  (void)google::protobuf::util::MessageToJsonString(stats, &json, options);
-  return json;
 }
 
 std::string HistoryJson(const std::vector<StatsSample>& history) {
@@ -89,7 +77,7 @@ HttpResponse StatusEndpoints::Api(std::string_view path) const {
   if (path == "/api/stats") {
     v1::GetStatsResponse stats;
     if (!sources_.stats(&stats)) return Loading();
-    return HttpResponse{200, kJson, StatsJson(stats)};
+    return HttpResponse{200, kJson, ProtoJson(stats)};
   }
   if (path == "/api/history") {
     return HttpResponse{200, kJson, HistoryJson(sources_.history->Samples())};

@@ -20,7 +20,7 @@
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 using ::testing::ElementsAre;
@@ -59,7 +59,7 @@ class LocatordGisTest : public ::testing::Test {
   static std::string* gpkg_;
   static Dataset reference_points_;
   static std::unique_ptr<Triangulation> reference_;
-  static std::unique_ptr<testing::ServerProcess> server_;
+  static std::unique_ptr<ServerProcess> server_;
   std::unique_ptr<v1::Locator::Stub> stub_;
 };
 
@@ -67,7 +67,7 @@ test::ScratchDir* LocatordGisTest::dir_ = nullptr;
 std::string* LocatordGisTest::gpkg_ = nullptr;
 Dataset LocatordGisTest::reference_points_;
 std::unique_ptr<Triangulation> LocatordGisTest::reference_;
-std::unique_ptr<testing::ServerProcess> LocatordGisTest::server_;
+std::unique_ptr<ServerProcess> LocatordGisTest::server_;
 
 // Lon/lat points over the hill (which is centred at 15°E, 49.6525°N).
 std::vector<Point2> LonLatQueries() {
@@ -299,4 +299,4 @@ TEST_F(LocatordGisTest, BadRequestCrssAreInvalidArgument) {
 }
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

@@ -16,13 +16,12 @@
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 
-namespace locator::e2e {
+namespace locator::test {
 namespace {
 
 namespace fs = std::filesystem;
 using test::ScratchDir;
 using ::testing::HasSubstr;
-using testing::ServerProcess;
 
 grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
                     v1::ReloadResponse* response = nullptr) {
@@ -112,4 +111,4 @@ TEST(LocatordReloadPolicyTest,
 }
 
 }  // namespace
-}  // namespace locator::e2e
+}  // namespace locator::test

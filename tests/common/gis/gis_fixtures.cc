@@ -43,8 +43,8 @@ std::string PointsGeoJson(const std::vector<PointZ>& points) {
 
 std::string RunTool(const std::string& program,
                     const std::vector<std::string>& args) {
-  const locator::testing::BinaryResult result =
-      locator::testing::RunBinary(program, args);
+  const locator::test::BinaryResult result =
+      locator::test::RunBinary(program, args);
   EXPECT_EQ(result.exit_code, 0) << program << " failed: " << result.err;
   return result.out;
 }

@@ -184,7 +184,7 @@ TEST_F(StatusHttpTest, StatsJsonIsGetStatsAsProtoJson) {
   v1::GetStatsResponse from_http;
   ASSERT_TRUE(
       google::protobuf::util::JsonStringToMessage(reply.body, &from_http).ok());
-  v1::GetStatsResponse from_grpc = e2e::GetStats(*server_->NewStub());
+  v1::GetStatsResponse from_grpc = GetStats(*server_->NewStub());
   EXPECT_EQ(from_http.dataset().DebugString(),
             from_grpc.dataset().DebugString());
   EXPECT_EQ(from_http.walk_faces().DebugString(),
@@ -264,7 +264,7 @@ struct HttpOutputs {
 
 void ReadHttpOutputs(const std::vector<std::string>& flags,
                      HttpOutputs* outputs) {
-  const e2e::TestDatasetFile dataset;
+  const TestDatasetFile dataset;
   const test::ScratchDir state_dir;
   outputs->dataset_path = dataset.path();
   outputs->state_dir = state_dir.path();
@@ -274,7 +274,7 @@ void ReadHttpOutputs(const std::vector<std::string>& flags,
   const Status started = LocatordWithHttp::Start(dataset.path(), all, &server);
   ASSERT_TRUE(started.ok()) << started.ToString();
   v1::LocateResponse located;
-  ASSERT_TRUE(e2e::LocateOne(*server->NewStub(), {30.5, 20.25}, &located).ok());
+  ASSERT_TRUE(LocateOne(*server->NewStub(), {30.5, 20.25}, &located).ok());
   for (const std::string path :
        {"/api/stats", "/api/history", "/api/edges", "/metrics", "/"}) {
     HttpReply reply;
