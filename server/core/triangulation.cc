@@ -138,6 +138,27 @@ uint64_t Triangulation::VertexDigest() const {
     hash.AddDouble(v->point().x());
     hash.AddDouble(v->point().y());
   }
+  if (num_constraints() == 0 && !has_domain_) return hash.digest();
+  // The constrained edges and the in-domain triangles, by sorted ids.
+  std::vector<std::array<int64_t, 3>> items;
+  for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e) {
+    if (!dt_.is_constrained(*e)) continue;
+    const auto [a, b] = std::minmax(e->first->vertex(Ccw(e->second))->info().id,
+                                    e->first->vertex(Cw(e->second))->info().id);
+    items.push_back({-1, a, b});
+  }
+  for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
+    if (!InDomain(f)) continue;
+    std::array<int64_t, 3> ids = {f->vertex(0)->info().id,
+                                  f->vertex(1)->info().id,
+                                  f->vertex(2)->info().id};
+    std::sort(ids.begin(), ids.end());
+    items.push_back(ids);
+  }
+  std::sort(items.begin(), items.end());
+  for (const auto& item : items) {
+    for (const int64_t id : item) hash.AddU64(static_cast<uint64_t>(id));
+  }
   return hash.digest();
 }
 

@@ -290,12 +290,13 @@ Status Triangulation::Builder::NameCrossings() {
   std::map<Vertex_handle, size_t> claimed;
   for (size_t k = 0; k < segments_.size(); ++k) {
     const InputSegment& segment = segments_[k];
-    const auto begin = dt_.vertices_in_constraint_begin(segment.id);
-    const auto end = dt_.vertices_in_constraint_end(segment.id);
-    const Vertex_handle a = *begin;
-    const Vertex_handle b = *std::prev(end);
-    for (auto it = begin; it != end; ++it) {
-      const Vertex_handle v = *it;
+    // The hierarchy's vertex iterator only goes forwards.
+    const std::vector<Vertex_handle> chain(
+        dt_.vertices_in_constraint_begin(segment.id),
+        dt_.vertices_in_constraint_end(segment.id));
+    const Vertex_handle a = chain.front();
+    const Vertex_handle b = chain.back();
+    for (const Vertex_handle v : chain) {
       if (v->info().id >= 0 && !claimed.count(v)) continue;
       const auto [where, fresh] = claimed.emplace(v, k);
       if (fresh) {

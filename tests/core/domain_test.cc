@@ -213,6 +213,22 @@ TEST(DomainTest, PolyFileHoleNeverAnswersAValue) {
   EXPECT_DOUBLE_EQ(inside.value, 15);
 }
 
+TEST(DomainTest, DigestCoversTheConstraints) {
+  const Dataset plain = GenerateUniform(500, 2);
+  Dataset with_hole = plain;
+  with_hole.constraints.rings = {Square(0.1, 0.9), Square(0.4, 0.6)};
+  Dataset other_hole = plain;
+  other_hole.constraints.rings = {Square(0.1, 0.9), Square(0.3, 0.6)};
+  const auto a = BuildOk(plain);
+  const auto b = BuildOk(with_hole);
+  const auto b_again = BuildOk(with_hole);
+  const auto c = BuildOk(other_hole);
+  ASSERT_TRUE(a && b && b_again && c);
+  EXPECT_NE(a->VertexDigest(), b->VertexDigest());
+  EXPECT_NE(b->VertexDigest(), c->VertexDigest());
+  EXPECT_EQ(b->VertexDigest(), b_again->VertexDigest());
+}
+
 TEST(DomainTest, ValuesAreNeverInterpolatedAcrossABreakline) {
   Dataset d = test::PlaneDataset(3000, 4);
   // A breakline whose z (100) is far from the plane (z < 6): a triangle
