@@ -9,169 +9,15 @@
 #include <type_traits>
 #include <utility>
 
+#include "server/core/dataset_text.h"
 #include "server/core/file_io.h"
 
 namespace locator {
 namespace {
 
+using namespace dataset_text;  // NOLINT: this file is its main user
+
 constexpr uint64_t kDefaultSeed = 1;
-
-// Concatenates strings and integers, for messages.
-template <typename... Parts>
-std::string Cat(const Parts&... parts) {
-  std::string out;
-  const auto append = [&out](const auto& part) {
-    if constexpr (std::is_integral_v<std::decay_t<decltype(part)>>) {
-      out += std::to_string(part);
-    } else {
-      out += part;
-    }
-  };
-  (append(parts), ...);
-  return out;
-}
-
-std::string Quoted(std::string_view s) { return Cat("'", s, "'"); }
-
-// A position in the input, for "file:line: what" messages.
-struct Where {
-  std::string_view file;
-  size_t line;
-
-  std::string Prefix() const { return Cat(file, ":", line); }
-  Status Error(std::string_view what) const {
-    return Status::InvalidArgument(Cat(Prefix(), ": ", what));
-  }
-};
-
-Status EmptyDataset(std::string_view file) {
-  return Status::InvalidArgument(Cat(file, ": empty dataset (no points)"));
-}
-
-// `where` is "file:line" or a generator spec.
-Status TooManyPoints(std::string_view where, size_t limit) {
-  return Status::ResourceExhausted(
-      Cat(where, ": more than ", limit, " points (max_points limit)"));
-}
-
-bool IsSpace(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-// The fields of one content line. Fields are separated by whitespace and/or
-// one comma; two commas in a row (or a leading/trailing comma) make an empty
-// field, which is an error rather than a silent shift of the columns.
-struct Fields {
-  // Enough for "index x y value" of a .node line; later ones are only counted.
-  static constexpr size_t kStored = 4;
-  std::array<std::string_view, kStored> field;
-  size_t count = 0;
-  bool has_empty = false;
-};
-
-// Iterates over the lines of a text that carry content: '#' comments (whole
-// line or trailing), the CR of CRLF and blanks are dropped, and lines left
-// empty are skipped. Line numbers count every line, so errors point at the
-// line the user sees in an editor.
-class FieldReader {
- public:
-  explicit FieldReader(std::string_view text) : text_(text) {}
-
-  // Splits the next content line into *f; false at end of text.
-  bool Next(Fields* f) {
-    while (pos_ < text_.size()) {
-      size_t end = text_.find('\n', pos_);
-      if (end == std::string_view::npos) end = text_.size();
-      std::string_view line = text_.substr(pos_, end - pos_);
-      pos_ = end + 1;
-      ++line_number_;
-      line = line.substr(0, line.find('#'));
-      size_t i = 0;
-      while (i < line.size() && IsSpace(line[i])) ++i;
-      if (i == line.size()) continue;
-      f->count = 0;
-      f->has_empty = false;
-      while (i < line.size()) {
-        const size_t start = i;
-        while (i < line.size() && !IsSpace(line[i]) && line[i] != ',') ++i;
-        if (f->count < Fields::kStored) {
-          f->field[f->count] = line.substr(start, i - start);
-        }
-        ++f->count;
-        const bool empty = i == start;
-        int commas = 0;
-        while (i < line.size() && (IsSpace(line[i]) || line[i] == ',')) {
-          commas += line[i++] == ',';
-        }
-        if (empty || commas > 1 || (commas == 1 && i == line.size())) {
-          f->has_empty = true;
-        }
-      }
-      return true;
-    }
-    return false;
-  }
-
-  // 1-based number of the line last returned (after the end: the last line).
-  size_t line_number() const { return line_number_; }
-
- private:
-  std::string_view text_;
-  size_t pos_ = 0;
-  size_t line_number_ = 0;
-};
-
-enum class NumberKind { kFinite, kNonFinite, kNotANumber };
-
-NumberKind ParseDouble(std::string_view s, double* value) {
-  // from_chars rejects a leading '+', which other tools do write.
-  if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
-  const char* end = s.data() + s.size();
-  auto [ptr, ec] = std::from_chars(s.data(), end, *value);
-  if (ptr != end || ec == std::errc::invalid_argument) {
-    return NumberKind::kNotANumber;
-  }
-  if (ec == std::errc::result_out_of_range) {
-    // from_chars reports overflow and underflow alike and leaves *value
-    // untouched; strtod tells them apart (an underflow is a fine ~0). This is
-    // the rare path, so the copy does not matter.
-    *value = std::strtod(std::string(s).c_str(), nullptr);
-  }
-  return std::isfinite(*value) ? NumberKind::kFinite : NumberKind::kNonFinite;
-}
-
-// Parses a finite double; `noun` names the field in the error message.
-Status ParseFinite(std::string_view s, std::string_view noun,
-                   const Where& where, double* value) {
-  const NumberKind kind = ParseDouble(s, value);
-  if (kind == NumberKind::kFinite) return Status::OK();
-  return where.Error(kind == NumberKind::kNonFinite
-                         ? Cat("non-finite ", noun, " ", Quoted(s))
-                         : Cat(Quoted(s), " is not a number"));
-}
-
-template <typename Int>
-bool ParseInteger(std::string_view s, Int* value) {
-  const char* end = s.data() + s.size();
-  auto [ptr, ec] = std::from_chars(s.data(), end, *value);
-  return ec == std::errc() && ptr == end && !s.empty();
-}
-
-// Appends the point in fields [first, first + 1] of `f` and, if
-// `with_value`, the value in field first + 2.
-Status ParsePoint(const Fields& f, size_t first, bool with_value,
-                  const Where& where, Dataset* ds) {
-  std::array<double, 3> v;
-  const size_t n = with_value ? 3 : 2;
-  for (size_t i = 0; i < n; ++i) {
-    Status s = ParseFinite(f.field[first + i], i < 2 ? "coordinate" : "value",
-                           where, &v[i]);
-    if (!s.ok()) return s;
-  }
-  ds->points.push_back({v[0], v[1]});
-  if (with_value) ds->values.push_back(v[2]);
-  return Status::OK();
-}
 
 Status BadSpec(std::string_view spec, std::string_view what) {
   return Status::InvalidArgument(
@@ -222,11 +68,6 @@ std::vector<std::string_view> SplitOnColon(std::string_view s) {
 // than `at_most`. Reserving up front avoids the 2x peak of vector doubling on
 // multi-gigabyte inputs; bounding by the lines keeps a small file from
 // reserving for a count it merely declares.
-size_t ReserveEstimate(std::string_view text, size_t at_most) {
-  return std::min<size_t>(std::count(text.begin(), text.end(), '\n') + 1,
-                          at_most);
-}
-
 }  // namespace
 
 bool IsGeneratorSpec(std::string_view spec) {
@@ -244,7 +85,9 @@ Status LoadDataset(const std::string& spec, Dataset* out,
     status = ReadWholeFile(spec, "dataset", &text);
     if (status.ok()) {
       status = spec.ends_with(".node") ? ParseNodeText(text, spec, &ds, limits)
-                                       : ParseXyzText(text, spec, &ds, limits);
+               : spec.ends_with(".poly")
+                   ? ParsePolyText(text, spec, &ds, limits)
+                   : ParseXyzText(text, spec, &ds, limits);
     }
   }
   if (!status.ok()) return status;
@@ -294,12 +137,15 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
   return Status::OK();
 }
 
-Status ParseNodeText(std::string_view text, std::string_view filename,
-                     Dataset* out, const DatasetLimits& limits) {
-  FieldReader reader(text);
+namespace dataset_text {
+
+Status ParseNodeSection(FieldReader* reader, std::string_view filename,
+                        const DatasetLimits& limits, Dataset* out,
+                        NodeSection* section) {
   Fields f;
-  if (!reader.Next(&f)) return EmptyDataset(filename);
-  const Where header{filename, reader.line_number()};
+  if (!reader->Next(&f)) return EmptyDataset(filename);
+  const Where header{filename, reader->line_number()};
+  section->header_line = header.line;
   if (f.has_empty || f.count != 4) {
     return header.Error(
         "expected header '<#points> <dim> <#attributes> <#markers>'");
@@ -324,13 +170,12 @@ Status ParseNodeText(std::string_view text, std::string_view filename,
   const std::string declared =
       Cat("the ", num_points, " points declared on line ", header.line);
   const bool with_value = num_attributes > 0;
-  const size_t estimate = ReserveEstimate(text, num_points);
   Dataset ds;
-  ds.points.reserve(estimate);
-  if (with_value) ds.values.reserve(estimate);
+  ds.points.reserve(num_points);
+  if (with_value) ds.values.reserve(num_points);
   while (ds.points.size() < num_points) {
-    const bool more = reader.Next(&f);
-    const Where where{filename, reader.line_number()};
+    const bool more = reader->Next(&f);
+    const Where where{filename, reader->line_number()};
     if (!more) {
       return where.Error(
           Cat("found only ", ds.points.size(), " of ", declared));
@@ -349,12 +194,36 @@ Status ParseNodeText(std::string_view text, std::string_view filename,
     if (!ParseInteger(f.field[0], &index)) {
       return where.Error(Cat(Quoted(f.field[0]), " is not an integer index"));
     }
+    if (ds.points.empty()) {
+      section->first_index = index;
+    } else if (index != section->first_index +
+                            static_cast<long long>(ds.points.size())) {
+      return where.Error(
+          Cat("point index ", index, " out of sequence (expected ",
+              section->first_index + static_cast<long long>(ds.points.size()),
+              ")"));
+    }
     // Further attributes and the marker are not used, so not validated.
     if (Status s = ParsePoint(f, 1, with_value, where, &ds); !s.ok()) return s;
   }
+  *out = std::move(ds);
+  return Status::OK();
+}
+
+}  // namespace dataset_text
+
+Status ParseNodeText(std::string_view text, std::string_view filename,
+                     Dataset* out, const DatasetLimits& limits) {
+  FieldReader reader(text);
+  Dataset ds;
+  NodeSection section;
+  Status s = ParseNodeSection(&reader, filename, limits, &ds, &section);
+  if (!s.ok()) return s;
+  Fields f;
   if (reader.Next(&f)) {
     return Where{filename, reader.line_number()}.Error(
-        Cat("more than ", declared));
+        Cat("more than the ", ds.points.size(), " points declared on line ",
+            section.header_line));
   }
   *out = std::move(ds);
   return Status::OK();

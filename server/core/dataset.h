@@ -6,6 +6,10 @@
 //   clusters:N:K[:SEED]     N points in K Gaussian blobs in the unit square
 //                           (non-uniform data).
 //   PATH ending in .node    Triangle's node format.
+//   PATH ending in .poly    Triangle's poly format: points (the node section
+//                           inline), segments, holes and optional regional
+//                           attributes; its segments and holes bound the
+//                           domain with Triangle's semantics.
 //   any other PATH          CSV/XYZ text: "x,y[,z]" per line, comma- or
 //                           whitespace-separated, optional header line,
 //                           '#' comments, blank lines ignored.
@@ -40,6 +44,14 @@ struct Polyline {
 
 // What a constrained triangulation keeps besides the points. All empty for a
 // plain point cloud (the Delaunay triangulation of its convex hull).
+// A .poly regional attribute: the region around `seed` (bounded by the
+// segments) carries `attribute`. Carried with the dataset; the core does not
+// use it yet.
+struct RegionalAttribute {
+  Point2 seed;
+  double attribute = 0;
+};
+
 struct DatasetConstraints {
   // Every segment of every breakline becomes a constrained edge; breaklines
   // do not bound the domain.
@@ -55,6 +67,8 @@ struct DatasetConstraints {
   // A mesh served as given: corner indices into Dataset::points. When set,
   // the in-domain faces are exactly these triangles.
   std::vector<std::array<uint32_t, 3>> triangles;
+  // .poly regional attributes.
+  std::vector<RegionalAttribute> regions;
 
   bool empty() const {
     return breaklines.empty() && rings.empty() && segments.empty() &&
@@ -99,6 +113,16 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
 // then "<index> <x> <y> [attributes...] [marker]"); the first attribute, if
 // any, becomes the value.
 Status ParseNodeText(std::string_view text, std::string_view filename,
+                     Dataset* out,
+                     const DatasetLimits& limits = DatasetLimits());
+
+// Parses Triangle .poly text: a node section as ParseNodeText (the vertex
+// count must not be 0: points in a separate .node are not supported), then
+// "<#segments> <#markers>" and "<index> <from> <to> [marker]" rows, then
+// "<#holes>" and "<index> <x> <y>" rows, then optionally "<#regions>" and
+// "<index> <x> <y> <attribute> [max area]" rows. Segment endpoints are point
+// indices numbered like the node section (from 0 or 1).
+Status ParsePolyText(std::string_view text, std::string_view filename,
                      Dataset* out,
                      const DatasetLimits& limits = DatasetLimits());
 

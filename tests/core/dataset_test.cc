@@ -349,3 +349,60 @@ TEST(GenerateClustersTest, DeterministicClusteredInUnitSquare) {
 
 }  // namespace
 }  // namespace locator
+
+namespace locator {
+namespace {
+
+// A square with a square hole, numbered from 1, with a regional attribute.
+constexpr char kSquareWithHole[] =
+    "# outer square, inner square\n"
+    "8 2 1 0\n"
+    "1 0 0 10\n2 4 0 10\n3 4 4 10\n4 0 4 10\n"
+    "5 1 1 20\n6 3 1 20\n7 3 3 20\n8 1 3 20\n"
+    "8 0\n"
+    "1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+    "5 5 6\n6 6 7\n7 7 8\n8 8 5\n"
+    "1\n"
+    "1 2 2\n"
+    "1\n"
+    "1 0.5 0.5 7 0.1\n";
+
+std::string PolyError(std::string_view text) {
+  Dataset ds;
+  const Status s = ParsePolyText(text, "t.poly", &ds);
+  EXPECT_FALSE(s.ok());
+  return s.message();
+}
+
+TEST(ParsePolyTextTest, SegmentsHolesAndRegions) {
+  Dataset ds;
+  const Status s = ParsePolyText(kSquareWithHole, "t.poly", &ds);
+  ASSERT_TRUE(s.ok()) << s.ToString();
+  ASSERT_EQ(ds.points.size(), 8u);
+  EXPECT_EQ(ds.values[4], 20);
+  ASSERT_EQ(ds.constraints.segments.size(), 8u);
+  // Segment 4 is "5 5 6": points 5 and 6 numbered from 1.
+  EXPECT_EQ(ds.constraints.segments[4].points[0].x, 1);
+  EXPECT_EQ(ds.constraints.segments[4].points[1].x, 3);
+  ASSERT_EQ(ds.constraints.hole_seeds.size(), 1u);
+  EXPECT_EQ(ds.constraints.hole_seeds[0].x, 2);
+  ASSERT_EQ(ds.constraints.regions.size(), 1u);
+  EXPECT_EQ(ds.constraints.regions[0].attribute, 7);
+}
+
+TEST(ParsePolyTextTest, ErrorsNameFileAndLine) {
+  EXPECT_EQ(PolyError("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 3\n0\n"),
+            "t.poly:6: segment refers to point 3, which is not among the 3 "
+            "points numbered from 0");
+  EXPECT_EQ(PolyError("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n"),
+            "t.poly:6: missing segment 1");
+  EXPECT_EQ(PolyError("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n1\n0 x 1\n"),
+            "t.poly:7: 'x' is not a number");
+  EXPECT_EQ(PolyError("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n0 0\n"),
+            "t.poly:5: missing hole header '<#holes>'");
+  EXPECT_EQ(PolyError("3 2 0 0\n0 0 0\n2 1 0\n2 0 1\n"),
+            "t.poly:3: point index 2 out of sequence (expected 1)");
+}
+
+}  // namespace
+}  // namespace locator
