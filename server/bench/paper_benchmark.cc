@@ -114,6 +114,45 @@ std::vector<WorkloadKind> Workloads(const PaperOptions& o) {
           WorkloadKind::kXCluster};
 }
 
+// Refuses to measure a triangulation that does not serve the dataset's
+// constraints (an engine that triangulates the points alone would give
+// Delaunay figures under a non-Delaunay name). Necessary conditions: every
+// breakline and ring corner is a vertex; the triangles, when given, are
+// faces and as many as the triangulation's in-domain triangles.
+Status CheckServesConstraints(const Dataset& dataset, const Triangulation& t) {
+  const DatasetConstraints& c = dataset.constraints;
+  for (const auto* lines : {&c.breaklines, &c.rings}) {
+    for (const Polyline& line : *lines) {
+      for (const Point2& p : line.points) {
+        if (t.ReferenceLocate(p).type != LocationType::kVertex) {
+          char where[96];
+          std::snprintf(where, sizeof where, "(%.17g, %.17g)", p.x, p.y);
+          return Status::FailedPrecondition(
+              dataset.source + ": the constraint corner " + where +
+              " is not a vertex of the triangulation: the engine does not "
+              "build constrained triangulations");
+        }
+      }
+    }
+  }
+  if (!c.triangles.empty() && c.triangles.size() != t.num_triangles()) {
+    return Status::FailedPrecondition(
+        dataset.source + ": " + std::to_string(c.triangles.size()) +
+        " triangles given, " + std::to_string(t.num_triangles()) +
+        " served: the engine does not serve meshes as given");
+  }
+  for (size_t i = 0; i < c.triangles.size(); ++i) {
+    Triangulation::Face_handle face;
+    if (!t.FaceWithCorners(c.triangles[i], &face)) {
+      return Status::FailedPrecondition(
+          dataset.source + ": given triangle " + std::to_string(i) +
+          " is not a face of the triangulation: the engine does not serve "
+          "meshes as given");
+    }
+  }
+  return Status::OK();
+}
+
 Dataset MakeDataset(const PaperOptions& o, size_t n, int seed) {
   if (!o.domain) return GenerateUniform(n, seed);
   return GenerateDomainDataset(*o.domain, n, seed).dataset;
@@ -133,8 +172,10 @@ Status RunPaper(const PaperOptions& o, BenchReport* report) {
   for (size_t n : sizes) {
     SizeResults results;
     for (int seed = 1; seed <= o.seeds; ++seed) {
+      const Dataset dataset = MakeDataset(o, n, seed);
       std::unique_ptr<Triangulation> t;
-      Status s = Triangulation::Build(MakeDataset(o, n, seed), &t);
+      Status s = Triangulation::Build(dataset, &t);
+      if (s.ok()) s = CheckServesConstraints(dataset, *t);
       if (!s.ok()) return s;
       for (WorkloadKind kind : workloads) {
         const size_t measured =
