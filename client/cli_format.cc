@@ -131,10 +131,20 @@ std::string FormatLocate(const v1::LocateResponse& response) {
                     [](int64_t id) { return std::to_string(id); }),
                &out);
   }
+  if (response.domain_edge_vertex_ids_size() > 0) {
+    AppendLine("domain edge",
+               Join(response.domain_edge_vertex_ids(),
+                    [](int64_t id) { return std::to_string(id); }),
+               &out);
+  }
+  const bool outside_domain =
+      response.type() == v1::LOCATION_TYPE_OUTSIDE_DOMAIN;
   AppendLine("barycentric",
-             response.barycentric().empty()
-                 ? "none (outside the convex hull)"
-                 : Join(response.barycentric(), FormatDouble),
+             !response.barycentric().empty()
+                 ? Join(response.barycentric(), FormatDouble)
+             : outside_domain ? "none (outside the domain: in a hole or "
+                                "beyond its boundary)"
+                              : "none (outside the convex hull)",
              &out);
   AppendLine("value",
              response.has_value() ? FormatDouble(response.value()) : "none",
@@ -206,9 +216,11 @@ void AppendBatchCsvRows(std::span<const double> xs, std::span<const double> ys,
                         std::string* out) {
   for (size_t i = 0; i < xs.size(); ++i) {
     const auto type = static_cast<v1::LocationType>(response.types(i));
-    // Barycentric coordinates mean nothing outside the hull (the server
-    // sends zeros); leave those cells empty, like a missing value.
-    const bool inside = type != v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL;
+    // Barycentric coordinates mean nothing outside the hull or the domain
+    // (the server sends zeros); leave those cells empty, like a missing
+    // value.
+    const bool inside = type != v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL &&
+                        type != v1::LOCATION_TYPE_OUTSIDE_DOMAIN;
     out->append(StrCat({FormatDouble(xs[i]), ",", FormatDouble(ys[i]), ",",
                         LocationTypeName(type), ",",
                         std::to_string(response.triangle_ids(i))}));

@@ -19,8 +19,8 @@ namespace locator {
 // The shortest text that reads back as exactly `value` ("0.1", "1e-07").
 std::string FormatDouble(double value);
 
-// "FACE", "EDGE", "VERTEX", "OUTSIDE_CONVEX_HULL" (the enum name without its
-// LOCATION_TYPE_ prefix).
+// "FACE", "EDGE", "VERTEX", "OUTSIDE_CONVEX_HULL", "OUTSIDE_DOMAIN" (the
+// enum name without its LOCATION_TYPE_ prefix).
 std::string LocationTypeName(v1::LocationType type);
 
 // `message` as one line of JSON, every field present (defaults included).

@@ -15,12 +15,17 @@ v1::LocationType ToProtoLocationType(LocationType type) {
       return v1::LOCATION_TYPE_VERTEX;
     case LocationType::kOutsideConvexHull:
       return v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL;
+    case LocationType::kOutsideDomain:
+      return v1::LOCATION_TYPE_OUTSIDE_DOMAIN;
   }
   return v1::LOCATION_TYPE_UNSPECIFIED;
 }
 
-bool IsInsideHull(const LocateResult& result) {
-  return result.type != LocationType::kOutsideConvexHull;
+// Whether the answer has a triangle with barycentrics: inside the hull and
+// the domain.
+bool HasTriangle(const LocateResult& result) {
+  return result.type != LocationType::kOutsideConvexHull &&
+         result.type != LocationType::kOutsideDomain;
 }
 
 void ToProtoPoint(const Point2& point, v1::Point* out) {
@@ -52,6 +57,9 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
   ToProtoBox(info.bounding_box, dataset->mutable_bounding_box());
   dataset->set_has_values(info.has_values);
   dataset->set_build_seconds(info.build_seconds);
+  dataset->set_constraints(info.constraints);
+  dataset->set_holes(info.holes);
+  dataset->set_all_triangles(info.all_triangles);
 }
 
 }  // namespace
@@ -66,12 +74,15 @@ void ToLocateResponse(const LocateResult& result,
     response->add_vertex_ids(result.vertex_ids[corner]);
     ToProtoPoint(result.vertices[corner], response->add_vertices());
   }
-  if (IsInsideHull(result)) {
+  if (HasTriangle(result)) {
     response->mutable_barycentric()->Add(result.barycentric.begin(),
                                          result.barycentric.end());
-  } else {
+  } else if (result.type == LocationType::kOutsideConvexHull) {
     response->mutable_hull_edge_vertex_ids()->Add(result.hull_edge_ids.begin(),
                                                   result.hull_edge_ids.end());
+  } else {
+    response->mutable_domain_edge_vertex_ids()->Add(
+        result.domain_edge_ids.begin(), result.domain_edge_ids.end());
   }
   if (result.has_value) response->set_value(result.value);
   v1::Cost* cost = response->mutable_cost();
@@ -115,7 +126,7 @@ uint64_t WriteBatchAnswers(std::span<const LocateResult> results, size_t offset,
     columns.triangle_ids[row] = result.triangle_id;
     columns.costs[row] = cost;
     cost_sum += cost;
-    const bool inside = IsInsideHull(result);
+    const bool inside = HasTriangle(result);
     for (int corner = 0; corner < 3; ++corner) {
       if (columns.vertex_ids != nullptr) {
         columns.vertex_ids[3 * row + corner] = result.vertex_ids[corner];

@@ -1,5 +1,6 @@
 #include "server/core/cgal_baselines.h"
 
+#include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_hierarchy_2.h>
 #include <CGAL/Triangulation_hierarchy_vertex_base_2.h>
@@ -101,7 +102,7 @@ LocateResult CgalBaselines::LocateNoHint(const Point2& q) const {
 
 LocateResult CgalBaselines::LocateLastHint(const Point2& q) {
   const auto& dt = t_.cgal();
-  Triangulation::Delaunay::Locate_type lt;
+  Triangulation::Cdt::Locate_type lt;
   int li = -1;
   const auto f = dt.locate(Triangulation::ToCgal(q), lt, li, last_);
   // Keep the hint finite: CGAL may answer with an infinite face.

@@ -48,6 +48,9 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   info.vertices = t.num_vertices();
   info.duplicates_merged = t.duplicates_merged();
   info.triangles = t.num_triangles();
+  info.all_triangles = t.num_faces();
+  info.constraints = t.num_constraints();
+  info.holes = t.num_holes();
   info.bounding_box = t.bounding_box();
   info.has_values = t.has_values();
   info.triangulation_bytes = t.MemoryBytes();

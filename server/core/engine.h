@@ -46,7 +46,10 @@ struct DatasetInfo {
   uint64_t input_points = 0;
   uint64_t vertices = 0;           // distinct points
   uint64_t duplicates_merged = 0;  // input_points - vertices
-  uint64_t triangles = 0;          // finite faces
+  uint64_t triangles = 0;          // in-domain triangles
+  uint64_t all_triangles = 0;      // finite faces, in the domain or not
+  uint64_t constraints = 0;        // constrained segments inserted
+  uint64_t holes = 0;              // out-of-domain regions inside the hull
   BoundingBox bounding_box;
   bool has_values = false;
   size_t triangulation_bytes = 0;

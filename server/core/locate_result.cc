@@ -12,6 +12,8 @@ std::string_view LocationTypeName(LocationType type) {
       return "VERTEX";
     case LocationType::kOutsideConvexHull:
       return "OUTSIDE_CONVEX_HULL";
+    case LocationType::kOutsideDomain:
+      return "OUTSIDE_DOMAIN";
   }
   return "UNKNOWN";
 }

@@ -9,6 +9,10 @@
 // the hull edge nearest to the query (seen from outside), and triangle_id,
 // vertex_ids and vertices are the hull triangle on the inner side of that
 // edge; barycentric and value are then not meaningful (has_value is false).
+// For kOutsideDomain (inside the convex hull, but in a hole or outside the
+// domain's boundary), domain_edge_ids are the endpoints of the nearest domain
+// boundary edge; there is no triangle (triangle_id -1, vertex_ids -1), no
+// barycentric (all 0) and no value.
 
 #ifndef LOCATOR_CORE_LOCATE_RESULT_H_
 #define LOCATOR_CORE_LOCATE_RESULT_H_
@@ -26,6 +30,7 @@ enum class LocationType : uint8_t {
   kEdge = 1,
   kVertex = 2,
   kOutsideConvexHull = 3,
+  kOutsideDomain = 4,
 };
 
 std::string_view LocationTypeName(LocationType type);
@@ -52,6 +57,8 @@ struct LocateResult {
   bool has_value = false;
   double value = 0;  // interpolated z, valid when has_value
   std::array<int64_t, 2> hull_edge_ids = {-1, -1};
+  // Endpoints of the nearest domain boundary edge, for kOutsideDomain.
+  std::array<int64_t, 2> domain_edge_ids = {-1, -1};
   LocateCost cost;
 };
 

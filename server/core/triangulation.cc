@@ -6,11 +6,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numeric>
+#include <queue>
 #include <string>
+#include <unordered_set>
 #include <utility>
 
 #include "server/core/fnv_hash.h"
+#include "server/core/segment_distance.h"
 
 namespace locator {
 
@@ -82,89 +84,6 @@ std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
 
 }  // namespace
 
-Status Triangulation::Build(const Dataset& dataset,
-                            std::unique_ptr<Triangulation>* out) {
-  const std::vector<Point2>& pts = dataset.points;
-  const size_t n = pts.size();
-  for (size_t i = 0; i < n; ++i) {
-    if (!IsFinite(pts[i])) {
-      return Status::InvalidArgument("point " + std::to_string(i) +
-                                     " has a non-finite coordinate");
-    }
-  }
-  if (!dataset.values.empty() && dataset.values.size() != n) {
-    return Status::InvalidArgument("dataset values and points differ in size");
-  }
-
-  // Merge repeated points before CGAL sees them: CGAL's range insert would
-  // keep the info of whichever copy its spatial sort visits last, and we
-  // promise the first occurrence's id.
-  std::vector<uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&pts](uint32_t a, uint32_t b) {
-    if (pts[a].x != pts[b].x) return pts[a].x < pts[b].x;
-    if (pts[a].y != pts[b].y) return pts[a].y < pts[b].y;
-    return a < b;
-  });
-  std::vector<uint32_t> first(n);
-  std::vector<std::pair<CgalPoint, VertexInfo>> distinct;
-  for (size_t k = 0; k < n; ++k) {
-    const uint32_t i = order[k];
-    if (k > 0 && pts[order[k - 1]].x == pts[i].x &&
-        pts[order[k - 1]].y == pts[i].y) {
-      first[i] = first[order[k - 1]];
-      continue;
-    }
-    first[i] = i;
-    const double value = dataset.values.empty() ? 0.0 : dataset.values[i];
-    distinct.emplace_back(ToCgal(pts[i]), VertexInfo{int64_t{i}, value});
-  }
-  std::vector<uint32_t>().swap(order);
-
-  if (distinct.size() < 3) {
-    return Status::InvalidArgument(
-        "dataset has " + std::to_string(distinct.size()) +
-        " distinct point(s); a triangulation needs at least 3 that are not "
-        "all collinear");
-  }
-  const CgalPoint& a = distinct[0].first;
-  const CgalPoint& b = distinct[1].first;
-  const bool all_collinear =
-      std::all_of(distinct.begin() + 2, distinct.end(), [&](const auto& p) {
-        return CGAL::orientation(a, b, p.first) == CGAL::COLLINEAR;
-      });
-  if (all_collinear) {
-    return Status::InvalidArgument(
-        "all " + std::to_string(distinct.size()) +
-        " distinct points are collinear; no triangle can be formed");
-  }
-
-  std::unique_ptr<Triangulation> t(new Triangulation());
-  t->has_values_ = !dataset.values.empty();
-  for (const Point2& p : pts) t->box_.Extend(p);
-  t->dt_.insert(distinct.begin(), distinct.end());
-  std::vector<std::pair<CgalPoint, VertexInfo>>().swap(distinct);
-
-  t->by_input_.assign(n, Vertex_handle());
-  for (auto v = t->dt_.finite_vertices_begin();
-       v != t->dt_.finite_vertices_end(); ++v) {
-    t->by_input_[v->info().id] = v;
-  }
-  for (size_t i = 0; i < n; ++i) {
-    if (first[i] != i) t->by_input_[i] = t->by_input_[first[i]];
-  }
-  for (auto f = t->dt_.all_faces_begin(); f != t->dt_.all_faces_end(); ++f) {
-    f->info() = -1;
-  }
-  int64_t next_id = 0;
-  for (auto f = t->dt_.finite_faces_begin(); f != t->dt_.finite_faces_end();
-       ++f) {
-    f->info() = next_id++;
-  }
-  *out = std::move(t);
-  return Status::OK();
-}
-
 size_t Triangulation::MemoryBytes() const {
   return dt_.tds().vertices().capacity() * sizeof(Tds::Vertex) +
          dt_.tds().faces().capacity() * sizeof(Tds::Face) +
@@ -176,7 +95,7 @@ std::vector<std::array<Point2, 2>> Triangulation::SampleEdges(
   std::vector<std::array<Point2, 2>> sample;
   if (max_edges == 0) return sample;
   // Euler's formula for a triangulated point set: V - E + (F + 1) = 2.
-  const size_t edges = num_vertices() + num_triangles() - 1;
+  const size_t edges = num_vertices() + num_faces() - 1;
   const size_t stride = (edges + max_edges - 1) / max_edges;
   sample.reserve(std::min(edges, max_edges));
   size_t index = 0;
@@ -252,8 +171,80 @@ bool Triangulation::FaceWithCorners(const std::array<uint32_t, 3>& ids,
   return false;
 }
 
+bool Triangulation::MoveIntoDomain(Face_handle* f, LocationType type,
+                                   int* feature) const {
+  if (type == LocationType::kEdge) {
+    const Face_handle n = (*f)->neighbor(*feature);
+    if (dt_.is_infinite(n) || !InDomain(n)) return false;
+    *feature = dt_.mirror_index(*f, *feature);
+    *f = n;
+    return true;
+  }
+  if (type != LocationType::kVertex) return false;
+  const Vertex_handle v = (*f)->vertex(*feature);
+  auto g = dt_.incident_faces(v, *f);
+  const auto end = g;
+  do {
+    if (!dt_.is_infinite(g) && InDomain(g)) {
+      *f = g;
+      *feature = g->index(v);
+      return true;
+    }
+  } while (++g != end);
+  return false;
+}
+
+void Triangulation::DescribeOutsideDomain(Face_handle f, const Point2& q,
+                                          LocateResult* out) const {
+  *out = LocateResult();
+  out->type = LocationType::kOutsideDomain;
+  // Best-first over the out-of-domain faces by their distance to q: the
+  // segment from q to the nearest boundary point stays outside the domain,
+  // so the search stops once no face is nearer than the best edge found.
+  // Ties go to the edge with the smaller vertex ids.
+  using Key = std::pair<long double, std::pair<int64_t, int64_t>>;
+  Key best{std::numeric_limits<long double>::infinity(), {-1, -1}};
+  const auto edge_distance = [&](Face_handle g, int i) {
+    return SegmentDistance2(FromCgal(g->vertex(Ccw(i))->point()),
+                            FromCgal(g->vertex(Cw(i))->point()), q);
+  };
+  using Entry = std::pair<long double, Face_handle>;
+  const auto farther = [](const Entry& a, const Entry& b) {
+    return a.first > b.first;
+  };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(farther)> frontier(
+      farther);
+  std::unordered_set<const void*> seen{&*f};
+  frontier.emplace(0.0L, f);
+  while (!frontier.empty() && frontier.top().first <= best.first) {
+    const Face_handle g = frontier.top().second;
+    frontier.pop();
+    for (int i = 0; i < 3; ++i) {
+      const Face_handle n = g->neighbor(i);
+      if (dt_.is_infinite(n)) continue;
+      if (InDomain(n)) {
+        const Key key{edge_distance(g, i),
+                      std::minmax(g->vertex(Ccw(i))->info().id,
+                                  g->vertex(Cw(i))->info().id)};
+        best = std::min(best, key);
+      } else if (seen.insert(&*n).second) {
+        const int j = dt_.mirror_index(g, i);
+        long double d = edge_distance(g, i);
+        d = std::min({d, edge_distance(n, Ccw(j)), edge_distance(n, Cw(j))});
+        frontier.emplace(d, n);
+      }
+    }
+  }
+  out->domain_edge_ids = {best.second.first, best.second.second};
+}
+
 void Triangulation::Describe(Face_handle f, LocationType type, int feature,
                              const Point2& q, LocateResult* out) const {
+  if (type != LocationType::kOutsideConvexHull && !InDomain(f) &&
+      !MoveIntoDomain(&f, type, &feature)) {
+    DescribeOutsideDomain(f, q, out);
+    return;
+  }
   out->type = type;
   out->triangle_id = f->info();
   for (int i = 0; i < 3; ++i) {
@@ -263,6 +254,7 @@ void Triangulation::Describe(Face_handle f, LocationType type, int feature,
   out->feature_index =
       static_cast<int8_t>(type == LocationType::kFace ? -1 : feature);
   out->hull_edge_ids = {-1, -1};
+  out->domain_edge_ids = {-1, -1};
   out->has_value = false;
   out->value = 0;
   switch (type) {
@@ -271,6 +263,8 @@ void Triangulation::Describe(Face_handle f, LocationType type, int feature,
       out->hull_edge_ids = {out->vertex_ids[Ccw(feature)],
                             out->vertex_ids[Cw(feature)]};
       return;
+    case LocationType::kOutsideDomain:
+      return;  // handled above
     case LocationType::kVertex:
       out->barycentric = {0, 0, 0};
       out->barycentric[feature] = 1;
@@ -300,15 +294,15 @@ void Triangulation::Describe(Face_handle f, LocationType type, int feature,
 }
 
 LocateResult Triangulation::ReferenceLocate(const Point2& q) const {
-  Delaunay::Locate_type lt;
+  Cdt::Locate_type lt;
   int li = -1;
   Face_handle f = dt_.locate(ToCgal(q), lt, li);
   LocateResult r;
   switch (lt) {
-    case Delaunay::FACE:
+    case Cdt::FACE:
       Describe(f, LocationType::kFace, -1, q, &r);
       break;
-    case Delaunay::EDGE:
+    case Cdt::EDGE:
       if (dt_.is_infinite(f)) {
         const int mirror = dt_.mirror_index(f, li);
         f = f->neighbor(li);
@@ -316,7 +310,7 @@ LocateResult Triangulation::ReferenceLocate(const Point2& q) const {
       }
       Describe(f, LocationType::kEdge, li, q, &r);
       break;
-    case Delaunay::VERTEX: {
+    case Cdt::VERTEX: {
       const Vertex_handle v = f->vertex(li);
       f = FiniteFaceAt(v);
       Describe(f, LocationType::kVertex, f->index(v), q, &r);
@@ -345,6 +339,10 @@ bool Triangulation::Agrees(const Point2& q, const LocateResult& got,
              Contains(got.vertex_ids, reference.vertex_ids[Cw(fi)]);
     case LocationType::kVertex:
       return Contains(got.vertex_ids, reference.vertex_ids[fi]);
+    case LocationType::kOutsideDomain:
+      return std::minmax(got.domain_edge_ids[0], got.domain_edge_ids[1]) ==
+             std::minmax(reference.domain_edge_ids[0],
+                         reference.domain_edge_ids[1]);
     case LocationType::kOutsideConvexHull:
       break;
   }

@@ -1,15 +1,34 @@
-// Triangulation: the thin adapter that owns a CGAL Delaunay triangulation and
-// every CGAL typedef the engine uses. Nothing outside server/core sees CGAL.
+// Triangulation: the thin adapter that owns a CGAL constrained Delaunay
+// triangulation and every CGAL typedef the engine uses. Nothing outside
+// server/core sees CGAL.
 //
-// Owns: the CGAL Delaunay_triangulation_2 (exact predicates, inexact
-// constructions), vertex info (the stable input id and the value z), face
-// info (a stable triangle id 0..F-1 assigned after the build, in CGAL's
-// finite-face iteration order, so the same input always yields the same ids),
-// and an index from input position to vertex for O(1) random sampling.
+// Owns: one CGAL type for every kind of dataset, a
+// Constrained_triangulation_plus_2 over a Constrained_Delaunay_triangulation_2
+// (exact predicates, inexact constructions, Exact_predicates_tag: the tag that
+// lets constraints cross with this kernel). Without constraints it is the
+// Delaunay triangulation of the points, with the same ids as before. Vertex
+// info holds the stable id and the value z; face info holds the stable
+// triangle id 0..T-1 over the in-domain triangles, in CGAL's finite-face
+// iteration order (so the same input always yields the same ids), or -1 for
+// a face outside the domain and for infinite faces. An index maps ids to
+// vertices for O(1) random sampling.
 //
-// Invariants after Build(): at least one finite triangle exists (>= 3
-// distinct, not all collinear points); repeated input points are merged into
-// the first occurrence, whose id the vertex keeps.
+// Vertex ids: input point i has id i (repeats merged into the first). A
+// constraint point that is not an input point gets the next id after the
+// input ids, in constraint order. Where two constraints cross, CGAL inserts a
+// vertex at the rounded intersection; it gets the next id after those, and
+// (with values) the value interpolated along the first constraint through it,
+// by distance between that constraint's endpoints.
+//
+// The domain (see DatasetConstraints): with rings, a face is in when the
+// number of ring edges crossed from the outside is odd (breaklines never
+// count); with .poly segments, the faces reachable from outside the hull or
+// from a hole point without crossing a segment are out; with mesh triangles,
+// exactly the given triangles are in. Without any of them every finite face
+// is in.
+//
+// Invariants after Build(): at least one in-domain triangle exists; no
+// triangle crosses a constrained edge.
 //
 // Thread-safety: immutable after Build(); every const method may be called
 // from any number of threads.
@@ -17,7 +36,9 @@
 #ifndef LOCATOR_CORE_TRIANGULATION_H_
 #define LOCATOR_CORE_TRIANGULATION_H_
 
-#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -26,6 +47,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -46,25 +68,43 @@ class Triangulation {
   };
   using VertexBase =
       CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
-  using FaceBase = CGAL::Triangulation_face_base_with_info_2<int64_t, Kernel>;
+  using FaceBase = CGAL::Constrained_triangulation_face_base_2<
+      Kernel, CGAL::Triangulation_face_base_with_info_2<int64_t, Kernel>>;
   using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
-  using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
-  using Face_handle = Delaunay::Face_handle;
-  using Vertex_handle = Delaunay::Vertex_handle;
+  using Cdt = CGAL::Constrained_triangulation_plus_2<
+      CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds,
+                                                 CGAL::Exact_predicates_tag>>;
+  using Face_handle = Cdt::Face_handle;
+  using Vertex_handle = Cdt::Vertex_handle;
 
-  // Triangulates `dataset`. InvalidArgument if it has fewer than 3 distinct
-  // points or all of them are collinear.
+  // Triangulates `dataset` with its constraints and marks its domain.
+  // InvalidArgument if it has fewer than 3 distinct points or all of them
+  // are collinear, or its constraints are bad: boundaries that cross, a hole
+  // point outside the domain, a mesh that is not served as given (the error
+  // names the triangle or edge), an empty domain.
   static Status Build(const Dataset& dataset,
                       std::unique_ptr<Triangulation>* out);
 
   Triangulation(const Triangulation&) = delete;
   Triangulation& operator=(const Triangulation&) = delete;
 
-  const Delaunay& cgal() const { return dt_; }
-  size_t input_points() const { return by_input_.size(); }
+  const Cdt& cgal() const { return dt_; }
+  size_t input_points() const { return input_points_; }
   size_t num_vertices() const { return dt_.number_of_vertices(); }
-  size_t num_triangles() const { return dt_.number_of_faces(); }
-  size_t duplicates_merged() const { return input_points() - num_vertices(); }
+  // In-domain triangles (ids 0..num_triangles()-1).
+  size_t num_triangles() const { return num_triangles_; }
+  // Finite faces, in the domain or not.
+  size_t num_faces() const { return dt_.number_of_faces(); }
+  size_t duplicates_merged() const { return duplicates_merged_; }
+  // Whether some finite face is outside the domain's definition (rings,
+  // segments or mesh triangles were given).
+  bool has_domain() const { return has_domain_; }
+  // Constraint segments inserted (breaklines, rings, segments, mesh edges).
+  size_t num_constraints() const { return constraint_kinds_.size(); }
+  // Connected regions of out-of-domain faces that do not touch the hull.
+  size_t num_holes() const { return num_holes_; }
+  // Whether the finite face f is in the domain.
+  bool InDomain(Face_handle f) const { return f->info() >= 0; }
   bool has_values() const { return has_values_; }
   // Bounding box of the input points.
   const BoundingBox& bounding_box() const { return box_; }
@@ -76,7 +116,7 @@ class Triangulation {
   std::vector<std::array<Point2, 2>> SampleEdges(size_t max_edges) const;
 
   bool IsInfinite(Face_handle f) const { return dt_.is_infinite(f); }
-  // The vertex that input point `i` (0 <= i < input_points()) became.
+  // The vertex with id `i` (0 <= i < input_points() is input point i).
   Vertex_handle VertexOfInput(size_t i) const { return by_input_[i]; }
   // Coordinates of the vertex with stable id `id`; false if no such vertex.
   bool VertexPoint(int64_t id, Point2* p) const;
@@ -98,6 +138,9 @@ class Triangulation {
   // Fills `out` (all but cost) for q located at `type` in the finite face f.
   // `feature` is the edge index for kEdge and kOutsideConvexHull (the hull
   // edge of f that q is beyond), the vertex index for kVertex, else unused.
+  // For a face outside the domain it answers kOutsideDomain with the nearest
+  // domain boundary edge, unless q is on the closure of an in-domain
+  // triangle (an edge or vertex it shares), which then answers.
   void Describe(Face_handle f, LocationType type, int feature, const Point2& q,
                 LocateResult* out) const;
 
@@ -116,12 +159,32 @@ class Triangulation {
               const LocateResult& reference) const;
 
  private:
-  Triangulation() = default;
+  // What a constraint segment is, for the domain marking.
+  enum class ConstraintKind : uint8_t { kBreakline, kRing, kSegment, kMesh };
+  class Builder;
 
-  Delaunay dt_;
-  // by_input_[i] is the vertex input point i became; a vertex's stable id
-  // is the input position of its first occurrence.
+  Triangulation() = default;
+  // Among the edges between an out-of-domain face and an in-domain one, the
+  // one nearest q, searched outwards from the out-of-domain face f; sets
+  // out->type, domain_edge_ids and clears the rest.
+  void DescribeOutsideDomain(Face_handle f, const Point2& q,
+                             LocateResult* out) const;
+  // For q on edge/vertex `feature` of an out-of-domain face f, an in-domain
+  // face sharing that edge or vertex (updating f and feature); false if none.
+  bool MoveIntoDomain(Face_handle* f, LocationType type, int* feature) const;
+
+  Cdt dt_;
+  // by_input_[id] is the vertex with that id: input point i became
+  // by_input_[i] (its first occurrence's vertex); constraint points and
+  // crossings follow.
   std::vector<Vertex_handle> by_input_;
+  size_t input_points_ = 0;
+  size_t duplicates_merged_ = 0;
+  size_t num_triangles_ = 0;
+  size_t num_holes_ = 0;
+  bool has_domain_ = false;
+  // The kind of every constraint segment CGAL knows, by its id.
+  std::map<Cdt::Constraint_id, ConstraintKind> constraint_kinds_;
   BoundingBox box_;
   bool has_values_ = false;
 };

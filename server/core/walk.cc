@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "server/core/fast_random.h"
+#include "server/core/segment_distance.h"
 
 namespace locator {
 
@@ -19,30 +20,6 @@ CGAL::Orientation SideOf(Face_handle f, int i,
                          const Triangulation::CgalPoint& q) {
   return CGAL::orientation(f->vertex(Ccw(i))->point(),
                            f->vertex(Cw(i))->point(), q);
-}
-
-// Squared distance from q to segment ab, in long double so that coordinates
-// near 1e308 do not overflow. An endpoint is measured directly (not as a
-// clamped projection), so two hull edges that are nearest at their shared
-// vertex tie exactly.
-long double SegmentDistance2(const Point2& a, const Point2& b,
-                             const Point2& q) {
-  using Real = long double;
-  const auto d2 = [&q](const Point2& p) {
-    const Real dx = Real{q.x} - p.x;
-    const Real dy = Real{q.y} - p.y;
-    return dx * dx + dy * dy;
-  };
-  const Real abx = Real{b.x} - a.x;
-  const Real aby = Real{b.y} - a.y;
-  const Real aqx = Real{q.x} - a.x;
-  const Real aqy = Real{q.y} - a.y;
-  const Real dot = aqx * abx + aqy * aby;
-  const Real len2 = abx * abx + aby * aby;
-  if (dot <= 0) return d2(a);
-  if (dot >= len2) return d2(b);
-  const Real cross = aqx * aby - aqy * abx;
-  return cross * cross / len2;
 }
 
 // Among the hull edges that see q (a contiguous chain containing the exit

@@ -52,6 +52,7 @@ bool TypeFromSides(const CGAL::Orientation side[3], LocationType* type,
 TriangleIndex::TriangleIndex(const Triangulation& t) : ids_(t.num_triangles()) {
   const auto& dt = t.cgal();
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    if (!t.InDomain(f)) continue;
     for (int i = 0; i < 3; ++i) ids_[f->info()][i] = f->vertex(i)->info().id;
   }
 }
@@ -63,7 +64,8 @@ std::string DescribeAnswer(const Point2& q, const LocateResult& r) {
       << " triangle " << r.triangle_id << " ids [" << r.vertex_ids[0] << " "
       << r.vertex_ids[1] << " " << r.vertex_ids[2] << "] feature "
       << int{r.feature_index} << " hull edge [" << r.hull_edge_ids[0] << " "
-      << r.hull_edge_ids[1] << "]";
+      << r.hull_edge_ids[1] << "] domain edge [" << r.domain_edge_ids[0] << " "
+      << r.domain_edge_ids[1] << "]";
   return out.str();
 }
 
@@ -75,11 +77,29 @@ std::string DescribeAnswer(const Point2& q, const LocateResult& r) {
     return ::testing::AssertionFailure()
            << what << ": " << DescribeAnswer(q, got);
   };
-  if (got.triangle_id < 0 ||
-      static_cast<size_t>(got.triangle_id) >= index.size()) {
+  if (got.type == LocationType::kOutsideDomain) {
+    if (got.triangle_id != -1 || got.vertex_ids[0] != -1) {
+      return fail("a triangle outside the domain");
+    }
+    if (got.has_value || got.barycentric != std::array<double, 3>{0, 0, 0}) {
+      return fail("a value or barycentrics outside the domain");
+    }
+    Point2 a, b;
+    if (!t.VertexPoint(got.domain_edge_ids[0], &a) ||
+        !t.VertexPoint(got.domain_edge_ids[1], &b)) {
+      return fail("no domain boundary edge");
+    }
+    return ::testing::AssertionSuccess();
+  }
+  // Outside the hull, a hull triangle outside the domain has no id.
+  const bool hull_out_of_domain =
+      got.type == LocationType::kOutsideConvexHull && got.triangle_id == -1;
+  if (!hull_out_of_domain &&
+      (got.triangle_id < 0 ||
+       static_cast<size_t>(got.triangle_id) >= index.size())) {
     return fail("triangle id out of range");
   }
-  if (got.vertex_ids != index.ids(got.triangle_id)) {
+  if (!hull_out_of_domain && got.vertex_ids != index.ids(got.triangle_id)) {
     return fail("vertex ids are not the triangle's");
   }
   for (int i = 0; i < 3; ++i) {

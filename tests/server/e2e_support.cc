@@ -32,6 +32,8 @@ LocationType FromProtoType(int type) {
       return LocationType::kVertex;
     case v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL:
       return LocationType::kOutsideConvexHull;
+    case v1::LOCATION_TYPE_OUTSIDE_DOMAIN:
+      return LocationType::kOutsideDomain;
     default:
       return LocationType::kFace;
   }

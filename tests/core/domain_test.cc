@@ -1,0 +1,268 @@
+// Constrained triangulations: breaklines, rings with holes, .poly segments
+// with hole points and meshes served as given. Every strategy agrees with
+// CGAL's locate() plus the domain flag; bad constraints are precise errors.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "server/core/locator_factory.h"
+#include "server/core/triangulation.h"
+#include "tests/core/locator_checks.h"
+#include "tests/core/test_datasets.h"
+
+namespace locator {
+namespace {
+
+Polyline Square(double lo, double hi) {
+  return Polyline{{{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}}, {}};
+}
+
+// Uniform points, a concave outer ring (a square with a notch), a square
+// hole and two crossing breaklines.
+Dataset TerrainDataset() {
+  Dataset d = GenerateUniform(5000, 7);
+  d.constraints.rings.push_back(Polyline{
+      {{0.05, 0.05}, {0.95, 0.05}, {0.95, 0.95}, {0.5, 0.7}, {0.05, 0.95}},
+      {}});
+  d.constraints.rings.push_back(Square(0.3, 0.45));
+  d.constraints.breaklines.push_back(Polyline{{{0.1, 0.2}, {0.9, 0.3}}, {}});
+  d.constraints.breaklines.push_back(Polyline{{{0.2, 0.1}, {0.25, 0.6}}, {}});
+  return d;
+}
+
+// A structured grid stretched 50:1 with random diagonals: a mesh that is
+// not Delaunay, served as given.
+Dataset AnisotropicMesh(int k, uint64_t seed) {
+  Dataset d;
+  for (int y = 0; y < k; ++y) {
+    for (int x = 0; x < k; ++x) d.points.push_back({x * 50.0, y * 1.0});
+  }
+  std::mt19937_64 random(seed);
+  for (int y = 0; y + 1 < k; ++y) {
+    for (int x = 0; x + 1 < k; ++x) {
+      const uint32_t a = y * k + x, b = a + 1, c = a + k + 1, e = a + k;
+      if (random() & 1) {
+        d.constraints.triangles.push_back({a, b, c});
+        d.constraints.triangles.push_back({a, c, e});
+      } else {
+        d.constraints.triangles.push_back({a, b, e});
+        d.constraints.triangles.push_back({b, c, e});
+      }
+    }
+  }
+  return d;
+}
+
+std::unique_ptr<Triangulation> BuildOk(const Dataset& d) {
+  std::unique_ptr<Triangulation> t;
+  const Status s = Triangulation::Build(d, &t);
+  EXPECT_TRUE(s.ok()) << s.ToString();
+  return t;
+}
+
+std::string BuildError(const Dataset& d) {
+  std::unique_ptr<Triangulation> t;
+  const Status s = Triangulation::Build(d, &t);
+  EXPECT_FALSE(s.ok());
+  return s.message();
+}
+
+// 10^4 uniform queries over the box plus the hard ones: every vertex and
+// every constrained edge's midpoint (on breaklines and hole boundaries).
+std::vector<Point2> HardQueries(const Triangulation& t, uint64_t seed) {
+  std::vector<Point2> queries;
+  const BoundingBox box = t.bounding_box().Inflated(0.05);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 10000; ++i) {
+    queries.push_back({box.min_x + u(random) * box.width(),
+                       box.min_y + u(random) * box.height()});
+  }
+  const auto& dt = t.cgal();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    if (!dt.is_constrained(*e)) continue;
+    const Point2 a =
+        Triangulation::FromCgal(e->first->vertex(dt.cw(e->second))->point());
+    const Point2 b =
+        Triangulation::FromCgal(e->first->vertex(dt.ccw(e->second))->point());
+    queries.push_back(a);
+    queries.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
+  }
+  return queries;
+}
+
+void ExpectEveryStrategyAgrees(const Triangulation& t) {
+  const std::vector<Point2> queries = HardQueries(t, 3);
+  for (const char* name :
+       {"walk", "jump-and-walk", "adaptive-paper", "self-tuning"}) {
+    SCOPED_TRACE(name);
+    TuningOptions options;
+    options.warmup_queries = 500;
+    options.retune_every = 500;
+    std::unique_ptr<PointLocator> locator;
+    ASSERT_TRUE(MakePointLocator(name, t, options, &locator).ok());
+    test::ExpectAllAgree(*locator, t, queries);
+  }
+}
+
+TEST(DomainTest, HoleAndConcaveBayAnswerOutsideDomain) {
+  const auto t = BuildOk(TerrainDataset());
+  ASSERT_TRUE(t);
+  EXPECT_TRUE(t->has_domain());
+  EXPECT_EQ(t->num_holes(), 1u);
+  EXPECT_LT(t->num_triangles(), t->num_faces());
+  for (const Point2 q : {Point2{0.37, 0.37}, Point2{0.5, 0.85}}) {
+    const LocateResult r = t->ReferenceLocate(q);
+    EXPECT_EQ(r.type, LocationType::kOutsideDomain) << q.x << " " << q.y;
+    EXPECT_EQ(r.triangle_id, -1);
+    EXPECT_FALSE(r.has_value);
+    EXPECT_GE(r.domain_edge_ids[0], 0);
+  }
+  // On the hole's boundary the point is in the domain (closed triangles).
+  EXPECT_EQ(t->ReferenceLocate({0.3, 0.4}).type, LocationType::kEdge);
+  EXPECT_EQ(t->ReferenceLocate({0.3, 0.3}).type, LocationType::kVertex);
+  EXPECT_EQ(t->ReferenceLocate({0.6, 0.5}).type, LocationType::kFace);
+}
+
+TEST(DomainTest, NearestBoundaryEdgeOfTheHole) {
+  Dataset d = test::GridDataset(11);  // 0..10
+  d.constraints.rings.push_back(Square(0, 10));
+  d.constraints.rings.push_back(Square(3, 7));
+  const auto t = BuildOk(d);
+  ASSERT_TRUE(t);
+  const LocateResult r = t->ReferenceLocate({3.2, 5.5});
+  ASSERT_EQ(r.type, LocationType::kOutsideDomain);
+  // The hole's left side x = 3 runs through grid points 3 + 11y; the
+  // nearest piece is (3, 5)-(3, 6).
+  EXPECT_EQ(std::minmax(r.domain_edge_ids[0], r.domain_edge_ids[1]),
+            std::minmax(int64_t{3 + 11 * 5}, int64_t{3 + 11 * 6}));
+}
+
+TEST(DomainTest, EveryStrategyAgreesOnConstrainedTerrain) {
+  const auto t = BuildOk(TerrainDataset());
+  ASSERT_TRUE(t);
+  ExpectEveryStrategyAgrees(*t);
+}
+
+TEST(DomainTest, EveryStrategyAgreesOnAnisotropicMesh) {
+  const Dataset d = AnisotropicMesh(60, 5);
+  const auto t = BuildOk(d);
+  ASSERT_TRUE(t);
+  // Served as given: exactly the given triangles, in the domain.
+  EXPECT_EQ(t->num_triangles(), d.constraints.triangles.size());
+  for (const auto& tri : d.constraints.triangles) {
+    Triangulation::Face_handle f;
+    const bool ccw =
+        CGAL::orientation(Triangulation::ToCgal(d.points[tri[0]]),
+                          Triangulation::ToCgal(d.points[tri[1]]),
+                          Triangulation::ToCgal(d.points[tri[2]])) ==
+        CGAL::COUNTERCLOCKWISE;
+    const std::array<uint32_t, 3> ids =
+        ccw ? tri : std::array<uint32_t, 3>{tri[0], tri[2], tri[1]};
+    ASSERT_TRUE(t->FaceWithCorners(ids, &f));
+    EXPECT_TRUE(t->InDomain(f));
+  }
+  ExpectEveryStrategyAgrees(*t);
+}
+
+TEST(DomainTest, PolySegmentsWithHolePoint) {
+  Dataset d = GenerateUniform(2000, 9);
+  d.constraints.segments.push_back(Square(0.1, 0.9));
+  d.constraints.segments.back().points.push_back({0.1, 0.1});
+  d.constraints.segments.push_back(Square(0.4, 0.6));
+  d.constraints.segments.back().points.push_back({0.4, 0.4});
+  d.constraints.hole_seeds.push_back({0.5, 0.5});
+  const auto t = BuildOk(d);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->num_holes(), 1u);
+  EXPECT_EQ(t->ReferenceLocate({0.5, 0.5}).type, LocationType::kOutsideDomain);
+  EXPECT_EQ(t->ReferenceLocate({0.05, 0.5}).type, LocationType::kOutsideDomain);
+  EXPECT_EQ(t->ReferenceLocate({0.2, 0.5}).type, LocationType::kFace);
+  ExpectEveryStrategyAgrees(*t);
+}
+
+TEST(DomainTest, ValuesAreNeverInterpolatedAcrossABreakline) {
+  Dataset d = test::PlaneDataset(3000, 4);
+  // A breakline whose z (100) is far from the plane (z < 6): a triangle
+  // crossing it would blend the two.
+  d.constraints.breaklines.push_back(
+      Polyline{{{0.2, 0.5}, {0.8, 0.5}}, {100, 100}});
+  const auto t = BuildOk(d);
+  ASSERT_TRUE(t);
+  for (double x = 0.25; x < 0.8; x += 0.05) {
+    const LocateResult on = t->ReferenceLocate({x, 0.5});
+    ASSERT_NE(on.type, LocationType::kFace) << x;
+    EXPECT_DOUBLE_EQ(on.value, 100) << x;
+    // Just beside it, the triangle has the breakline as an edge.
+    const LocateResult beside = t->ReferenceLocate({x, 0.5 + 1e-9});
+    EXPECT_NEAR(beside.value, 100, 1e-3) << x;
+  }
+}
+
+TEST(DomainTest, CrossingBreaklinesGetAnInterpolatedVertex) {
+  Dataset d = test::PlaneDataset(1000, 4);
+  d.constraints.breaklines.push_back(
+      Polyline{{{0.25, 0.25}, {0.75, 0.75}}, {0, 10}});
+  d.constraints.breaklines.push_back(
+      Polyline{{{0.25, 0.75}, {0.75, 0.25}}, {20, 20}});
+  const auto t = BuildOk(d);
+  ASSERT_TRUE(t);
+  const LocateResult r = t->ReferenceLocate({0.5, 0.5});
+  ASSERT_EQ(r.type, LocationType::kVertex);
+  // 4 breakline points after the 1000 input points, then the crossing.
+  EXPECT_EQ(r.vertex_ids[r.feature_index], 1004);
+  EXPECT_DOUBLE_EQ(r.value, 5);  // along the first breakline
+}
+
+TEST(DomainTest, BadConstraintsArePreciseErrors) {
+  Dataset bowtie = GenerateUniform(100, 1);
+  bowtie.constraints.rings.push_back(
+      Polyline{{{0.1, 0.1}, {0.9, 0.9}, {0.9, 0.1}, {0.1, 0.9}}, {}});
+  EXPECT_NE(BuildError(bowtie).find("cross at (0.500000, 0.500000)"),
+            std::string::npos);
+
+  Dataset seed_outside = GenerateUniform(100, 1);
+  seed_outside.constraints.rings.push_back(Square(0.2, 0.4));
+  seed_outside.constraints.hole_seeds.push_back({0.7, 0.7});
+  EXPECT_NE(BuildError(seed_outside).find("hole point 0"), std::string::npos);
+
+  Dataset empty = GenerateUniform(100, 1);
+  empty.constraints.segments.push_back(Square(0.2, 0.4));
+  empty.constraints.segments.back().points.push_back({0.2, 0.2});
+  empty.constraints.hole_seeds.push_back({0.3, 0.3});
+  EXPECT_NE(BuildError(empty).find("the domain is empty"), std::string::npos);
+
+  Dataset mesh = AnisotropicMesh(3, 1);
+  mesh.constraints.triangles.push_back({0, 1, 99});
+  EXPECT_NE(BuildError(mesh).find("mesh triangle 8 (0 1 99): corner index 99 "
+                                  "is out of range"),
+            std::string::npos);
+  mesh = AnisotropicMesh(3, 1);
+  mesh.constraints.triangles.push_back({0, 0, 1});
+  EXPECT_NE(BuildError(mesh).find("repeated corners"), std::string::npos);
+  mesh = AnisotropicMesh(3, 1);
+  mesh.constraints.triangles.push_back({0, 1, 2});
+  EXPECT_NE(BuildError(mesh).find("collinear corners"), std::string::npos);
+
+  // Three triangles on the edge (0, 1).
+  Dataset fan;
+  fan.points = {{0, 0}, {1, 0}, {0.5, 1}, {0.5, -1}, {0.5, 2}};
+  fan.constraints.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 1, 4}};
+  EXPECT_NE(BuildError(fan).find("mesh edge (0 1) is shared by triangles 0, "
+                                 "1 and 2"),
+            std::string::npos);
+
+  Dataset overlap;
+  overlap.points = {{0, 0}, {2, 0}, {0, 2}, {1, -1}, {1, 3}, {3, 3}};
+  overlap.constraints.triangles = {{0, 1, 2}, {3, 5, 4}};
+  EXPECT_NE(BuildError(overlap).find("the mesh's triangles overlap"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace locator
