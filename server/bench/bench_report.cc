@@ -67,17 +67,34 @@ void BenchReport::PrintMarkdown(std::ostream& out) const {
 }
 
 void BenchReport::PrintPaperTables(std::ostream& out) const {
+  // "paper", then the domain kinds' "paper-<kind>" in first-seen order.
+  std::vector<std::string> modes;
+  for (const BenchRow& r : rows_) {
+    if (r.mode.starts_with("paper") &&
+        std::find(modes.begin(), modes.end(), r.mode) == modes.end()) {
+      modes.push_back(r.mode);
+    }
+  }
+  for (const std::string& mode : modes) PrintPaperTables(mode, out);
+}
+
+void BenchReport::PrintPaperTables(const std::string& mode,
+                                   std::ostream& out) const {
+  const std::string kind =
+      mode == "paper" ? "" : mode.substr(std::string("paper-").size()) + ": ";
   for (const std::string& workload :
-       Distinct(rows_, "paper", &BenchRow::workload)) {
-    const PaperTable* paper = FindPaperTable(workload);
-    out << "\n### " << workload << " (mean cost per query)\n\n| n |";
+       Distinct(rows_, mode, &BenchRow::workload)) {
+    // The paper's own figures only beside its own setting.
+    const PaperTable* paper =
+        mode == "paper" ? FindPaperTable(workload) : nullptr;
+    out << "\n### " << kind << workload << " (mean cost per query)\n\n| n |";
     if (paper) out << " paper J&W | paper Adaptive | paper gain |";
     for (const std::string& s : kLocatorStrategies) out << ' ' << s << " |";
     out << " adaptive-paper gain | self-tuning vs J&W |\n|---|";
     if (paper) out << "---|---|---|";
     for (size_t i = 0; i < kLocatorStrategies.size() + 2; ++i) out << "---|";
     out << '\n';
-    for (size_t n : Distinct(rows_, "paper", &BenchRow::n)) {
+    for (size_t n : Distinct(rows_, mode, &BenchRow::n)) {
       out << "| " << n / 1000 << "K |";
       if (paper) {
         const auto it =
@@ -95,7 +112,7 @@ void BenchReport::PrintPaperTables(std::ostream& out) const {
         }
       }
       auto cost = [&](const std::string& s) {
-        const BenchRow* r = Find("paper", workload, n, s);
+        const BenchRow* r = Find(mode, workload, n, s);
         return r ? r->mean_cost : 0.0;
       };
       for (const std::string& s : kLocatorStrategies) {

@@ -2,7 +2,9 @@
 // figure, in CSV (machine-readable) or Markdown (for the README).
 //
 // CSV header: mode,workload,n,strategy,mean_cost,mean_faces,
-// mean_comparisons,ns_per_query,extra_bytes. Mode is "paper", "drift"
+// mean_comparisons,ns_per_query,extra_bytes. Mode is "paper",
+// "paper-<domain kind>" (cdt, mesh, aniso: the paper's setting on a
+// non-Delaunay triangulation), "drift"
 // (workload "drift@<first query of the 500-query window>"), "scale", or
 // "build" (ns_per_query then holds the build time in ns, extra_bytes the
 // structure's bytes).
@@ -41,6 +43,8 @@ class BenchReport {
 
  private:
   void PrintPaperTables(std::ostream& out) const;
+  // The tables of one paper mode ("paper" or "paper-<domain kind>").
+  void PrintPaperTables(const std::string& mode, std::ostream& out) const;
   void PrintDriftTable(std::ostream& out) const;
   void PrintScaleTables(std::ostream& out) const;
   // The row for (mode, workload, n, strategy), or nullptr.

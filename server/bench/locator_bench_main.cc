@@ -1,6 +1,7 @@
 // locator-bench: in-process benchmark of the point-location strategies.
 //
 //   locator-bench --paper [--format csv|md] [--seeds 5] [--budget 64KiB]
+//                 [--domain cdt|mesh|aniso] [--verify]
 //   locator-bench --scale [--big] [--format csv|md] [--queries 100000]
 //
 // A program that prints figures, never a test: compare strategies within one
@@ -35,7 +36,7 @@ std::vector<size_t> ParseSizes(const std::string& text) {
 int main(int argc, char** argv) {
   po::options_description desc(
       "locator-bench: in-process point-location benchmark\nOptions");
-  std::string format = "md", budget, sizes;
+  std::string format = "md", budget, sizes, domain;
   locator::bench::PaperOptions paper;
   locator::bench::ScaleOptions scale;
   desc.add_options()("help,h", "print this help")(
@@ -45,6 +46,9 @@ int main(int argc, char** argv) {
       "format", po::value(&format)->default_value("md"), "csv | md")(
       "seeds", po::value(&paper.seeds)->default_value(5),
       "--paper: datasets per n")(
+      "domain", po::value(&domain),
+      "--paper on a non-Delaunay kind: cdt | mesh | aniso")(
+      "verify", "--paper: check every answer against CGAL's locate()")(
       "sizes", po::value(&sizes),
       "comma-separated n values (default: the mode's own)")(
       "budget", po::value(&budget),
@@ -76,6 +80,16 @@ int main(int argc, char** argv) {
     }
     scale.tuning.budget_bytes = paper.tuning.budget_bytes;
   }
+  if (!domain.empty()) {
+    locator::bench::DomainKind kind;
+    locator::Status s = locator::bench::ParseDomainKind(domain, &kind);
+    if (!s.ok()) {
+      std::cerr << "locator-bench: " << s.message() << "\n";
+      return 2;
+    }
+    paper.domain = kind;
+  }
+  paper.verify = vm.count("verify") > 0;
   if (!sizes.empty()) {
     try {
       paper.sizes = scale.sizes = ParseSizes(sizes);

@@ -1,15 +1,24 @@
 // RunPaper: reproduces the paper's Tables 1-4 (and adds uniform, mixed and
 // drift workloads): uniform points in the unit square at n = 10K..50K step
 // 5K, each workload warmed up, then measured; means over several seeds.
+//
+// With a domain kind (domain_datasets.h) it answers the paper's open
+// question instead: the same sizes, seeds and strategies on that kind of
+// non-Delaunay triangulation, for the paper's four workloads plus uniform,
+// drawn in the domain's bounding box, the unit square (queries in holes or
+// outside the boundary count like any other). Rows then have mode
+// "paper-<kind>".
 
 #ifndef LOCATOR_SERVER_BENCH_PAPER_BENCHMARK_H_
 #define LOCATOR_SERVER_BENCH_PAPER_BENCHMARK_H_
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "common/status.h"
 #include "server/bench/bench_report.h"
+#include "server/bench/domain_datasets.h"
 #include "server/core/tuning_options.h"
 
 namespace locator::bench {
@@ -24,10 +33,17 @@ struct PaperOptions {
   size_t drift_queries = 20000;
   size_t drift_window = 500;
   TuningOptions tuning;
+  // Unset: uniform points (the paper's setting).
+  std::optional<DomainKind> domain;
+  // Check every answer (warm-up and measured) against CGAL's own locate()
+  // on the same triangulation.
+  bool verify = false;
 };
 
-// Adds the tables' rows to `report`; the first failure to build a
-// triangulation or a locator, if any.
+// Adds the rows to *report. Fails on the first triangulation or locator
+// that cannot be built; with options.verify, returns Internal naming the
+// first disagreements (query, strategy, both answers) if any answer
+// disagrees (the rows are added either way).
 Status RunPaper(const PaperOptions& options, BenchReport* report);
 
 }  // namespace locator::bench
