@@ -28,9 +28,9 @@
 
 #include <string>
 
+#include "common/dataset.h"
 #include "common/gis/ogr_dataset_spec.h"
 #include "common/status.h"
-#include "server/core/dataset.h"
 
 namespace locator::gis {
 

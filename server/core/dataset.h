@@ -1,5 +1,4 @@
-// Dataset: the input points (and optional values) a triangulation is built
-// from, and the loaders that produce one.
+// The loaders that produce a Dataset (common/dataset.h) from a spec.
 //
 // Sources, selected by LoadDataset's spec:
 //   uniform:N[:SEED]        N points uniform in the unit square.
@@ -17,7 +16,7 @@
 // (not a number, NaN/inf, wrong column count, empty file). A missing file is
 // NotFound / IOError with the path.
 //
-// Thread-safety: free functions; a Dataset is a plain value.
+// Thread-safety: free functions.
 
 #ifndef LOCATOR_CORE_DATASET_H_
 #define LOCATOR_CORE_DATASET_H_
@@ -29,73 +28,11 @@
 #include <string_view>
 #include <vector>
 
+#include "common/dataset.h"
 #include "common/geometry.h"
 #include "common/status.h"
 
 namespace locator {
-
-// A polyline (breakline) or a ring (domain boundary; closed implicitly, the
-// last point is not repeated), in dataset coordinates. `values` is empty or
-// parallel to `points` (z along a surveyed breakline).
-struct Polyline {
-  std::vector<Point2> points;
-  std::vector<double> values;
-};
-
-// What a constrained triangulation keeps besides the points. All empty for a
-// plain point cloud (the Delaunay triangulation of its convex hull).
-// A .poly regional attribute: the region around `seed` (bounded by the
-// segments) carries `attribute`. Carried with the dataset; the core does not
-// use it yet.
-struct RegionalAttribute {
-  Point2 seed;
-  double attribute = 0;
-};
-
-struct DatasetConstraints {
-  // Every segment of every breakline becomes a constrained edge; breaklines
-  // do not bound the domain.
-  std::vector<Polyline> breaklines;
-  // Domain boundary rings, outer boundaries and holes alike: a face is in the
-  // domain when the number of rings around it (its nesting depth) is odd.
-  std::vector<Polyline> rings;
-  // Triangle .poly semantics: every segment bounds regions; the region
-  // reachable from outside the hull without crossing a segment is out of the
-  // domain, and so is the region around each of these hole points.
-  std::vector<Polyline> segments;
-  std::vector<Point2> hole_seeds;
-  // A mesh served as given: corner indices into Dataset::points. When set,
-  // the in-domain faces are exactly these triangles.
-  std::vector<std::array<uint32_t, 3>> triangles;
-  // .poly regional attributes.
-  std::vector<RegionalAttribute> regions;
-
-  bool empty() const {
-    return breaklines.empty() && rings.empty() && segments.empty() &&
-           hole_seeds.empty() && triangles.empty();
-  }
-};
-
-struct Dataset {
-  std::vector<Point2> points;
-  // Empty when the source has no values; otherwise parallel to `points`.
-  std::vector<double> values;
-  // The spec or path it came from, for stats and logs.
-  std::string source;
-  // Breaklines, domain and mesh triangles; empty for a plain point cloud.
-  DatasetConstraints constraints;
-  // The coordinate reference system as WKT; empty when the source has none.
-  // The core carries it and never interprets it.
-  std::string crs;
-
-  bool has_values() const { return !values.empty(); }
-};
-
-struct DatasetLimits {
-  // Loading more points than this fails with ResourceExhausted, before the
-  // memory is committed (each point costs ~200 bytes once triangulated).
-  size_t max_points = 50'000'000;
-};
 
 // Whether `spec` names a generator (uniform:, clusters:) rather than a file.
 bool IsGeneratorSpec(std::string_view spec);
