@@ -102,10 +102,8 @@ std::string LocationTypeName(v1::LocationType type) {
   return name.empty() ? std::to_string(static_cast<int>(type)) : name;
 }
 
-std::string MessageToJson(const google::protobuf::Message& message){
-    return ProtoJson(message) +
-           "
-           ";
+std::string MessageToJson(const google::protobuf::Message& message) {
+  return ProtoJson(message) + "\n";
 }
 
 std::string FormatLocate(const v1::LocateResponse& response) {
