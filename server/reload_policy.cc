@@ -5,11 +5,14 @@
 #include <system_error>
 #include <utility>
 
+#include "common/gis/ogr_dataset_spec.h"
 #include "server/core/dataset.h"
 #include "server/status_mapping.h"
 
 namespace locator {
 namespace {
+
+constexpr std::string_view kOgrPrefix = "ogr:";
 
 namespace fs = std::filesystem;
 
@@ -49,13 +52,25 @@ grpc::Status ReloadPolicy::Resolve(const std::string& requested,
     *spec = requested;
     return grpc::Status::OK;
   }
-  std::string file = FileInReloadDir(requested);
+  // A GIS spec's options ride along; its source must be a file in the dir.
+  std::string_view prefix, source = requested, options;
+  if (gis::IsOgrDatasetSpec(requested)) {
+    if (source.starts_with(kOgrPrefix)) {
+      prefix = kOgrPrefix;
+      source.remove_prefix(prefix.size());
+    }
+    if (const size_t query = source.find('?'); query != source.npos) {
+      options = source.substr(query);
+      source = source.substr(0, query);
+    }
+  }
+  std::string file = FileInReloadDir(std::string(source));
   if (file.empty()) {
     return ToGrpcStatus(Refusal::kPermissionDenied,
                         "dataset '" + requested +
                             "' is not a file in this server's reload dir");
   }
-  *spec = std::move(file);
+  *spec = std::string(prefix) + file + std::string(options);
   return grpc::Status::OK;
 }
 

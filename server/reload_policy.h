@@ -6,7 +6,9 @@
 //     like --dataset (LoadDataset enforces the limit);
 //   - a file inside DIR, named by a path relative to DIR, or absolute. It is
 //     resolved with realpath, and must then be a regular file inside DIR: no
-//     ".." component and no symlink leading out of DIR.
+//     ".." component and no symlink leading out of DIR;
+//   - a GIS spec (common/gis/ogr_dataset_spec.h) whose source is such a
+//     file; its options are kept as given.
 // Every other spec is refused alike (PERMISSION_DENIED), whether or not the
 // file exists, so that a caller learns nothing about the server's files.
 //

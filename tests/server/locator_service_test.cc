@@ -95,8 +95,8 @@ TEST(LocatorServiceTest, CallsInFlightFinishOnTheEngineTheyStartedWith) {
 
   std::future<grpc::Status> reload = std::async(std::launch::async, [&] {
     grpc::ClientContext context;
+    // The configured dataset, which every reload policy allows.
     v1::ReloadRequest request;
-    request.set_dataset("next.csv");
     v1::ReloadResponse response;
     grpc::Status status = stub->Reload(&context, request, &response);
     EXPECT_EQ(response.generation(), 2u);

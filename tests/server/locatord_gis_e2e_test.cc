@@ -40,7 +40,8 @@ class LocatordGisTest : public ::testing::Test {
                            "-a_srs", "EPSG:32633"});
     ASSERT_TRUE(gis::LoadOgrDataset(*gpkg_, &reference_points_).ok());
     ASSERT_TRUE(Triangulation::Build(reference_points_, &reference_).ok());
-    const Status started = StartLocatord(*gpkg_, {}, &server_);
+    const Status started =
+        StartLocatord(*gpkg_, {"--reload-dir", dir_->path()}, &server_);
     ASSERT_TRUE(started.ok()) << started.ToString();
   }
   static void TearDownTestSuite() {

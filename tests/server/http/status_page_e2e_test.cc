@@ -30,10 +30,11 @@ constexpr char kChromium[] = "/usr/bin/chromium";
 constexpr int kClusteredQueries = 3000;
 constexpr int kQueriesPerBurst = 1000;
 
-// When the latest history sample /api/stats reports was taken (0: none yet).
+// When the latest history sample /api/history reports was taken (0: none
+// yet).
 double LatestSampleTime(int port) {
-  const JsonValue stats = GetJson(port, "/api/stats");
-  const JsonArray& taken = stats["history"]["t"].array();
+  const JsonValue history = GetJson(port, "/api/history");
+  const JsonArray& taken = history["t"].array();
   return taken.empty() ? 0 : taken.back().number();
 }
 
