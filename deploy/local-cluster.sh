@@ -15,7 +15,8 @@
 #   BUILD_DIR      build tree with the binaries                  (build)
 #   NGINX          the nginx binary                              (/usr/sbin/nginx)
 #   DURATION       seconds of load                               (20)
-#   KILL_AT        seconds into the load when replica 2 dies     (35% of it)
+#   KILL_AT        seconds into the load when replica 2 dies, at the
+#                  earliest once it has saved its tuning        (35% of it)
 #   RESTART_AFTER  seconds between the kill and the restart      (3)
 #   DATASET        locatord --dataset                            (uniform:200000:1)
 #   WORKLOAD       locator-load --workload                       (1-cluster)
@@ -184,7 +185,20 @@ mark_phase() {
 }
 
 victim="127.0.0.1:${ports[$VICTIM]}"
+# saved_tuning: whether the victim has written its tuning state at least
+# once, so that its restart has something to restore.
+saved_tuning() {
+  "$LOCATOR" --target "$victim" --deadline-ms 1000 --json stats 2>/dev/null |
+    python3 -c 'import json, sys
+stats = json.load(sys.stdin)
+saves = stats.get("tuning", {}).get("persistence", {}).get("saves", "0")
+sys.exit(0 if int(saves) > 0 else 1)'
+}
 sleep "$KILL_AT"
+# Killed at KILL_AT, or later once it has saved its tuning: a slow machine
+# (or a sanitizer build) may not have re-tuned by KILL_AT.
+for _ in $(seq 1 600); do saved_tuning && break; sleep 0.1; done
+saved_tuning || fail "replica $VICTIM saved no tuning state in 60 s"
 mark_phase  # phase 2: during the failure (calls it breaks count there)
 kill -KILL "${pids[replica$VICTIM]}"
 wait "${pids[replica$VICTIM]}" 2>/dev/null || true

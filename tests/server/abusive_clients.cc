@@ -23,9 +23,12 @@ constexpr uint64_t kFloodPoints = 2'000'000;
 
 // Under ASAN freed memory stays resident in its quarantine (256 MiB by
 // default), so the server's RSS says nothing about what it buffers there; the
-// other builds check the bound.
+// other builds check the bound. (gcc says ASAN with __SANITIZE_ADDRESS__,
+// clang with __has_feature.)
 #if defined(__SANITIZE_ADDRESS__)
 constexpr bool kRssShowsBuffering = false;
+#elif defined(__has_feature)
+constexpr bool kRssShowsBuffering = !__has_feature(address_sanitizer);
 #else
 constexpr bool kRssShowsBuffering = true;
 #endif
