@@ -170,9 +170,9 @@ Status ParseNodeSection(FieldReader* reader, std::string_view filename,
   const std::string declared =
       Cat("the ", num_points, " points declared on line ", header.line);
   const bool with_value = num_attributes > 0;
+  // The declared count does not size the reservation: a few bytes of
+  // header may declare millions of points that the text does not hold.
   Dataset ds;
-  ds.points.reserve(num_points);
-  if (with_value) ds.values.reserve(num_points);
   while (ds.points.size() < num_points) {
     const bool more = reader->Next(&f);
     const Where where{filename, reader->line_number()};

@@ -1,5 +1,6 @@
-// Fuzzes the dataset parsers: every input is parsed both as CSV/XYZ text and
-// as Triangle .node text, with the limits locatord uses.
+// Fuzzes the dataset parsers: every input is parsed as CSV/XYZ text, as
+// Triangle .node text and as Triangle .poly text, with the limits locatord
+// uses.
 //
 // Aborts unless each parse either
 //   - succeeds with at least one point, finite coordinates and values, values
@@ -25,6 +26,7 @@ namespace {
 
 constexpr std::string_view kCsvName = "fuzz.csv";
 constexpr std::string_view kNodeName = "fuzz.node";
+constexpr std::string_view kPolyName = "fuzz.poly";
 
 void Fail(std::string_view what, const Status& status) {
   std::fprintf(stderr, "dataset_fuzzer: %.*s (%s)\n",
@@ -126,5 +128,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   locator::Check(locator::ParseXyzText, text, locator::kCsvName);
   locator::Check(locator::ParseNodeText, text, locator::kNodeName);
+  locator::Check(locator::ParsePolyText, text, locator::kPolyName);
   return 0;
 }
