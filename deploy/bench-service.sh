@@ -21,11 +21,11 @@ tmp=$(mktemp -d)
 pids=()
 trap 'kill -TERM "${pids[@]}" 2>/dev/null; wait 2>/dev/null; rm -rf "$tmp"' EXIT
 
-# Starts a server binary with args, waits for its "listening on" line, and
-# prints the port.
+# Starts the server binary at BUILD_DIR/PATH with args, waits for its
+# "listening on" line, and prints the port.
 start() {
-  local log="$tmp/$1.log" port=""
-  "$BUILD_DIR/server/$1" "${@:2}" --listen 127.0.0.1:0 > "$log" 2>&1 &
+  local log="$tmp/$(basename "$1").log" port=""
+  "$BUILD_DIR/$1" "${@:2}" --listen 127.0.0.1:0 > "$log" 2>&1 &
   pids+=($!)
   for _ in $(seq 1 600); do
     port=$(sed -n 's/.* listening on .*:\([0-9]*\)$/\1/p' "$log")
@@ -36,8 +36,8 @@ start() {
   echo "$port"
 }
 
-real=127.0.0.1:$(start locatord --dataset uniform:1000000:1)
-noop=127.0.0.1:$(start locator-noop-server)
+real=127.0.0.1:$(start server/locatord --dataset uniform:1000000:1)
+noop=127.0.0.1:$(start server/bench/locator-noop-server)
 until "$BUILD_DIR"/client/locator --target "$real" health > /dev/null 2>&1; do
   sleep 0.5
 done
