@@ -6,7 +6,7 @@
 #          suite under ASAN+UBSAN, then every fuzzer for LOCATOR_FUZZ_SECONDS
 #   tsan   the concurrency tests and the server's end-to-end tests under
 #          ThreadSanitizer (build-tsan; only their executables and the
-#          servers they spawn; label tsan)
+#          servers they spawn; labels concurrency and e2e-server)
 #   soak   deploy/soak.sh for LOCATOR_SOAK_SECONDS on the plain build
 # Any test failure, thread-safety error, sanitizer report (from a test or
 # from a server it started), fuzzer crash or soak failure fails the run.
@@ -125,10 +125,11 @@ if [ "$SANITIZERS" != 0 ]; then
   if [ "$FUZZ" != 0 ]; then
     stage fuzz-run fuzz_run
   fi
-  stage tsan-build build_tree build-tsan tests-tsan "${SANITIZER_FLAGS[@]}" \
+  stage tsan-build build_tree build-tsan "tests-concurrency tests-e2e-server" \
+    "${SANITIZER_FLAGS[@]}" \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG" \
     -DLOCATOR_SANITIZER=thread
-  stage tsan-test sanitized_ctest build-tsan -L tsan
+  stage tsan-test sanitized_ctest build-tsan -L 'concurrency|e2e-server'
 fi
 
 if [ "$SOAK" != 0 ]; then
