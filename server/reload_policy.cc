@@ -12,8 +12,6 @@
 namespace locator {
 namespace {
 
-constexpr std::string_view kOgrPrefix = "ogr:";
-
 namespace fs = std::filesystem;
 
 bool HasDotDot(const fs::path& path) {
@@ -53,24 +51,16 @@ grpc::Status ReloadPolicy::Resolve(const std::string& requested,
     return grpc::Status::OK;
   }
   // A GIS spec's options ride along; its source must be a file in the dir.
-  std::string_view prefix, source = requested, options;
-  if (gis::IsOgrDatasetSpec(requested)) {
-    if (source.starts_with(kOgrPrefix)) {
-      prefix = kOgrPrefix;
-      source.remove_prefix(prefix.size());
-    }
-    if (const size_t query = source.find('?'); query != source.npos) {
-      options = source.substr(query);
-      source = source.substr(0, query);
-    }
-  }
-  std::string file = FileInReloadDir(std::string(source));
+  const gis::OgrSpecParts parts = gis::IsOgrDatasetSpec(requested)
+                                      ? gis::SplitOgrDatasetSpec(requested)
+                                      : gis::OgrSpecParts{"", requested, ""};
+  std::string file = FileInReloadDir(std::string(parts.source));
   if (file.empty()) {
     return ToGrpcStatus(Refusal::kPermissionDenied,
                         "dataset '" + requested +
                             "' is not a file in this server's reload dir");
   }
-  *spec = std::string(prefix) + file + std::string(options);
+  *spec = std::string(parts.prefix) + file + std::string(parts.options);
   return grpc::Status::OK;
 }
 

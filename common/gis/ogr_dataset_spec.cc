@@ -60,20 +60,33 @@ bool IsOgrDatasetSpec(std::string_view spec) {
       [&path](std::string_view ext) { return EndsWith(path, ext); });
 }
 
+OgrSpecParts SplitOgrDatasetSpec(std::string_view spec) {
+  OgrSpecParts parts;
+  parts.source = spec;
+  if (spec.starts_with(kOgrPrefix)) {
+    parts.prefix = spec.substr(0, kOgrPrefix.size());
+    parts.source.remove_prefix(kOgrPrefix.size());
+  }
+  if (const size_t query = parts.source.find('?');
+      query != std::string_view::npos) {
+    parts.options = parts.source.substr(query);
+    parts.source = parts.source.substr(0, query);
+  }
+  return parts;
+}
+
 Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
   *out = OgrDatasetSpec();
   const auto error = [spec](std::string_view what) {
     return Status::InvalidArgument("dataset spec '" + std::string(spec) +
                                    "': " + std::string(what));
   };
-  std::string_view rest = spec;
-  if (rest.starts_with(kOgrPrefix)) rest.remove_prefix(kOgrPrefix.size());
-  const size_t query = rest.find('?');
-  out->source = std::string(rest.substr(0, query));
+  const OgrSpecParts parts = SplitOgrDatasetSpec(spec);
+  out->source = std::string(parts.source);
   if (out->source.empty()) return error("no source before the options");
-  if (query == std::string_view::npos) return Status::OK();
+  if (parts.options.empty()) return Status::OK();
 
-  std::string_view options = rest.substr(query + 1);
+  std::string_view options = parts.options.substr(1);  // after '?'
   while (!options.empty()) {
     const size_t amp = options.find('&');
     const std::string_view option = options.substr(0, amp);
