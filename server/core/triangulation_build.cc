@@ -1,25 +1,22 @@
-// Triangulation::Build: the points, the constraints, the crossings and the
-// domain marking, one step each (see triangulation.h for the rules).
+// Triangulation::Build and its first steps: the points, the breaklines and
+// rings, and the crossings between constraints (see triangulation_builder.h).
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <deque>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "server/core/triangulation.h"
+#include "server/core/triangulation_builder.h"
 
 namespace locator {
 
 namespace {
-
-std::string PointText(const Point2& p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-}
 
 double Distance(const Point2& a, const Point2& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
@@ -27,65 +24,9 @@ double Distance(const Point2& a, const Point2& b) {
 
 }  // namespace
 
-// Builds one Triangulation. Face info is used as scratch while marking:
-// -1 unvisited, else the nesting depth, then 1 (in) or 0 (out), and finally
-// the triangle id or -1.
-class Triangulation::Builder {
- public:
-  Builder(const Dataset& dataset, Triangulation* t)
-      : dataset_(dataset), t_(*t), dt_(t->dt_) {}
-
-  Status Run() {
-    Status s = InsertPoints();
-    if (s.ok()) s = InsertConstraints();
-    if (s.ok()) s = NameCrossings();
-    if (s.ok()) s = MarkDomain();
-    if (s.ok()) s = NumberTriangles();
-    return s;
-  }
-
- private:
-  using Edge = Cdt::Edge;
-  // A constraint segment as the input named it, for messages.
-  struct InputSegment {
-    Cdt::Constraint_id id;
-    ConstraintKind kind;
-    std::string name;
-  };
-
-  Status InsertPoints();
-  Status InsertConstraints();
-  Status InsertPolylines(const std::vector<Polyline>& lines, bool closed,
-                         ConstraintKind kind, const std::string& what);
-  Status InsertMeshEdges();
-  // The vertex for p (a new one gets the next id and `value`).
-  Vertex_handle VertexAt(const Point2& p, double value);
-  void AddSegment(Vertex_handle a, Vertex_handle b, ConstraintKind kind,
-                  std::string name);
-  Status NameCrossings();
-  Status MarkDomain();
-  Status MarkMesh();
-  void MarkRingDepth();
-  Status EatSegmentRegions();
-  // Sets info 0 on every face reachable from `seed` without crossing a
-  // segment or ring edge.
-  void Eat(Face_handle seed);
-  Status NumberTriangles();
-  // The number of ring segments along edge (f, i); barrier: any boundary.
-  int RingCount(Face_handle f, int i) const;
-  bool IsBarrier(Face_handle f, int i) const;
-
-  bool IsBoundary(ConstraintKind kind) const {
-    return kind == ConstraintKind::kRing || kind == ConstraintKind::kSegment ||
-           kind == ConstraintKind::kMesh;
-  }
-
-  const Dataset& dataset_;
-  Triangulation& t_;
-  Cdt& dt_;
-  const DatasetConstraints& c_ = dataset_.constraints;
-  std::vector<InputSegment> segments_;
-};
+std::string Triangulation::Builder::PointText(const Point2& p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
 
 Status Triangulation::Builder::InsertPoints() {
   const std::vector<Point2>& pts = dataset_.points;
@@ -223,54 +164,6 @@ Status Triangulation::Builder::InsertPolylines(
   return Status::OK();
 }
 
-Status Triangulation::Builder::InsertMeshEdges() {
-  const size_t n = t_.input_points_;
-  // Each edge once, keyed by its merged vertex ids; the triangles using it.
-  std::map<std::pair<int64_t, int64_t>, std::vector<size_t>> edges;
-  for (size_t k = 0; k < c_.triangles.size(); ++k) {
-    const auto& tri = c_.triangles[k];
-    const std::string name =
-        "mesh triangle " + std::to_string(k) + " (" + std::to_string(tri[0]) +
-        " " + std::to_string(tri[1]) + " " + std::to_string(tri[2]) + ")";
-    std::array<Vertex_handle, 3> v;
-    for (int i = 0; i < 3; ++i) {
-      if (tri[i] >= n) {
-        return Status::InvalidArgument(
-            name + ": corner index " + std::to_string(tri[i]) +
-            " is out of range (" + std::to_string(n) + " points)");
-      }
-      v[i] = t_.by_input_[tri[i]];
-    }
-    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) {
-      return Status::InvalidArgument(name + " has repeated corners");
-    }
-    if (CGAL::orientation(v[0]->point(), v[1]->point(), v[2]->point()) ==
-        CGAL::COLLINEAR) {
-      return Status::InvalidArgument(name + " has collinear corners");
-    }
-    for (int i = 0; i < 3; ++i) {
-      const auto key = std::minmax(v[i]->info().id, v[(i + 1) % 3]->info().id);
-      std::vector<size_t>& users = edges[key];
-      users.push_back(k);
-      if (users.size() == 3) {
-        return Status::InvalidArgument(
-            "mesh edge (" + std::to_string(key.first) + " " +
-            std::to_string(key.second) + ") is shared by triangles " +
-            std::to_string(users[0]) + ", " + std::to_string(users[1]) +
-            " and " + std::to_string(users[2]) + " (not a manifold)");
-      }
-    }
-  }
-  for (const auto& [key, users] : edges) {
-    AddSegment(t_.by_input_[key.first], t_.by_input_[key.second],
-               ConstraintKind::kMesh,
-               "mesh edge (" + std::to_string(key.first) + " " +
-                   std::to_string(key.second) + ") of triangle " +
-                   std::to_string(users[0]));
-  }
-  return Status::OK();
-}
-
 Status Triangulation::Builder::InsertConstraints() {
   Status s = InsertPolylines(c_.breaklines, false, ConstraintKind::kBreakline,
                              "breakline");
@@ -318,205 +211,6 @@ Status Triangulation::Builder::NameCrossings() {
                  : ": a domain boundary must not intersect itself"));
       }
     }
-  }
-  return Status::OK();
-}
-
-int Triangulation::Builder::RingCount(Face_handle f, int i) const {
-  if (!f->is_constrained(i)) return 0;
-  const Vertex_handle a = f->vertex(Cdt::cw(i));
-  const Vertex_handle b = f->vertex(Cdt::ccw(i));
-  int rings = 0;
-  for (auto c = dt_.contexts_begin(a, b); c != dt_.contexts_end(a, b); ++c) {
-    if (t_.constraint_kinds_.at(c->id()) == ConstraintKind::kRing) ++rings;
-  }
-  return rings;
-}
-
-bool Triangulation::Builder::IsBarrier(Face_handle f, int i) const {
-  if (!f->is_constrained(i)) return false;
-  const Vertex_handle a = f->vertex(Cdt::cw(i));
-  const Vertex_handle b = f->vertex(Cdt::ccw(i));
-  for (auto c = dt_.contexts_begin(a, b); c != dt_.contexts_end(a, b); ++c) {
-    if (t_.constraint_kinds_.at(c->id()) != ConstraintKind::kBreakline) {
-      return true;
-    }
-  }
-  return false;
-}
-
-void Triangulation::Builder::MarkRingDepth() {
-  for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-    f->info() = -1;
-  }
-  // Flood each region at its depth; crossing a ring edge enters the region
-  // beyond at depth + (rings along that edge). Regions are taken in the
-  // order they are found, which is breadth-first by depth.
-  std::deque<std::pair<Face_handle, int64_t>> regions;
-  regions.emplace_back(dt_.infinite_face(), 0);
-  std::vector<Face_handle> stack;
-  while (!regions.empty()) {
-    const auto [seed, depth] = regions.front();
-    regions.pop_front();
-    if (seed->info() != -1) continue;
-    seed->info() = depth;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const Face_handle f = stack.back();
-      stack.pop_back();
-      for (int i = 0; i < 3; ++i) {
-        const Face_handle n = f->neighbor(i);
-        if (n->info() != -1) continue;
-        const int rings = RingCount(f, i);
-        if (rings > 0) {
-          regions.emplace_back(n, depth + rings);
-        } else {
-          n->info() = depth;
-          stack.push_back(n);
-        }
-      }
-    }
-  }
-  for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-    f->info() = dt_.is_infinite(f) ? 0 : f->info() % 2;
-  }
-}
-
-void Triangulation::Builder::Eat(Face_handle seed) {
-  std::vector<Face_handle> stack = {seed};
-  seed->info() = 0;
-  while (!stack.empty()) {
-    const Face_handle f = stack.back();
-    stack.pop_back();
-    for (int i = 0; i < 3; ++i) {
-      const Face_handle n = f->neighbor(i);
-      if (n->info() == 0 || IsBarrier(f, i)) continue;
-      n->info() = 0;
-      stack.push_back(n);
-    }
-  }
-}
-
-Status Triangulation::Builder::EatSegmentRegions() {
-  // Triangle's rule: what is reachable from outside the hull is out.
-  for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-    if (dt_.is_infinite(f)) {
-      for (int i = 0; i < 3; ++i) {
-        const Face_handle n = f->neighbor(i);
-        if (!dt_.is_infinite(n) && n->info() != 0 && !IsBarrier(f, i)) Eat(n);
-      }
-    }
-  }
-  for (size_t k = 0; k < c_.hole_seeds.size(); ++k) {
-    const Point2& p = c_.hole_seeds[k];
-    const std::string name =
-        "hole point " + std::to_string(k) + " " + PointText(p);
-    if (!IsFinite(p)) {
-      return Status::InvalidArgument(name + " has a non-finite coordinate");
-    }
-    const Face_handle f = dt_.locate(ToCgal(p));
-    if (dt_.is_infinite(f) || f->info() == 0) {
-      return Status::InvalidArgument(
-          name +
-          " is outside every region bounded by the rings and "
-          "segments");
-    }
-    Eat(f);
-  }
-  return Status::OK();
-}
-
-Status Triangulation::Builder::MarkMesh() {
-  for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-    f->info() = 0;
-  }
-  for (size_t k = 0; k < c_.triangles.size(); ++k) {
-    std::array<uint32_t, 3> ids;
-    for (int i = 0; i < 3; ++i) {
-      ids[i] =
-          static_cast<uint32_t>(t_.by_input_[c_.triangles[k][i]]->info().id);
-    }
-    const auto& p = c_.triangles[k];
-    if (CGAL::orientation(t_.by_input_[p[0]]->point(),
-                          t_.by_input_[p[1]]->point(),
-                          t_.by_input_[p[2]]->point()) == CGAL::CLOCKWISE) {
-      std::swap(ids[1], ids[2]);
-    }
-    Face_handle f;
-    const std::string name = "mesh triangle " + std::to_string(k) + " (" +
-                             std::to_string(p[0]) + " " + std::to_string(p[1]) +
-                             " " + std::to_string(p[2]) + ")";
-    if (!t_.FaceWithCorners(ids, &f)) {
-      return Status::InvalidArgument(
-          name +
-          " is not a face of the triangulation of the mesh's edges: "
-          "it overlaps another triangle or contains a point");
-    }
-    if (f->info() == 1) {
-      return Status::InvalidArgument(name + " repeats an earlier triangle");
-    }
-    f->info() = 1;
-  }
-  return Status::OK();
-}
-
-Status Triangulation::Builder::MarkDomain() {
-  if (!c_.triangles.empty()) {
-    t_.has_domain_ = true;
-    return MarkMesh();
-  }
-  if (c_.rings.empty() && c_.segments.empty() && c_.hole_seeds.empty()) {
-    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-      f->info() = dt_.is_infinite(f) ? 0 : 1;
-    }
-    return Status::OK();
-  }
-  t_.has_domain_ = true;
-  if (c_.rings.empty()) {
-    for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-      f->info() = dt_.is_infinite(f) ? 0 : 1;
-    }
-  } else {
-    MarkRingDepth();
-  }
-  if (c_.segments.empty() && c_.hole_seeds.empty()) return Status::OK();
-  return EatSegmentRegions();
-}
-
-Status Triangulation::Builder::NumberTriangles() {
-  int64_t next_id = 0;
-  for (auto f = dt_.all_faces_begin(); f != dt_.all_faces_end(); ++f) {
-    if (dt_.is_infinite(f) || f->info() != 1) f->info() = -1;
-  }
-  for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
-    if (f->info() == 1) f->info() = next_id++;
-  }
-  t_.num_triangles_ = static_cast<size_t>(next_id);
-  if (next_id == 0) {
-    return Status::InvalidArgument(
-        "the domain is empty: no triangle is inside its boundary");
-  }
-  // Holes: regions of out-of-domain faces that do not reach the hull.
-  std::map<Face_handle, bool> seen;
-  for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
-    if (f->info() >= 0 || seen.count(f)) continue;
-    bool touches_hull = false;
-    std::vector<Face_handle> stack = {f};
-    seen[f] = true;
-    while (!stack.empty()) {
-      const Face_handle g = stack.back();
-      stack.pop_back();
-      for (int i = 0; i < 3; ++i) {
-        const Face_handle n = g->neighbor(i);
-        if (dt_.is_infinite(n)) {
-          touches_hull = true;
-        } else if (n->info() < 0 && !seen.count(n)) {
-          seen[n] = true;
-          stack.push_back(n);
-        }
-      }
-    }
-    if (!touches_hull) ++t_.num_holes_;
   }
   return Status::OK();
 }
