@@ -10,6 +10,9 @@ namespace {
 
 // Beyond about this many starts per vertex a cell's walk is already one face.
 constexpr double kStartsPerPointCap = 1.5;
+// Crossing ratios are clamped to [1 / kMaxCrossingRatio, kMaxCrossingRatio]:
+// a cell whose edges all run one way has no meaningful ratio.
+constexpr double kMaxCrossingRatio = 1e4;
 
 }  // namespace
 
@@ -20,6 +23,7 @@ HotRegionTuner::HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
       options_(options),
       counts_(grid.cells(), 0.0),
       points_(grid.cells(), 0.0),
+      crossing_ratio_(grid.cells(), 1.0),
       planned_share_(grid.cells(), 1.0 / grid.cells()) {
   budget_ = Budget(t, options);
   // The owner's histogram, our per-cell arrays, the snapshot's histogram
@@ -35,6 +39,57 @@ HotRegionTuner::HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
        ++v) {
     points_[grid.CellOf(Triangulation::FromCgal(v->point()))] += 1;
   }
+  MeasureCrossingRatios();
+}
+
+void HotRegionTuner::MeasureCrossingRatios() {
+  // A segment of length L along x crosses about L * sum|dy| / area edges
+  // (and along y, L * sum|dx| / area), summing over the edges around it.
+  const size_t cells = grid_.cells();
+  std::vector<double> sum_dx(cells, 0.0), sum_dy(cells, 0.0);
+  double all_dx = 0, all_dy = 0;
+  const auto& dt = t_.cgal();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const Point2 a =
+        Triangulation::FromCgal(e->first->vertex(dt.cw(e->second))->point());
+    const Point2 b =
+        Triangulation::FromCgal(e->first->vertex(dt.ccw(e->second))->point());
+    const size_t c = grid_.CellOf({(a.x + b.x) / 2, (a.y + b.y) / 2});
+    sum_dx[c] += std::abs(a.x - b.x);
+    sum_dy[c] += std::abs(a.y - b.y);
+    all_dx += std::abs(a.x - b.x);
+    all_dy += std::abs(a.y - b.y);
+  }
+  const double aspect = grid_.cell_width() / grid_.cell_height();
+  for (size_t c = 0; c < cells; ++c) {
+    // Cells without edges of both directions take the dataset's ratio.
+    const bool own = sum_dx[c] > 0 && sum_dy[c] > 0;
+    const double dx = own ? sum_dx[c] : all_dx;
+    const double dy = own ? sum_dy[c] : all_dy;
+    crossing_ratio_[c] =
+        dx > 0 && dy > 0 ? std::clamp(aspect * dy / dx, 1 / kMaxCrossingRatio,
+                                      kMaxCrossingRatio)
+                         : 1.0;
+  }
+}
+
+SubGrid HotRegionTuner::ShapeOf(size_t c, uint32_t r) const {
+  if (r <= 1) return SubGrid{};
+  // Minimising q / columns + 1 / rows (the crossings of a walk within a
+  // sub-cell, in units of the cell's height) at columns * rows = r * r gives
+  // columns / rows = q.
+  const double starts = static_cast<double>(r) * r;
+  const double columns = std::clamp(
+      std::round(std::sqrt(starts * crossing_ratio_[c])), 1.0, starts);
+  const double rows = std::max(1.0, std::round(starts / columns));
+  return SubGrid{static_cast<uint32_t>(columns), static_cast<uint32_t>(rows)};
+}
+
+std::vector<SubGrid> HotRegionTuner::Shapes(
+    const std::vector<uint32_t>& levels) const {
+  std::vector<SubGrid> shapes(levels.size());
+  for (size_t c = 0; c < levels.size(); ++c) shapes[c] = ShapeOf(c, levels[c]);
+  return shapes;
 }
 
 size_t HotRegionTuner::Budget(const Triangulation& t,
@@ -60,7 +115,7 @@ void HotRegionTuner::AddCounts(const std::vector<double>& fresh) {
                                                [](double x) { return x > 0; });
 }
 
-std::vector<uint32_t> HotRegionTuner::PlanResolution(
+std::vector<uint32_t> HotRegionTuner::PlanLevels(
     const std::vector<double>& weight) const {
   const size_t cells = grid_.cells();
   std::vector<double> desire(cells), cap(cells), starts(cells, 0.0);
@@ -93,12 +148,12 @@ std::vector<uint32_t> HotRegionTuner::PlanResolution(
       break;
     }
   }
-  std::vector<uint32_t> resolution(cells);
+  std::vector<uint32_t> levels(cells);
   for (size_t c = 0; c < cells; ++c) {
-    resolution[c] = std::max<uint32_t>(
+    levels[c] = std::max<uint32_t>(
         1, static_cast<uint32_t>(std::sqrt(std::max(0.0, starts[c]))));
   }
-  return resolution;
+  return levels;
 }
 
 std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
@@ -115,18 +170,21 @@ std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
 std::vector<uint32_t> HotRegionTuner::KeepStableCells(
     std::vector<uint32_t> fresh, const std::vector<char>& significant) const {
   if (!table_) return fresh;
-  const auto leaves = [](const std::vector<uint32_t>& plan) {
+  const auto leaves = [this](const std::vector<uint32_t>& plan) {
     double sum = 0;
-    for (uint32_t r : plan) sum += r > 1 ? static_cast<double>(r) * r : 0;
+    for (size_t c = 0; c < plan.size(); ++c) {
+      const size_t n = ShapeOf(c, plan[c]).cells();
+      sum += n > 1 ? static_cast<double>(n) : 0;
+    }
     return sum;
   };
-  // Keep cells whose traffic did not change, or whose new resolution is
+  // Keep cells whose traffic did not change, or whose new level is
   // within hysteresis; and, while the budget allows, cells that would only
   // shrink: their starts are already paid for, and traffic may come back.
   std::vector<uint32_t> mixed(fresh.size());
   for (bool keep_shrinking : {true, false}) {
     for (size_t c = 0; c < fresh.size(); ++c) {
-      const uint32_t old_r = table_->resolution(c);
+      const uint32_t old_r = levels_[c];
       const bool stable = !significant[c] ||
                           (fresh[c] <= kHysteresis * old_r &&
                            fresh[c] * kHysteresis >= old_r) ||
@@ -138,13 +196,18 @@ std::vector<uint32_t> HotRegionTuner::KeepStableCells(
   return fresh;
 }
 
-template <class Resolution>
 double HotRegionTuner::ExpectedWalk(const std::vector<double>& weight,
-                                    Resolution resolution) const {
+                                    const std::vector<uint32_t>& levels) const {
   double walk = 0;
   for (size_t c = 0; c < weight.size(); ++c) {
-    const double r = resolution(c);
-    walk += weight[c] * std::sqrt(points_[c] / (r * r));
+    // sqrt(P / S) for a sub-grid of the ideal shape, times how much more
+    // this shape's walks cross: (q * rows + columns) / (2 * sqrt(q * S)).
+    const SubGrid shape = ShapeOf(c, levels[c]);
+    const double q = crossing_ratio_[c];
+    const double starts = static_cast<double>(shape.cells());
+    const double distortion =
+        (q * shape.rows + shape.columns) / (2 * std::sqrt(q * starts));
+    walk += weight[c] * std::sqrt(points_[c] / starts) * distortion;
   }
   return walk;
 }
@@ -194,16 +257,15 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
                                         [](char s) { return s; });
   const std::vector<uint32_t> plan =
       keep ? std::vector<uint32_t>()
-           : KeepStableCells(PlanResolution(weight), significant);
+           : KeepStableCells(PlanLevels(weight), significant);
   if (!keep && table_) {
-    const double now =
-        ExpectedWalk(weight, [&](size_t c) { return table_->resolution(c); });
-    const double planned =
-        ExpectedWalk(weight, [&](size_t c) { return plan[c]; });
-    keep = planned > (1 - kMinGain) * now;
+    keep = ExpectedWalk(weight, plan) >
+           (1 - kMinGain) * ExpectedWalk(weight, levels_);
   }
   if (!keep) {
-    table_ = std::make_shared<StartTable>(t_, grid_, plan, table_.get());
+    table_ =
+        std::make_shared<StartTable>(t_, grid_, Shapes(plan), table_.get());
+    levels_ = plan;
     planned_share_ = share;
   }
   return Snapshot(version);
@@ -224,10 +286,7 @@ void HotRegionTuner::ExportState(TuningState* state) const {
   state->seen_traffic = seen_traffic_;
   state->histogram = counts_;
   state->planned_share = planned_share_;
-  state->resolution.resize(grid_.cells());
-  for (size_t c = 0; c < grid_.cells(); ++c) {
-    state->resolution[c] = table_->resolution(c);
-  }
+  state->levels = levels_;
   const std::vector<StartTable::Face_handle> faces = table_->Starts();
   state->starts.resize(faces.size());
   for (size_t i = 0; i < faces.size(); ++i) {
@@ -240,23 +299,24 @@ Status HotRegionTuner::Restore(
     std::shared_ptr<const TuningSnapshot>* snapshot) {
   const size_t cells = grid_.cells();
   if (state.histogram.size() != cells || state.planned_share.size() != cells ||
-      state.resolution.size() != cells) {
+      state.levels.size() != cells) {
     return Status::InvalidArgument(
-        "tuning state sized for " + std::to_string(state.resolution.size()) +
+        "tuning state sized for " + std::to_string(state.levels.size()) +
         " cells, the grid has " + std::to_string(cells));
   }
-  uint64_t implied = 0;
-  for (uint32_t r : state.resolution) {
-    if (r < 1 || r > kMaxStoredResolution) {
-      return Status::InvalidArgument("tuning state sub-grid resolution " +
+  for (uint32_t r : state.levels) {
+    if (r < 1 || r > kMaxStoredLevel) {
+      return Status::InvalidArgument("tuning state sub-grid level " +
                                      std::to_string(r));
     }
-    implied += r == 1 ? 1 : uint64_t{r} * r;
   }
+  const std::vector<SubGrid> shapes = Shapes(state.levels);
+  uint64_t implied = 0;
+  for (const SubGrid& shape : shapes) implied += shape.cells();
   if (state.starts.size() != implied) {
     return Status::InvalidArgument(
         "tuning state has " + std::to_string(state.starts.size()) +
-        " starts, its resolutions need " + std::to_string(implied));
+        " starts, its levels need " + std::to_string(implied));
   }
   std::vector<StartTable::Face_handle> faces(state.starts.size());
   for (size_t i = 0; i < faces.size(); ++i) {
@@ -268,7 +328,8 @@ Status HotRegionTuner::Restore(
           std::to_string(ids[2]) + " are not a triangle of this dataset");
     }
   }
-  table_ = std::make_shared<StartTable>(grid_, state.resolution, faces);
+  table_ = std::make_shared<StartTable>(grid_, shapes, faces);
+  levels_ = state.levels;
   counts_ = state.histogram;
   planned_share_ = state.planned_share;
   seen_traffic_ = state.seen_traffic;

@@ -2,18 +2,24 @@
 // points, and builds the immutable snapshot the read path uses.
 //
 // It owns the long-term query histogram (decayed at every re-tune, so old
-// traffic fades and a moved hot spot is re-learned) and the number of
-// triangulation vertices in each coarse cell. From both it plans a sub-grid
-// resolution per coarse cell under a memory budget: with w the cell's share
-// of traffic and P its points, a cell with S starts costs about
-// w * sqrt(P / S) faces per query, and minimising the sum under sum S = L
-// gives S proportional to (w * sqrt(P))^(2/3). Starts are capped near the
-// cell's point count, beyond which the walk cannot get shorter. A small
-// prior share of uniform traffic keeps every cell served, so under uniform
-// traffic the plan is a coarse uniform grid and no traffic is ever answered
-// worse than by a start in its own cell.
+// traffic fades and a moved hot spot is re-learned), the number of
+// triangulation vertices in each coarse cell and each cell's crossing ratio:
+// how many more edges a walk crosses per unit of width than per unit of
+// height there (1 for round triangles in a square cell, 1/50 for a mesh
+// stretched 50:1 along x). From these it plans a sub-grid level r per coarse
+// cell under a memory budget: with w the cell's share of traffic and P its
+// points, a cell with S starts costs about w * sqrt(P / S) faces per query,
+// and minimising the sum under sum S = L gives S proportional to
+// (w * sqrt(P))^(2/3). A level r buys about r * r starts, laid out as a
+// columns x rows sub-grid shaped by the crossing ratio, so that a walk from
+// a sub-cell's centre crosses as many edges along x as along y: on a
+// stretched mesh the sub-cells are stretched alike, and the square-cell cost
+// above holds. Starts are capped near the cell's point count, beyond which
+// the walk cannot get shorter. A small prior share of uniform traffic keeps
+// every cell served, so under uniform traffic the plan is a coarse uniform
+// grid and no traffic is ever answered worse than by a start in its own cell.
 //
-// Re-tunes are incremental: a cell keeps its resolution unless its count
+// Re-tunes are incremental: a cell keeps its level unless its count
 // departs from the share the current table was planned for by more than
 // kSignificance standard deviations (Poisson) and the new plan differs by
 // more than kHysteresis (noise in the histogram must not cost a rebuild);
@@ -105,20 +111,25 @@ class HotRegionTuner {
   std::vector<double> Shares(double total) const;
   // The snapshot of table_ and counts_, as `version`.
   std::shared_ptr<const TuningSnapshot> Snapshot(uint64_t version) const;
-  std::vector<uint32_t> PlanResolution(const std::vector<double>& weight) const;
+  std::vector<uint32_t> PlanLevels(const std::vector<double>& weight) const;
   // significant[c]: cell c's count departs from the share the current
   // table was planned for by more than Poisson noise (all, without a table).
   std::vector<char> SignificantChanges(double total) const;
   // The fresh plan, except for cells without a significant change, whose
-  // new resolution is within hysteresis of the current one, or (while the
+  // new level is within hysteresis of the current one, or (while the
   // budget allows) that would only shrink.
   std::vector<uint32_t> KeepStableCells(
       std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
   // The model's expected walk length (up to a constant) under `weight` for
-  // per-cell resolutions given by resolution(c).
-  template <class Resolution>
+  // per-cell levels `levels`.
   double ExpectedWalk(const std::vector<double>& weight,
-                      Resolution resolution) const;
+                      const std::vector<uint32_t>& levels) const;
+  // The sub-grid that level r buys in coarse cell c: about r * r sub-cells
+  // shaped by the cell's crossing ratio (1 x 1 for r = 1).
+  SubGrid ShapeOf(size_t c, uint32_t r) const;
+  std::vector<SubGrid> Shapes(const std::vector<uint32_t>& levels) const;
+  // Fills crossing_ratio_ from the triangulation's edges.
+  void MeasureCrossingRatios();
 
   const Triangulation& t_;
   const GridGeometry grid_;
@@ -127,8 +138,13 @@ class HotRegionTuner {
   size_t leaf_budget_;  // starts the plan may place beyond the coarse cells
   bool seen_traffic_ = false;
   std::vector<double> counts_;
-  std::vector<double> points_;               // vertices per coarse cell
+  std::vector<double> points_;  // vertices per coarse cell
+  // Edges crossed per unit width / per unit height, times the cell's
+  // width / height: a walk across the cell's width crosses this many times
+  // as many edges as one across its height.
+  std::vector<double> crossing_ratio_;
   std::shared_ptr<const StartTable> table_;  // the last one built
+  std::vector<uint32_t> levels_;             // the levels table_ was built at
   std::vector<double> planned_share_;  // traffic shares table_ was planned for
 };
 

@@ -8,16 +8,16 @@ namespace locator {
 
 namespace {
 
-Point2 SubCellCentre(const BoundingBox& cell, uint32_t r, uint32_t sx,
-                     uint32_t sy) {
-  return Point2{cell.min_x + (sx + 0.5) * cell.width() / r,
-                cell.min_y + (sy + 0.5) * cell.height() / r};
+Point2 SubCellCentre(const BoundingBox& cell, const SubGrid& sub_grid,
+                     uint32_t sx, uint32_t sy) {
+  return Point2{cell.min_x + (sx + 0.5) * cell.width() / sub_grid.columns,
+                cell.min_y + (sy + 0.5) * cell.height() / sub_grid.rows};
 }
 
 }  // namespace
 
 StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
-                       const std::vector<uint32_t>& resolution,
+                       const std::vector<SubGrid>& sub_grids,
                        const StartTable* previous)
     : grid_(grid), cells_(grid.cells()) {
   // Visit cells and sub-cells in serpentine order so that each centre is
@@ -30,24 +30,24 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
       const size_t index = static_cast<size_t>(row) * g + col;
       Cell& cell = cells_[index];
       const BoundingBox box = grid_.CellBox(col, row);
-      const uint32_t r = std::max<uint32_t>(1, resolution[index]);
-      cell.resolution = r;
-      if (r > 1) leaf_count_ += size_t{r} * r;
-      if (previous && previous->cells_[index].resolution == r) {
+      const SubGrid sub = sub_grids[index];
+      if (sub.cells() > 1) leaf_count_ += sub.cells();
+      if (previous && previous->cells_[index].sub_grid == sub) {
         cell = previous->cells_[index];
-        hint = r == 1 ? cell.face : cell.leaves[0];
+        hint = cell.leaves ? cell.leaves[0] : cell.face;
         continue;
       }
-      if (r == 1) {
-        hint = cell.face = FaceNear(t, hint, SubCellCentre(box, 1, 0, 0));
+      cell.sub_grid = sub;
+      if (sub.cells() == 1) {
+        hint = cell.face = FaceNear(t, hint, SubCellCentre(box, sub, 0, 0));
         continue;
       }
-      auto leaves = std::make_shared_for_overwrite<Face_handle[]>(r * r);
-      for (uint32_t sy = 0; sy < r; ++sy) {
-        for (uint32_t j = 0; j < r; ++j) {
-          const uint32_t sx = (sy % 2 == 0) ? j : r - 1 - j;
-          hint = FaceNear(t, hint, SubCellCentre(box, r, sx, sy));
-          leaves[sy * r + sx] = hint;
+      auto leaves = std::make_shared_for_overwrite<Face_handle[]>(sub.cells());
+      for (uint32_t sy = 0; sy < sub.rows; ++sy) {
+        for (uint32_t j = 0; j < sub.columns; ++j) {
+          const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
+          hint = FaceNear(t, hint, SubCellCentre(box, sub, sx, sy));
+          leaves[size_t{sy} * sub.columns + sx] = hint;
         }
       }
       cell.leaves = std::move(leaves);
@@ -56,22 +56,22 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
 }
 
 StartTable::StartTable(const GridGeometry& grid,
-                       const std::vector<uint32_t>& resolution,
+                       const std::vector<SubGrid>& sub_grids,
                        std::span<const Face_handle> starts)
     : grid_(grid), cells_(grid.cells()) {
   size_t next = 0;
   for (size_t index = 0; index < cells_.size(); ++index) {
     Cell& cell = cells_[index];
-    const uint32_t r = std::max<uint32_t>(1, resolution[index]);
-    cell.resolution = r;
-    if (r == 1) {
+    cell.sub_grid = sub_grids[index];
+    const size_t n = cell.sub_grid.cells();
+    if (n == 1) {
       cell.face = starts[next++];
       continue;
     }
-    auto leaves = std::make_shared_for_overwrite<Face_handle[]>(r * r);
-    std::copy_n(starts.begin() + next, size_t{r} * r, leaves.get());
-    next += size_t{r} * r;
-    leaf_count_ += size_t{r} * r;
+    auto leaves = std::make_shared_for_overwrite<Face_handle[]>(n);
+    std::copy_n(starts.begin() + next, n, leaves.get());
+    next += n;
+    leaf_count_ += n;
     cell.leaves = std::move(leaves);
   }
 }
@@ -80,11 +80,11 @@ std::vector<StartTable::Face_handle> StartTable::Starts() const {
   std::vector<Face_handle> starts;
   starts.reserve(start_count());
   for (const Cell& cell : cells_) {
-    if (cell.resolution == 1) {
-      starts.push_back(cell.face);
+    if (cell.leaves) {
+      starts.insert(starts.end(), cell.leaves.get(),
+                    cell.leaves.get() + cell.sub_grid.cells());
     } else {
-      const size_t n = size_t{cell.resolution} * cell.resolution;
-      starts.insert(starts.end(), cell.leaves.get(), cell.leaves.get() + n);
+      starts.push_back(cell.face);
     }
   }
   return starts;
@@ -92,7 +92,7 @@ std::vector<StartTable::Face_handle> StartTable::Starts() const {
 
 size_t StartTable::start_count() const {
   size_t direct = 0;
-  for (const Cell& c : cells_) direct += c.resolution == 1;
+  for (const Cell& c : cells_) direct += !c.leaves;
   return direct + leaf_count_;
 }
 
@@ -109,11 +109,13 @@ std::vector<Point2> StartTable::SampleStartPoints(size_t max_points) const {
   const int g = grid_.size();
   for (int row = 0; row < g; ++row) {
     for (int col = 0; col < g; ++col) {
-      const uint32_t r = cells_[static_cast<size_t>(row) * g + col].resolution;
+      const SubGrid& sub = cells_[static_cast<size_t>(row) * g + col].sub_grid;
       const BoundingBox box = grid_.CellBox(col, row);
-      for (uint32_t sy = 0; sy < r; ++sy) {
-        for (uint32_t sx = 0; sx < r; ++sx, ++index) {
-          if (index % step == 0) out.push_back(SubCellCentre(box, r, sx, sy));
+      for (uint32_t sy = 0; sy < sub.rows; ++sy) {
+        for (uint32_t sx = 0; sx < sub.columns; ++sx, ++index) {
+          if (index % step == 0) {
+            out.push_back(SubCellCentre(box, sub, sx, sy));
+          }
         }
       }
     }

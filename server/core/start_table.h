@@ -1,13 +1,15 @@
 // StartTable: the self-tuning strategy's O(1) jump. An immutable two-level
 // grid of walk starts: a coarse grid (the histogram's) whose cells are each
-// refined into their own r x r sub-grid, r chosen by the tuner from traffic
-// and point density. Every (sub-)cell stores the face containing its centre,
-// so a query walks only from the centre of its own small cell.
+// refined into their own columns x rows sub-grid, chosen by the tuner from
+// traffic, point density and the shape of the cell's triangles (a mesh
+// stretched 50:1 gets sub-cells stretched alike). Every (sub-)cell stores the
+// face containing its centre, so a query walks only from the centre of its
+// own small cell.
 //
-// A lookup costs one table read for an unrefined cell (r = 1, the start is
+// A lookup costs one table read for an unrefined cell (1 x 1, the start is
 // stored inline) and two for a refined one. A refined cell's starts live in
 // their own immutable chunk, shared with the previous table when the cell's
-// resolution did not change: a re-tune copies pointers, not starts.
+// sub-grid did not change: a re-tune copies pointers, not starts.
 //
 // Thread-safety: immutable after construction; Start() from any thread.
 // Invariant: every stored face is a finite face of the triangulation it was
@@ -28,6 +30,15 @@
 
 namespace locator {
 
+// The sub-grid of one coarse cell: columns x rows sub-cells, each >= 1.
+struct SubGrid {
+  uint32_t columns = 1;
+  uint32_t rows = 1;
+
+  size_t cells() const { return size_t{columns} * rows; }
+  bool operator==(const SubGrid&) const = default;
+};
+
 class StartTable {
  public:
   using Face_handle = Triangulation::Face_handle;
@@ -37,22 +48,22 @@ class StartTable {
   static constexpr size_t kBytesPerStart = sizeof(Face_handle);
   static constexpr size_t kBytesPerCell = 64;
 
-  // resolution[c] >= 1 is the sub-grid size of coarse cell c. Cells whose
-  // resolution equals that in `previous` (if given, same grid) copy its
-  // starts instead of walking for them: a re-tune pays only for what moved.
+  // sub_grids[c] is the sub-grid of coarse cell c. Cells whose sub-grid
+  // equals that in `previous` (if given, same grid) copy its starts instead
+  // of walking for them: a re-tune pays only for what moved.
   StartTable(const Triangulation& t, const GridGeometry& grid,
-             const std::vector<uint32_t>& resolution,
+             const std::vector<SubGrid>& sub_grids,
              const StartTable* previous = nullptr);
 
-  // A table with the given resolutions whose starts are `starts`, cell by
-  // cell in row-major order, a refined cell's r x r sub-cells row-major (as
-  // Starts() lists them). Precondition: starts.size() is the number of
-  // starts the resolutions imply, and every face is a finite face of the
-  // triangulation the table will be used with.
-  StartTable(const GridGeometry& grid, const std::vector<uint32_t>& resolution,
+  // A table with the given sub-grids whose starts are `starts`, cell by
+  // cell in row-major order, a refined cell's sub-cells row-major (as
+  // Starts() lists them). Precondition: starts.size() is the sum of the
+  // sub-grids' cells, and every face is a finite face of the triangulation
+  // the table will be used with.
+  StartTable(const GridGeometry& grid, const std::vector<SubGrid>& sub_grids,
              std::span<const Face_handle> starts);
 
-  uint32_t resolution(size_t cell) const { return cells_[cell].resolution; }
+  const SubGrid& sub_grid(size_t cell) const { return cells_[cell].sub_grid; }
   // Every stored start, in the order the constructor above takes them.
   std::vector<Face_handle> Starts() const;
 
@@ -63,17 +74,18 @@ class StartTable {
     const int cx = static_cast<int>(gx);
     const int cy = static_cast<int>(gy);
     const Cell& cell = cells_[static_cast<size_t>(cy) * grid_.size() + cx];
-    if (cell.resolution == 1) {
+    if (!cell.leaves) {
       *lookups += 1;
       return cell.face;
     }
     *lookups += 2;
-    const uint32_t r = cell.resolution;
-    uint32_t sx = static_cast<uint32_t>((gx - cx) * r);
-    uint32_t sy = static_cast<uint32_t>((gy - cy) * r);
-    if (sx >= r) sx = r - 1;
-    if (sy >= r) sy = r - 1;
-    return cell.leaves[sy * r + sx];
+    const uint32_t columns = cell.sub_grid.columns;
+    const uint32_t rows = cell.sub_grid.rows;
+    uint32_t sx = static_cast<uint32_t>((gx - cx) * columns);
+    uint32_t sy = static_cast<uint32_t>((gy - cy) * rows);
+    if (sx >= columns) sx = columns - 1;
+    if (sy >= rows) sy = rows - 1;
+    return cell.leaves[size_t{sy} * columns + sx];
   }
 
   const GridGeometry& grid() const { return grid_; }
@@ -85,9 +97,10 @@ class StartTable {
 
  private:
   struct Cell {
-    Face_handle face;  // the start when resolution == 1
-    std::shared_ptr<const Face_handle[]> leaves;  // r x r when r > 1
-    uint32_t resolution = 1;
+    Face_handle face;  // the start when the sub-grid is 1 x 1
+    // columns x rows starts, row-major, when the sub-grid is larger.
+    std::shared_ptr<const Face_handle[]> leaves;
+    SubGrid sub_grid;
   };
 
   GridGeometry grid_;

@@ -127,32 +127,33 @@ Status ReadCounts(ByteReader* r, size_t cells, std::string_view what,
   return Status::OK();
 }
 
-// Reads the resolutions and returns the number of starts they imply.
-Status ReadResolution(ByteReader* r, size_t cells, TuningState* state,
-                      uint64_t* starts) {
+// Reads the sub-grid levels and returns the fewest and the most starts they
+// allow (each cell has at least one).
+Status ReadLevels(ByteReader* r, size_t cells, TuningState* state,
+                  uint64_t* min_starts, uint64_t* max_starts) {
   if (r->remaining() / sizeof(uint32_t) < cells) {
-    return Corrupt("resolutions cut short");
+    return Corrupt("sub-grid levels cut short");
   }
-  state->resolution.resize(cells);
-  *starts = 0;
-  for (uint32_t& res : state->resolution) {
-    res = r->U32();
-    if (res < 1 || res > kMaxStoredResolution) {
-      return Corrupt("sub-grid resolution " + std::to_string(res));
+  state->levels.resize(cells);
+  *min_starts = cells;
+  *max_starts = 0;
+  for (uint32_t& level : state->levels) {
+    level = r->U32();
+    if (level < 1 || level > kMaxStoredLevel) {
+      return Corrupt("sub-grid level " + std::to_string(level));
     }
-    *starts += res == 1 ? 1 : uint64_t{res} * res;
+    *max_starts += MaxStartsAtLevel(level);
   }
   return Status::OK();
 }
 
-Status ReadStarts(ByteReader* r, uint64_t expected, uint64_t input_points,
-                  TuningState* state) {
+Status ReadStarts(ByteReader* r, uint64_t min_starts, uint64_t max_starts,
+                  uint64_t input_points, TuningState* state) {
   const uint64_t count = r->U64();
-  if (!r->ok() || count != expected) {
-    return Corrupt(std::to_string(count) +
-                   " starts where the resolutions "
-                   "need " +
-                   std::to_string(expected));
+  if (!r->ok() || count < min_starts || count > max_starts) {
+    return Corrupt(std::to_string(count) + " starts where the levels allow " +
+                   std::to_string(min_starts) + " to " +
+                   std::to_string(max_starts));
   }
   if (r->remaining() / kBytesPerStart < count) {
     return Corrupt("starts cut short");
@@ -184,11 +185,13 @@ Status ReadPayload(ByteReader* r, const TuningFingerprint& fp,
     return Corrupt(std::to_string(cells) + " cells in a " +
                    std::to_string(fp.grid_size) + "-grid");
   }
-  uint64_t starts = 0;
+  uint64_t min_starts = 0, max_starts = 0;
   Status s = ReadCounts(r, cells, "histogram", &state->histogram);
   if (s.ok()) s = ReadCounts(r, cells, "planned share", &state->planned_share);
-  if (s.ok()) s = ReadResolution(r, cells, state, &starts);
-  if (s.ok()) s = ReadStarts(r, starts, fp.input_points, state);
+  if (s.ok()) s = ReadLevels(r, cells, state, &min_starts, &max_starts);
+  if (s.ok()) {
+    s = ReadStarts(r, min_starts, max_starts, fp.input_points, state);
+  }
   if (s.ok() && r->remaining() != 0) {
     s = Corrupt(std::to_string(r->remaining()) + " bytes after the starts");
   }
@@ -243,7 +246,7 @@ std::string EncodeTuningState(const TuningFingerprint& fingerprint,
   w.U32(static_cast<uint32_t>(state.histogram.size()));
   for (double v : state.histogram) w.F64(v);
   for (double v : state.planned_share) w.F64(v);
-  for (uint32_t r : state.resolution) w.U32(r);
+  for (uint32_t r : state.levels) w.U32(r);
   w.U64(state.starts.size());
   for (const auto& corners : state.starts) {
     for (uint32_t id : corners) w.U32(id);

@@ -14,7 +14,7 @@
 //     strategy name | u32 grid size | 4 x f64 grid box | u64 budget bytes
 //   payload: u64 snapshot version | u64 re-tunes | u8 seen traffic |
 //     u32 cells | cells x f64 histogram | cells x f64 planned share |
-//     cells x u32 resolution | u64 starts | starts x 3 x u32 corner ids
+//     cells x u32 sub-grid level | u64 starts | starts x 3 x u32 corner ids
 //   u64 checksum: Fnv1a64 of every byte before it
 //
 // Decoding validates every length, count and id before using it: any byte
@@ -39,9 +39,18 @@
 namespace locator {
 
 inline constexpr std::string_view kTuningStateMagic = "LOCTUNE\n";
-inline constexpr uint32_t kTuningStateFormatVersion = 1;
-// Sub-grid sizes above this are rejected (r * r must fit in 32 bits).
-inline constexpr uint32_t kMaxStoredResolution = 65535;
+// Version 2: a cell's stored level r buys about r * r starts shaped by the
+// cell's triangles (version 1 stored square r x r sub-grids).
+inline constexpr uint32_t kTuningStateFormatVersion = 2;
+// Sub-grid levels above this are rejected (r * r must fit in 32 bits).
+inline constexpr uint32_t kMaxStoredLevel = 65535;
+// The most starts a cell at level r holds: its sub-grid has about r * r
+// sub-cells (HotRegionTuner::ShapeOf stays within this bound, which decoding
+// enforces; the exact count depends on the triangulation, and
+// HotRegionTuner::Restore checks it).
+inline constexpr uint64_t MaxStartsAtLevel(uint32_t r) {
+  return r == 1 ? 1 : 2 * uint64_t{r} * r;
+}
 
 // Everything that changes what a stored state means.
 struct TuningFingerprint {
@@ -70,12 +79,13 @@ struct TuningState {
   // Whether any traffic was ever counted (the first counts are not decayed).
   bool seen_traffic = false;
   // Per coarse cell, row-major: the decayed query counts, the traffic share
-  // the start table was planned for, and the sub-grid size (>= 1).
+  // the start table was planned for, and the sub-grid level r (>= 1: about
+  // r * r starts, shaped by the tuner from the cell's triangles).
   std::vector<double> histogram;
   std::vector<double> planned_share;
-  std::vector<uint32_t> resolution;
+  std::vector<uint32_t> levels;
   // The start faces by their corners' vertex ids (counter-clockwise), cell
-  // by cell; a refined cell's r x r starts row-major.
+  // by cell; a refined cell's sub-grid row-major.
   std::vector<std::array<uint32_t, 3>> starts;
 };
 

@@ -96,7 +96,7 @@ TEST(TuningStateTest, ARealSaveDecodesAndEncodesToTheSameBytes) {
   const size_t cells =
       size_t{Fingerprint().grid_size} * Fingerprint().grid_size;
   EXPECT_EQ(state.histogram.size(), cells);
-  EXPECT_EQ(state.resolution.size(), cells);
+  EXPECT_EQ(state.levels.size(), cells);
   // The hot spot got a refined cell.
   EXPECT_GT(state.starts.size(), cells);
   EXPECT_EQ(EncodeTuningState(Fingerprint(), state), bytes);
@@ -131,10 +131,11 @@ TEST(TuningStateTest, WrongMagicOrVersionIsNamed) {
   EXPECT_THAT(Decode(magic).message(), HasSubstr("bad magic"));
 
   std::string version = ClusteredSave();
-  version[kVersionAt] = 2;
+  version[kVersionAt] = kTuningStateFormatVersion + 1;
   ResealTuningState(&version);
   EXPECT_THAT(Decode(version).message(),
-              HasSubstr("unsupported tuning state format version 2"));
+              HasSubstr("unsupported tuning state format version " +
+                        std::to_string(kTuningStateFormatVersion + 1)));
 }
 
 TEST(TuningStateTest, AForeignFingerprintIsNamed) {
@@ -169,12 +170,14 @@ TEST(TuningStateTest, LengthsCountsAndIdsThatLieAreRejected) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {Reencoded([](TuningState* s) { s->histogram.push_back(1); }),
        "cells in a"},
-      {Reencoded([](TuningState* s) { s->starts.pop_back(); }),
-       "starts where the resolutions need"},
-      {Reencoded([](TuningState* s) { s->resolution[0] = 0; }),
-       "sub-grid resolution 0"},
-      {Reencoded([](TuningState* s) { s->resolution[1] = 70000; }),
-       "sub-grid resolution 70000"},
+      {Reencoded([](TuningState* s) { s->levels.assign(s->levels.size(), 1); }),
+       "starts where the levels allow"},
+      {Reencoded(
+           [](TuningState* s) { s->starts.resize(s->levels.size() - 1); }),
+       "starts where the levels allow"},
+      {Reencoded([](TuningState* s) { s->levels[0] = 0; }), "sub-grid level 0"},
+      {Reencoded([](TuningState* s) { s->levels[1] = 70000; }),
+       "sub-grid level 70000"},
       {Reencoded([&](TuningState* s) { s->starts.back()[2] = points; }),
        "names vertex " + std::to_string(points)},
       {Reencoded([](TuningState* s) {
