@@ -163,14 +163,18 @@ grpc::ServerUnaryReactor* LocatorService::LocateBatch(
     v1::LocateBatchResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
       this, context, AccessPolicy::Scope::kData, [&](Admission call) {
-        // Points in another CRS are transformed once, into a copy that the
-        // function holds.
+        // Points in another CRS are validated first (an oversized batch
+        // must not pay for a transform), then transformed once, into a copy
+        // that the function holds.
         std::shared_ptr<v1::LocateBatchRequest> in_dataset_crs;
         if (!request->crs().empty()) {
           in_dataset_crs = std::make_shared<v1::LocateBatchRequest>();
-          if (Status status = BatchInDatasetCrs(*call.engine, *request,
-                                                in_dataset_crs.get());
-              !status.ok()) {
+          Status status = batch_locator_.Validate(*request);
+          if (status.ok()) {
+            status =
+                BatchInDatasetCrs(*call.engine, *request, in_dataset_crs.get());
+          }
+          if (!status.ok()) {
             return FinishNow(context, ToGrpcStatus(status));
           }
         }

@@ -105,7 +105,7 @@ void ExpectHugeRangeAnswersAgreeWithCgal(const ServerProcess& server,
     const LocateResult got = FromLocateResponse(response);
     const LocateResult want = reference->Locate(q);
     EXPECT_EQ(got.type, want.type) << q.x << ", " << q.y;
-    EXPECT_TRUE(reference->triangulation().Agrees(q, got, want))
+    EXPECT_TRUE(reference->Agrees(q, got, want))
         << q.x << ", " << q.y;
     if (got.type == LocationType::kOutsideConvexHull) continue;
     const double sum =

@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "server/core/triangulation.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {
@@ -265,13 +266,31 @@ v1::LocateBatchRequest BatchRequestFor(std::span<const Point2> points) {
   return request;
 }
 
+Reference::~Reference() = default;
+
+LocateResult Reference::Locate(const Point2& q) const {
+  return triangulation_->ReferenceLocate(q);
+}
+
+bool Reference::Agrees(const Point2& q, const LocateResult& got,
+                       const LocateResult& want) const {
+  return triangulation_->Agrees(q, got, want);
+}
+
 Status Reference::Build(const std::string& dataset_path,
                         std::unique_ptr<Reference>* reference) {
+  Dataset dataset;
+  const Status loaded = LoadDataset(dataset_path, &dataset);
+  if (!loaded.ok()) return loaded;
+  return FromDataset(std::move(dataset), reference);
+}
+
+Status Reference::FromDataset(Dataset dataset,
+                              std::unique_ptr<Reference>* reference) {
   std::unique_ptr<Reference> built(new Reference());
-  Status status = LoadDataset(dataset_path, &built->dataset_);
-  if (status.ok()) {
-    status = Triangulation::Build(built->dataset_, &built->triangulation_);
-  }
+  built->dataset_ = std::move(dataset);
+  const Status status =
+      Triangulation::Build(built->dataset_, &built->triangulation_);
   if (status.ok()) *reference = std::move(built);
   return status;
 }

@@ -25,8 +25,11 @@
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/core/dataset.h"
 #include "server/core/locate_result.h"
-#include "server/core/triangulation.h"
 #include "tests/testing/server_process.h"
+
+namespace locator {
+class Triangulation;
+}  // namespace locator
 
 namespace locator::test {
 
@@ -95,14 +98,21 @@ v1::LocateBatchRequest BatchRequestFor(std::span<const Point2> points);
 // CGAL's own answers for the same dataset file, built in-process.
 class Reference {
  public:
+  // Loads the dataset file at `dataset_path` and triangulates it.
   static Status Build(const std::string& dataset_path,
                       std::unique_ptr<Reference>* reference);
+  // Triangulates `dataset`, already loaded.
+  static Status FromDataset(Dataset dataset,
+                            std::unique_ptr<Reference>* reference);
+
+  ~Reference();
 
   const Dataset& dataset() const { return dataset_; }
-  const Triangulation& triangulation() const { return *triangulation_; }
-  LocateResult Locate(const Point2& q) const {
-    return triangulation_->ReferenceLocate(q);
-  }
+  // CGAL's own locate() of q.
+  LocateResult Locate(const Point2& q) const;
+  // Triangulation::Agrees: `got` and `want` are equally right answers for q.
+  bool Agrees(const Point2& q, const LocateResult& got,
+              const LocateResult& want) const;
 
   // Checks answers[i] for queries[i]: same type, Triangulation::Agrees, the
   // same triangle id for FACE, and (inside the hull) barycentric weights and

@@ -15,7 +15,6 @@
 #include <vector>
 
 #include "common/gis/ogr_dataset.h"
-#include "server/core/triangulation.h"
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
@@ -27,6 +26,8 @@ using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
 constexpr int kHillSide = 15;  // 225 points, 400 m apart
+// Above the largest batch the tests send (LonLatQueries: 900 points).
+constexpr int kMaxBatchPoints = 1000;
 
 class LocatordGisTest : public ::testing::Test {
  protected:
@@ -38,10 +39,14 @@ class LocatordGisTest : public ::testing::Test {
     gpkg_ = new std::string(dir_->path() + "/hill.gpkg");
     gis::testing::Ogr2Ogr({"-f", "GPKG", *gpkg_, geojson, "-nln", "hill",
                            "-a_srs", "EPSG:32633"});
-    ASSERT_TRUE(gis::LoadOgrDataset(*gpkg_, &reference_points_).ok());
-    ASSERT_TRUE(Triangulation::Build(reference_points_, &reference_).ok());
+    Dataset points;
+    ASSERT_TRUE(gis::LoadOgrDataset(*gpkg_, &points).ok());
+    ASSERT_TRUE(Reference::FromDataset(std::move(points), &reference_).ok());
     const Status started =
-        StartLocatord(*gpkg_, {"--reload-dir", dir_->path()}, &server_);
+        StartLocatord(*gpkg_,
+                      {"--reload-dir", dir_->path(), "--max-batch-points",
+                       std::to_string(kMaxBatchPoints)},
+                      &server_);
     ASSERT_TRUE(started.ok()) << started.ToString();
   }
   static void TearDownTestSuite() {
@@ -58,16 +63,14 @@ class LocatordGisTest : public ::testing::Test {
 
   static test::ScratchDir* dir_;
   static std::string* gpkg_;
-  static Dataset reference_points_;
-  static std::unique_ptr<Triangulation> reference_;
+  static std::unique_ptr<Reference> reference_;
   static std::unique_ptr<ServerProcess> server_;
   std::unique_ptr<v1::Locator::Stub> stub_;
 };
 
 test::ScratchDir* LocatordGisTest::dir_ = nullptr;
 std::string* LocatordGisTest::gpkg_ = nullptr;
-Dataset LocatordGisTest::reference_points_;
-std::unique_ptr<Triangulation> LocatordGisTest::reference_;
+std::unique_ptr<Reference> LocatordGisTest::reference_;
 std::unique_ptr<ServerProcess> LocatordGisTest::server_;
 
 // Lon/lat points over the hill (which is centred at 15°E, 49.6525°N).
@@ -114,7 +117,7 @@ v1::LocateRequest LonLatRequest(const Point2& q, bool vertices_in_lon_lat) {
 }
 
 TEST_F(LocatordGisTest, AnswersAgreeWithCgalAndCarryTheHillsHeights) {
-  std::vector<Point2> queries = reference_points_.points;  // every vertex
+  std::vector<Point2> queries = reference_->dataset().points;  // every vertex
   for (int i = 0; i < 40; ++i) {
     for (int j = 0; j < 40; ++j) {
       // Across the hill and 1 km beyond it on every side.
@@ -128,7 +131,7 @@ TEST_F(LocatordGisTest, AnswersAgreeWithCgalAndCarryTheHillsHeights) {
     const grpc::Status status = LocateOne(*stub_, q, &response);
     ASSERT_TRUE(status.ok()) << status.error_message();
     const LocateResult got = FromLocateResponse(response);
-    const LocateResult expected = reference_->ReferenceLocate(q);
+    const LocateResult expected = reference_->Locate(q);
     ASSERT_TRUE(reference_->Agrees(q, got, expected))
         << "query " << i << " (" << q.x << ", " << q.y << ")";
     ASSERT_EQ(got.has_value, expected.has_value) << "query " << i;
@@ -141,7 +144,7 @@ TEST_F(LocatordGisTest, AnswersAgreeWithCgalAndCarryTheHillsHeights) {
     }
   }
   // The vertices and most of the grid lie on the hill.
-  EXPECT_GT(with_value, reference_points_.points.size() + 500);
+  EXPECT_GT(with_value, reference_->dataset().points.size() + 500);
 }
 
 TEST_F(LocatordGisTest, GetStatsReportsTheCrs) {
@@ -297,6 +300,19 @@ TEST_F(LocatordGisTest, BadRequestCrssAreInvalidArgument) {
       stub_->LocateBatch(&context, batch, &batch_response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_THAT(status.error_message(), HasSubstr("point 2 (-70, 0)"));
+}
+
+// The batch's own checks come before the transform: an oversized batch is
+// refused for its size, whatever its CRS, without being transformed.
+TEST_F(LocatordGisTest, OversizedBatchIsRefusedBeforeItsCrsIsRead) {
+  v1::LocateBatchRequest batch = BatchRequestFor(
+      std::vector<Point2>(kMaxBatchPoints + 1, Point2{15, 49.65}));
+  batch.set_crs("EPSG:999999");
+  v1::LocateBatchResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = stub_->LocateBatch(&context, batch, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::RESOURCE_EXHAUSTED)
+      << status.error_message();
 }
 
 }  // namespace
