@@ -21,6 +21,7 @@
 #   DATASET        locatord --dataset                            (uniform:200000:1)
 #   WORKLOAD       locator-load --workload                       (1-cluster)
 #   CONCURRENCY    calls in flight                               (16)
+#   RETUNE_EVERY   locatord --retune-every                       (its default)
 #   PLOT           also write locator-load's SVG chart here
 #   SUMMARY_JSON   also write the summary as JSON here (the ctest reads it)
 #   KEEP_DIR=1     keep the working directory (logs, nginx.conf) and say where
@@ -41,6 +42,8 @@ RESTART_AFTER="${RESTART_AFTER:-3}"
 DATASET="${DATASET:-uniform:200000:1}"
 WORKLOAD="${WORKLOAD:-1-cluster}"
 CONCURRENCY="${CONCURRENCY:-16}"
+retune_flags=()
+if [ -n "${RETUNE_EVERY:-}" ]; then retune_flags=(--retune-every "$RETUNE_EVERY"); fi
 VICTIM=2  # the replica that is killed and restarted
 
 for binary in "$LOCATORD" "$LOCATOR" "$LOCATOR_LOAD" "$NGINX"; do
@@ -117,7 +120,7 @@ start_replica() {
   local i=$1
   mkdir -p "$work/replica$i/state"
   "$LOCATORD" --dataset "$DATASET" --listen "127.0.0.1:${ports[$i]}" \
-    --state-dir "$work/replica$i/state" \
+    --state-dir "$work/replica$i/state" "${retune_flags[@]}" \
     >> "$work/replica$i/locatord.log" 2>&1 &
   pids[replica$i]=$!
   wait_for 60 $! "$work/replica$i/locatord.log" \
@@ -196,9 +199,15 @@ sys.exit(0 if int(saves) > 0 else 1)'
 }
 sleep "$KILL_AT"
 # Killed at KILL_AT, or later once it has saved its tuning: a slow machine
-# (or a sanitizer build) may not have re-tuned by KILL_AT.
-for _ in $(seq 1 600); do saved_tuning && break; sleep 0.1; done
-saved_tuning || fail "replica $VICTIM saved no tuning state in 60 s"
+# (or a sanitizer build) may not have re-tuned by KILL_AT. Only the load
+# makes it re-tune, so this waits while the load runs, and at most 60 s.
+save_deadline=$((SECONDS + 60))
+until saved_tuning; do
+  alive "${pids[load]}" ||
+    fail "replica $VICTIM saved no tuning state before the load ended: raise DURATION or lower RETUNE_EVERY"
+  [ $SECONDS -lt $save_deadline ] || fail "replica $VICTIM saved no tuning state in 60 s"
+  sleep 0.1
+done
 mark_phase  # phase 2: during the failure (calls it breaks count there)
 kill -KILL "${pids[replica$VICTIM]}"
 wait "${pids[replica$VICTIM]}" 2>/dev/null || true
