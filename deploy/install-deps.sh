@@ -17,7 +17,6 @@ PACKAGES=(
   libgdal-dev gdal-bin libproj-dev proj-bin
   python3 python3-grpcio python3-protobuf python3-numpy
   libssl-dev
-  libgdal-dev gdal-bin libproj-dev proj-bin
   chromium nginx openssl curl
   clang libclang-rt-14-dev
 )

@@ -64,10 +64,6 @@ std::vector<std::string_view> SplitOnColon(std::string_view s) {
   return parts;
 }
 
-// How many points to reserve room for: one per line of `text`, but never more
-// than `at_most`. Reserving up front avoids the 2x peak of vector doubling on
-// multi-gigabyte inputs; bounding by the lines keeps a small file from
-// reserving for a count it merely declares.
 }  // namespace
 
 bool IsGeneratorSpec(std::string_view spec) {
