@@ -30,9 +30,11 @@ JOBS="$(nproc)"
 # of -O2), no debug info beyond clang's line tables, and no locator-bench (a
 # program, not a test).
 SANITIZER_FLAGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DLOCATOR_BUILD_BENCH=OFF)
+# ccache caches objects built with a precompiled header (cmake/LocatorPch.cmake)
+# only under these sloppiness settings.
 LAUNCHER=()
 if command -v ccache > /dev/null; then
-  LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  LAUNCHER=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_SLOPPINESS=pch_defines,time_macros;ccache")
 fi
 
 # Each stage's wall time, and the CPU time (user + sys) of everything it ran:
