@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
 # README command 2, and what CI runs (.ci/run): installs what is missing,
-# builds, and runs every test. Then, each in its own build tree:
+# builds, and runs every test. Each source is compiled once per tree, and each
+# tree has one job:
+#   build  the programs and libraries as shipped (gcc, Release; no GoogleTest
+#          suites), and the tests that drive them from outside: the local
+#          cluster, the Python client, a consumer of the installed engine
 #   check  one clang tree with AddressSanitizer + UBSan, libFuzzer coverage
-#          and the thread-safety analysis as errors (build-check): the whole
-#          suite under ASAN+UBSAN, then every fuzzer for LOCATOR_FUZZ_SECONDS
-#   tsan   the concurrency tests and the server's end-to-end tests under
-#          ThreadSanitizer (build-tsan; only their executables and the
-#          servers they spawn; labels concurrency and e2e-server)
-#   soak   deploy/soak.sh for LOCATOR_SOAK_SECONDS on the plain build
+#          and the thread-safety analysis as errors (build-check): every
+#          test, GoogleTest suites included, under ASAN+UBSAN, then every
+#          fuzzer for LOCATOR_FUZZ_SECONDS
+#   tsan   the concurrency tests (the engine under many threads, the serving
+#          layer's parts in process) and locatord under real traffic
+#          (locatord_e2e_test) under ThreadSanitizer (build-tsan; only their
+#          executables)
+#   soak   deploy/soak.sh for LOCATOR_SOAK_SECONDS on the shipped build
 # Any test failure, thread-safety error, sanitizer report (from a test or
 # from a server it started), fuzzer crash or soak failure fails the run.
 # Stage timings are printed at the end, pass or fail.
@@ -106,6 +112,13 @@ sanitized_ctest() {
   return $status
 }
 
+# tsan_test: the concurrency tests, then locatord's engine, re-tune timer and
+# serving threads under real gRPC traffic (locatord_e2e_test's suite).
+tsan_test() {
+  sanitized_ctest build-tsan -L concurrency &&
+    sanitized_ctest build-tsan -R '^LocatordTest\.'
+}
+
 # fuzz_run: every fuzzer for its bounded time, then how many inputs each ran.
 fuzz_run() {
   ctest --test-dir build-check -L fuzz --output-on-failure -j"$JOBS" &&
@@ -114,7 +127,8 @@ fuzz_run() {
 }
 
 stage deps bash deploy/install-deps.sh
-stage build build_tree "$BUILD_DIR" all -DCMAKE_BUILD_TYPE=Release
+stage build build_tree "$BUILD_DIR" all -DCMAKE_BUILD_TYPE=Release \
+  -DLOCATOR_BUILD_TESTS=OFF
 stage test ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS" \
   --timeout 300
 
@@ -127,11 +141,11 @@ if [ "$SANITIZERS" != 0 ]; then
   if [ "$FUZZ" != 0 ]; then
     stage fuzz-run fuzz_run
   fi
-  stage tsan-build build_tree build-tsan "tests-concurrency tests-e2e-server" \
+  stage tsan-build build_tree build-tsan "tests-concurrency locatord_e2e_test" \
     "${SANITIZER_FLAGS[@]}" \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG" \
     -DLOCATOR_SANITIZER=thread
-  stage tsan-test sanitized_ctest build-tsan -L 'concurrency|e2e-server'
+  stage tsan-test tsan_test
 fi
 
 if [ "$SOAK" != 0 ]; then
