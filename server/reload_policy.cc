@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
@@ -46,22 +47,38 @@ grpc::Status ReloadPolicy::Resolve(const std::string& requested,
                         "this server reloads only its configured dataset "
                         "(start it with --reload-dir to allow others)");
   }
-  if (IsGeneratorSpec(requested)) {
-    *spec = requested;
-    return grpc::Status::OK;
-  }
-  // A GIS spec's options ride along; its source must be a file in the dir.
-  const gis::OgrSpecParts parts = gis::IsOgrDatasetSpec(requested)
-                                      ? gis::SplitOgrDatasetSpec(requested)
-                                      : gis::OgrSpecParts{"", requested, ""};
-  std::string file = FileInReloadDir(std::string(parts.source));
-  if (file.empty()) {
+  *spec = ResolveInReloadDir(requested);
+  if (spec->empty()) {
     return ToGrpcStatus(Refusal::kPermissionDenied,
                         "dataset '" + requested +
                             "' is not a file in this server's reload dir");
   }
-  *spec = std::string(parts.prefix) + file + std::string(parts.options);
   return grpc::Status::OK;
+}
+
+std::string ReloadPolicy::ResolveInReloadDir(
+    const std::string& requested) const {
+  std::string_view points;
+  std::string_view wkt;
+  if (SplitWktConstraintsSpec(requested, &points, &wkt)) {
+    const std::string points_spec = ResolveInReloadDir(std::string(points));
+    const std::string wkt_file = FileInReloadDir(std::string(wkt));
+    if (points_spec.empty() || wkt_file.empty()) return "";
+    return points_spec + "+" + wkt_file;
+  }
+  if (IsGeneratorSpec(requested)) return requested;
+  // A GIS spec's options ride along; its source must be a file in the dir.
+  const gis::OgrSpecParts parts = gis::IsOgrDatasetSpec(requested)
+                                      ? gis::SplitOgrDatasetSpec(requested)
+                                      : gis::OgrSpecParts{"", requested, ""};
+  const std::string file = FileInReloadDir(std::string(parts.source));
+  if (file.empty()) return "";
+  // A file that reads others (mesh.ele reads mesh.node) is allowed only when
+  // they are inside the dir too.
+  for (const std::string& companion : DatasetCompanionFiles(file)) {
+    if (FileInReloadDir(companion).empty()) return "";
+  }
+  return std::string(parts.prefix) + file + std::string(parts.options);
 }
 
 std::string ReloadPolicy::FileInReloadDir(const std::string& requested) const {

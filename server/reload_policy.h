@@ -8,7 +8,9 @@
 //     resolved with realpath, and must then be a regular file inside DIR: no
 //     ".." component and no symlink leading out of DIR;
 //   - a GIS spec (common/gis/ogr_dataset_spec.h) whose source is such a
-//     file; its options are kept as given.
+//     file; its options are kept as given;
+//   - POINTS+PATH.wkt where POINTS is any of the above and PATH.wkt a file
+//     inside DIR; a .ele needs its .node inside DIR too.
 // Every other spec is refused alike (PERMISSION_DENIED), whether or not the
 // file exists, so that a caller learns nothing about the server's files.
 //
@@ -36,6 +38,9 @@ class ReloadPolicy {
   grpc::Status Resolve(const std::string& requested, std::string* spec) const;
 
  private:
+  // What to load for `requested` (not the configured dataset): the
+  // generator spec, or the spec with its file(s) resolved; "" if refused.
+  std::string ResolveInReloadDir(const std::string& requested) const;
   // The file of `requested` inside reload_dir_, resolved; "" if there is none.
   std::string FileInReloadDir(const std::string& requested) const;
 

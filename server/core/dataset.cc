@@ -5,9 +5,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <system_error>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "server/core/dataset_text.h"
 #include "server/core/file_io.h"
@@ -64,7 +66,43 @@ std::vector<std::string_view> SplitOnColon(std::string_view s) {
   return parts;
 }
 
+// Parses the text of the dataset file `path` by its extension; a .ele reads
+// its .node beside it.
+Status ParseDatasetFile(const std::string& path, std::string_view text,
+                        const DatasetLimits& limits, Dataset* ds) {
+  if (path.ends_with(".node")) return ParseNodeText(text, path, ds, limits);
+  if (path.ends_with(".poly")) return ParsePolyText(text, path, ds, limits);
+  if (path.ends_with(".off")) return ParseOffText(text, path, ds, limits);
+  if (path.ends_with(".ele")) {
+    const std::string node_path = DatasetCompanionFiles(path)[0];
+    std::string node_text;
+    const Status read = ReadWholeFile(
+        node_path, Cat("node file of ", Quoted(path)), &node_text);
+    if (!read.ok()) return read;
+    return ParseEleText(text, path, node_text, node_path, ds, limits);
+  }
+  return ParseXyzText(text, path, ds, limits);
+}
+
+template <typename T>
+void Append(std::vector<T>&& from, std::vector<T>* to) {
+  to->insert(to->end(), std::make_move_iterator(from.begin()),
+             std::make_move_iterator(from.end()));
+}
+
+// Adds a WKT file's breaklines and rings to the points' own constraints.
+void AppendConstraints(DatasetConstraints&& wkt, DatasetConstraints* to) {
+  Append(std::move(wkt.breaklines), &to->breaklines);
+  Append(std::move(wkt.rings), &to->rings);
+}
+
 }  // namespace
+
+std::vector<std::string> DatasetCompanionFiles(const std::string& path) {
+  constexpr std::string_view kEle = ".ele";
+  if (!path.ends_with(kEle)) return {};
+  return {path.substr(0, path.size() - kEle.size()) + ".node"};
+}
 
 bool IsGeneratorSpec(std::string_view spec) {
   return spec.starts_with("uniform:") || spec.starts_with("clusters:");
@@ -74,17 +112,23 @@ Status LoadDataset(const std::string& spec, Dataset* out,
                    const DatasetLimits& limits) {
   Dataset ds;
   Status status;
-  if (IsGeneratorSpec(spec)) {
+  std::string_view points_spec;
+  std::string_view wkt_path;
+  if (SplitWktConstraintsSpec(spec, &points_spec, &wkt_path)) {
+    status = LoadDataset(std::string(points_spec), &ds, limits);
+    std::string text;
+    if (status.ok()) {
+      status = ReadWholeFile(std::string(wkt_path), "constraints", &text);
+    }
+    DatasetConstraints wkt;
+    if (status.ok()) status = ParseWktConstraints(text, wkt_path, &wkt);
+    if (status.ok()) AppendConstraints(std::move(wkt), &ds.constraints);
+  } else if (IsGeneratorSpec(spec)) {
     status = RunGenerator(spec, SplitOnColon(spec), limits, &ds);
   } else {
     std::string text;
     status = ReadWholeFile(spec, "dataset", &text);
-    if (status.ok()) {
-      status = spec.ends_with(".node") ? ParseNodeText(text, spec, &ds, limits)
-               : spec.ends_with(".poly")
-                   ? ParsePolyText(text, spec, &ds, limits)
-                   : ParseXyzText(text, spec, &ds, limits);
-    }
+    if (status.ok()) status = ParseDatasetFile(spec, text, limits, &ds);
   }
   if (!status.ok()) return status;
   ds.source = spec;
@@ -134,6 +178,34 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
 }
 
 namespace dataset_text {
+
+Status ReadCount(FieldReader* reader, std::string_view filename,
+                 size_t max_fields, std::string_view what, size_t* count) {
+  Fields f;
+  if (!reader->Next(&f)) {
+    return Status::InvalidArgument(
+        Cat(filename, ":", reader->line_number(), ": missing ", what));
+  }
+  const Where where{filename, reader->line_number()};
+  if (f.has_empty || f.count > max_fields || !ParseInteger(f.field[0], count)) {
+    return where.Error(Cat("expected ", what));
+  }
+  return Status::OK();
+}
+
+Status ReadRow(FieldReader* reader, std::string_view filename,
+               size_t min_fields, std::string_view what, Fields* f,
+               Where* where) {
+  const bool more = reader->Next(f);
+  *where = Where{filename, reader->line_number()};
+  if (!more) return where->Error(Cat("missing ", what));
+  if (f->has_empty) return where->Error("empty field");
+  if (f->count < min_fields) {
+    return where->Error(
+        Cat("expected ", min_fields, " fields for ", what, ", got ", f->count));
+  }
+  return Status::OK();
+}
 
 Status ParseNodeSection(FieldReader* reader, std::string_view filename,
                         const DatasetLimits& limits, Dataset* out,

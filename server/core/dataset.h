@@ -9,6 +9,14 @@
 //                           inline), segments, holes and optional regional
 //                           attributes; its segments and holes bound the
 //                           domain with Triangle's semantics.
+//   PATH ending in .ele     Triangle's element format: a mesh served as given,
+//                           its points from the .node file of the same base
+//                           name beside it (mesh.ele reads mesh.node).
+//   PATH ending in .off     OFF (Object File Format): a triangle mesh served
+//                           as given; every vertex's z is its value.
+//   POINTS+PATH.wkt         the dataset POINTS (any spec above or below)
+//                           constrained by the WKT file PATH.wkt (see
+//                           ParseWktConstraints), e.g. survey.xyz+lakes.wkt.
 //   any other PATH          CSV/XYZ text: "x,y[,z]" per line, comma- or
 //                           whitespace-separated, optional header line,
 //                           '#' comments, blank lines ignored.
@@ -37,6 +45,10 @@ namespace locator {
 // Whether `spec` names a generator (uniform:, clusters:) rather than a file.
 bool IsGeneratorSpec(std::string_view spec);
 
+// The other files the dataset file `path` reads besides itself: for
+// mesh.ele, mesh.node; none for the other formats.
+std::vector<std::string> DatasetCompanionFiles(const std::string& path);
+
 // Loads a dataset from a file path or a generator spec (see above).
 Status LoadDataset(const std::string& spec, Dataset* out,
                    const DatasetLimits& limits = DatasetLimits());
@@ -62,6 +74,41 @@ Status ParseNodeText(std::string_view text, std::string_view filename,
 Status ParsePolyText(std::string_view text, std::string_view filename,
                      Dataset* out,
                      const DatasetLimits& limits = DatasetLimits());
+
+// Parses OFF text: the header "OFF" (its counts may follow on the same
+// line), "<#vertices> <#faces> <#edges>", vertex rows "x y z" and face rows
+// "3 i j k [colour...]" with 0-based vertex indices. z becomes the value, so
+// an OFF dataset always has values (all zero for a flat mesh). A face with
+// another corner count is an error: only triangles are served.
+Status ParseOffText(std::string_view text, std::string_view filename,
+                    Dataset* out,
+                    const DatasetLimits& limits = DatasetLimits());
+
+// Parses Triangle's .ele text ("<#triangles> <nodes per triangle: 3 or 6>
+// <#attributes>", then "<index> <n1> <n2> <n3> [more nodes] [attributes]")
+// against the points of the .node text (as ParseNodeText); node indices are
+// numbered like the .node file. Only the first three nodes of a triangle
+// (its corners) are used.
+Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
+                    std::string_view node_text, std::string_view node_filename,
+                    Dataset* out,
+                    const DatasetLimits& limits = DatasetLimits());
+
+// Parses WKT text into constraints: LINESTRING and MULTILINESTRING become
+// breaklines, every ring of a POLYGON and MULTIPOLYGON a domain ring (a
+// polygon's interior rings must lie inside its exterior ring);
+// GEOMETRYCOLLECTIONs of these and EMPTY geometries are accepted.
+// Geometries follow each other, separated by whitespace or ';'. With Z (as
+// "LINESTRING Z (...)" or as a third coordinate), z is the value along the
+// line or ring; a vertex without z must then be a dataset point. Keywords
+// are case-insensitive; M coordinates are refused.
+Status ParseWktConstraints(std::string_view text, std::string_view filename,
+                           DatasetConstraints* out);
+
+// Splits "POINTS+PATH.wkt" at its last '+' into the points spec and the WKT
+// path; false (outputs untouched) for any other spec.
+bool SplitWktConstraintsSpec(std::string_view spec, std::string_view* points,
+                             std::string_view* wkt);
 
 // Deterministic generators (same seed, same points, on every platform).
 Dataset GenerateUniform(size_t n, uint64_t seed);

@@ -16,43 +16,9 @@ using dataset_text::NodeSection;
 using dataset_text::ParseFinite;
 using dataset_text::ParseInteger;
 using dataset_text::Quoted;
+using dataset_text::ReadCount;
+using dataset_text::ReadRow;
 using dataset_text::Where;
-
-namespace {
-
-// Reads a section header "<count> [more fields...]" of at most `max_fields`
-// fields; `what` names the expected header in the error.
-Status ReadCount(FieldReader* reader, std::string_view filename,
-                 size_t max_fields, std::string_view what, size_t* count) {
-  Fields f;
-  if (!reader->Next(&f)) {
-    return Status::InvalidArgument(
-        Cat(filename, ":", reader->line_number(), ": missing ", what));
-  }
-  const Where where{filename, reader->line_number()};
-  if (f.has_empty || f.count > max_fields || !ParseInteger(f.field[0], count)) {
-    return where.Error(Cat("expected ", what));
-  }
-  return Status::OK();
-}
-
-// Reads the next line of a section of `declared` rows, with at least
-// `min_fields` fields.
-Status ReadRow(FieldReader* reader, std::string_view filename,
-               size_t min_fields, std::string_view what, Fields* f,
-               Where* where) {
-  const bool more = reader->Next(f);
-  *where = Where{filename, reader->line_number()};
-  if (!more) return where->Error(Cat("missing ", what));
-  if (f->has_empty) return where->Error("empty field");
-  if (f->count < min_fields) {
-    return where->Error(
-        Cat("expected ", min_fields, " fields for ", what, ", got ", f->count));
-  }
-  return Status::OK();
-}
-
-}  // namespace
 
 Status ParsePolyText(std::string_view text, std::string_view filename,
                      Dataset* out, const DatasetLimits& limits) {

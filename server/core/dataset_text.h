@@ -192,6 +192,17 @@ struct NodeSection {
   long long first_index = 0;
 };
 
+// Reads a section header "<count> [more fields...]" of at most `max_fields`
+// fields; `what` names the expected header in the error.
+Status ReadCount(FieldReader* reader, std::string_view filename,
+                 size_t max_fields, std::string_view what, size_t* count);
+
+// Reads the next content line of a section into *f, with at least
+// `min_fields` fields; `what` names the row in errors. *where is its line.
+Status ReadRow(FieldReader* reader, std::string_view filename,
+               size_t min_fields, std::string_view what, Fields* f,
+               Where* where);
+
 // Reads Triangle's node section, a header "<#points> <dim> <#attributes>
 // <#markers>" and its points (indices consecutive), into `ds`; the first
 // attribute, if any, is the value.

@@ -2,12 +2,14 @@
 // rings, and the crossings between constraints (see triangulation_builder.h).
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <numeric>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -25,7 +27,13 @@ double Distance(const Point2& a, const Point2& b) {
 }  // namespace
 
 std::string Triangulation::Builder::PointText(const Point2& p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+  // The shortest text that reads back as the same double.
+  const auto shortest = [](double v) {
+    char text[32];
+    const auto [end, error] = std::to_chars(text, text + sizeof(text), v);
+    return std::string(text, error == std::errc() ? end : text);
+  };
+  return "(" + shortest(p.x) + ", " + shortest(p.y) + ")";
 }
 
 Status Triangulation::Builder::InsertPoints() {
@@ -179,7 +187,10 @@ Status Triangulation::Builder::InsertConstraints() {
 }
 
 Status Triangulation::Builder::NameCrossings() {
-  // Which input segment claimed each crossing vertex first.
+  // Which input segment claimed each crossing vertex first. A dataset point
+  // inside a domain boundary segment (not one of its endpoints) is claimed
+  // too, so that two boundaries crossing at a dataset point are caught like
+  // those crossing anywhere else; boundaries may still touch at endpoints.
   std::map<Vertex_handle, size_t> claimed;
   for (size_t k = 0; k < segments_.size(); ++k) {
     const InputSegment& segment = segments_[k];
@@ -190,8 +201,11 @@ Status Triangulation::Builder::NameCrossings() {
     const Vertex_handle a = chain.front();
     const Vertex_handle b = chain.back();
     for (const Vertex_handle v : chain) {
-      if (v->info().id >= 0 && !claimed.count(v)) continue;
+      const bool created = v->info().id < 0;
+      const bool inside_boundary = v != a && v != b && IsBoundary(segment.kind);
+      if (!created && !inside_boundary) continue;
       const auto [where, fresh] = claimed.emplace(v, k);
+      if (fresh && !created) continue;
       if (fresh) {
         const double ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
         const double av = Distance(FromCgal(a->point()), FromCgal(v->point()));

@@ -268,8 +268,23 @@ TEST(DomainTest, BadConstraintsArePreciseErrors) {
   Dataset bowtie = GenerateUniform(100, 1);
   bowtie.constraints.rings.push_back(
       Polyline{{{0.1, 0.1}, {0.9, 0.9}, {0.9, 0.1}, {0.1, 0.9}}, {}});
-  EXPECT_NE(BuildError(bowtie).find("cross at (0.500000, 0.500000)"),
-            std::string::npos);
+  EXPECT_NE(BuildError(bowtie).find("cross at (0.5, 0.5)"), std::string::npos);
+
+  // The same bow-tie crossing at a dataset point: still a crossing.
+  Dataset bowtie_at_point = bowtie;
+  bowtie_at_point.points.push_back({0.5, 0.5});
+  EXPECT_NE(BuildError(bowtie_at_point)
+                .find("ring 0 segment 0 and ring 0 segment 2 cross at "
+                      "(0.5, 0.5): a domain boundary must not intersect "
+                      "itself"),
+            std::string::npos)
+      << BuildError(bowtie_at_point);
+  // Two rings touching at a corner are fine (a hole may touch its shell).
+  Dataset touching = GenerateUniform(100, 1);
+  touching.constraints.rings.push_back(Square(0.1, 0.9));
+  touching.constraints.rings.push_back(
+      Polyline{{{0.1, 0.1}, {0.5, 0.3}, {0.3, 0.5}}, {}});
+  EXPECT_TRUE(BuildOk(touching));
 
   Dataset seed_outside = GenerateUniform(100, 1);
   seed_outside.constraints.rings.push_back(Square(0.2, 0.4));

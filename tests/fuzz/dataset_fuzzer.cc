@@ -1,12 +1,16 @@
 // Fuzzes the dataset parsers: every input is parsed as CSV/XYZ text, as
-// Triangle .node text and as Triangle .poly text, with the limits locatord
-// uses.
+// Triangle .node, .poly and .ele text (the .ele against a fixed .node of four
+// points numbered from 1) and as OFF text, with the limits locatord uses,
+// and as a WKT constraints file.
 //
 // Aborts unless each parse either
 //   - succeeds with at least one point, finite coordinates and values, values
-//     empty or one per point, and a dataset that survives a round trip: the
+//     empty or one per point, mesh corners that name points, and a dataset
+//     that survives a round trip: the
 //     points written back as CSV with 17 significant digits parse to exactly
 //     the same doubles; or
+//     (for WKT: polylines of at least 2 points, rings of at least 3,
+//     finite coordinates and values, values empty or one per point); or
 //   - fails with InvalidArgument or ResourceExhausted and a message that
 //     starts with the file name, followed by ": " or by ":LINE: " with LINE a
 //     line of the input.
@@ -18,6 +22,7 @@
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "server/core/dataset.h"
 
@@ -27,12 +32,22 @@ namespace {
 constexpr std::string_view kCsvName = "fuzz.csv";
 constexpr std::string_view kNodeName = "fuzz.node";
 constexpr std::string_view kPolyName = "fuzz.poly";
+constexpr std::string_view kOffName = "fuzz.off";
+constexpr std::string_view kEleName = "fuzz.ele";
+constexpr std::string_view kWktName = "fuzz.wkt";
+constexpr std::string_view kEleNodes =
+    "4 2 1 0\n1 0 0 5\n2 1 0 6\n3 0 1 7\n4 1 1 8\n";
 
 void Fail(std::string_view what, const Status& status) {
   std::fprintf(stderr, "dataset_fuzzer: %.*s (%s)\n",
                static_cast<int>(what.size()), what.data(),
                status.ToString().c_str());
   std::abort();
+}
+
+Status ParseEleAgainstFixedNodes(std::string_view text, std::string_view name,
+                                 Dataset* ds, const DatasetLimits& limits) {
+  return ParseEleText(text, name, kEleNodes, "fuzz.node", ds, limits);
 }
 
 // 1-based lines in `text` as FieldReader counts them.
@@ -104,6 +119,11 @@ void CheckDataset(const Dataset& ds) {
   for (double v : ds.values) {
     if (!std::isfinite(v)) Fail("parsed a non-finite value", ok);
   }
+  for (const auto& triangle : ds.constraints.triangles) {
+    for (uint32_t corner : triangle) {
+      if (corner >= ds.points.size()) Fail("a mesh corner names no point", ok);
+    }
+  }
   Dataset again;
   const Status reparsed = ParseXyzText(ToCsv(ds), kCsvName, &again);
   if (!reparsed.ok()) Fail("its own CSV does not parse", reparsed);
@@ -121,6 +141,30 @@ void Check(Parser parse, std::string_view text, std::string_view name) {
   }
 }
 
+void CheckPolylines(const std::vector<Polyline>& lines, size_t min_points) {
+  const Status ok;
+  for (const Polyline& line : lines) {
+    if (line.points.size() < min_points) Fail("a polyline too short", ok);
+    if (!line.values.empty() && line.values.size() != line.points.size()) {
+      Fail("polyline values not parallel to its points", ok);
+    }
+    for (const Point2& p : line.points) {
+      if (!IsFinite(p)) Fail("parsed a non-finite WKT coordinate", ok);
+    }
+    for (double v : line.values) {
+      if (!std::isfinite(v)) Fail("parsed a non-finite WKT z", ok);
+    }
+  }
+}
+
+void CheckWkt(std::string_view text) {
+  DatasetConstraints c;
+  const Status status = ParseWktConstraints(text, kWktName, &c);
+  if (!status.ok()) return CheckError(status, text, kWktName);
+  CheckPolylines(c.breaklines, 2);
+  CheckPolylines(c.rings, 3);
+}
+
 }  // namespace
 }  // namespace locator
 
@@ -129,5 +173,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   locator::Check(locator::ParseXyzText, text, locator::kCsvName);
   locator::Check(locator::ParseNodeText, text, locator::kNodeName);
   locator::Check(locator::ParsePolyText, text, locator::kPolyName);
+  locator::Check(locator::ParseOffText, text, locator::kOffName);
+  locator::Check(locator::ParseEleAgainstFixedNodes, text, locator::kEleName);
+  locator::CheckWkt(text);
   return 0;
 }

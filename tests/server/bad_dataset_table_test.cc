@@ -1,10 +1,8 @@
-// The bad-input table, part 2: datasets. One row per kind of dataset an
-// operator can hand locatord: the file (or generator spec), the flags, and
-// the outcome. A refused dataset makes locatord exit 1 with a message naming
-// the file (and the line, where one line is at fault) and the problem; a
-// served one must answer a normal Locate and pass the row's check. Requests
-// are part 1 (bad_input_table_test.cc). GIS sources have rows here too;
-// all their errors are in tests/common/gis/ogr_dataset_test.cc.
+// The bad-input table, part 2: datasets (the harness is dataset_table.h).
+// One row per kind of point file, limit and GIS source an operator can hand
+// locatord; domains and meshes are bad_domain_table_test.cc, requests part 1
+// (bad_input_table_test.cc). All the GIS sources' errors are in
+// tests/common/gis/ogr_dataset_test.cc.
 //
 // 10^7 points: with the default --max-dataset-points (10^7) locatord serves
 // uniform:10000000 in ~40 s and ~1.8 GB resident on the 2-core CI machine,
@@ -15,51 +13,16 @@
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "tests/server/e2e_support.h"
+#include "tests/server/dataset_table.h"
 
 namespace locator::test {
 namespace {
-
-using ::testing::HasSubstr;
-
-constexpr auto kExitTimeout = std::chrono::seconds(60);
-
-struct DatasetRow {
-  std::string name;
-  // What the dataset is, for the failure message.
-  std::string input;
-  // The file's name and contents; with an empty name, `contents` is passed
-  // to --dataset as it is (a generator spec or a path that does not exist).
-  std::string file_name;
-  std::string contents;
-  std::vector<std::string> flags;
-  // 1: locatord refuses the dataset; 0: it serves it.
-  int exit_code;
-  // Refused: a substring of stderr; "{file}" stands for the dataset's path.
-  std::string message;
-  // Served: what else must hold (GetStats, answers against CGAL).
-  std::function<void(const ServerProcess&, const std::string& dataset)> check =
-      nullptr;
-};
-
-void PrintTo(const DatasetRow& row, std::ostream* out) { *out << row.input; }
-
-std::string Lines(int count, const std::function<std::string(int)>& line) {
-  std::string text;
-  for (int i = 0; i < count; ++i) text += line(i) + "\n";
-  return text;
-}
 
 // The corners of a tiny 5x5 grid at the origin (spacing 1e-300), points
 // 1e300 away in every direction and a few in between: triangles whose sides
@@ -105,8 +68,7 @@ void ExpectHugeRangeAnswersAgreeWithCgal(const ServerProcess& server,
     const LocateResult got = FromLocateResponse(response);
     const LocateResult want = reference->Locate(q);
     EXPECT_EQ(got.type, want.type) << q.x << ", " << q.y;
-    EXPECT_TRUE(reference->Agrees(q, got, want))
-        << q.x << ", " << q.y;
+    EXPECT_TRUE(reference->Agrees(q, got, want)) << q.x << ", " << q.y;
     if (got.type == LocationType::kOutsideConvexHull) continue;
     const double sum =
         got.barycentric[0] + got.barycentric[1] + got.barycentric[2];
@@ -305,7 +267,7 @@ std::vector<DatasetRow> DatasetRows() {
        GeoJson(R"({"type":"LineString","coordinates":[[0,0],[1,1]]})"),
        {},
        1,
-       "_line': feature 0: a LINESTRING where points are expected (Point, "
+       "'line': feature 0: a LINESTRING where points are expected (Point, "
        "MultiPoint)"},
       {"GisEmptyLayer",
        "a GeoJSON FeatureCollection without features",
@@ -313,7 +275,7 @@ std::vector<DatasetRow> DatasetRows() {
        GeoJson(""),
        {},
        1,
-       "_empty' has no features"},
+       "'empty' has no features"},
       {"GisServedWithCrs",
        "GeoJSON points with Z (served; GetStats names its CRS, WGS 84)",
        "points.geojson",
@@ -334,60 +296,12 @@ std::vector<DatasetRow> DatasetRows() {
   };
 }
 
-class BadDatasetTableTest : public ::testing::TestWithParam<DatasetRow> {
- protected:
-  void TearDown() override {
-    if (!path_.empty()) std::remove(path_.c_str());
-  }
-
-  // The --dataset argument for the row, writing its file if it has one.
-  std::string Dataset(const DatasetRow& row) {
-    if (row.file_name.empty()) return row.contents;
-    path_ = ::testing::TempDir() + "bad_dataset_" + std::to_string(getpid()) +
-            "_" + row.file_name;
-    std::ofstream(path_, std::ios::binary) << row.contents;
-    return path_;
-  }
-
-  std::string path_;
-};
-
-std::string WithFile(std::string message, const std::string& path) {
-  const size_t at = message.find("{file}");
-  if (at != std::string::npos) message.replace(at, 6, path);
-  return message;
+TEST_P(DatasetTableTest, RefusedNamingTheProblemOrServed) {
+  RunRow(GetParam());
 }
 
-TEST_P(BadDatasetTableTest, RefusedNamingTheProblemOrServed) {
-  const DatasetRow& row = GetParam();
-  const std::string dataset = Dataset(row);
-  std::vector<std::string> args = {"--dataset", dataset, "--listen",
-                                   "127.0.0.1:0"};
-  args.insert(args.end(), row.flags.begin(), row.flags.end());
-  std::unique_ptr<ServerProcess> server;
-  ASSERT_TRUE(ServerProcess::Spawn(LOCATORD_PATH, args, &server).ok());
-  // It listens first, whatever the dataset, then loads it.
-  ASSERT_TRUE(server->WaitForListening().ok()) << row.input;
-  if (row.exit_code != 0) {
-    EXPECT_EQ(server->WaitForExit(kExitTimeout), row.exit_code) << row.input;
-    EXPECT_THAT(server->StderrText(), HasSubstr(WithFile(row.message, dataset)))
-        << row.input;
-    return;
-  }
-  const Status serving = server->WaitUntilServing();
-  ASSERT_TRUE(serving.ok()) << row.input << ": " << serving.ToString();
-  auto stub = NewStub(*server);
-  v1::LocateResponse response;
-  const grpc::Status status = LocateOne(*stub, {0.5, 0.25}, &response);
-  EXPECT_TRUE(status.ok()) << status.error_message();
-  row.check(*server, dataset);
-}
-
-INSTANTIATE_TEST_SUITE_P(Datasets, BadDatasetTableTest,
-                         ::testing::ValuesIn(DatasetRows()),
-                         [](const ::testing::TestParamInfo<DatasetRow>& info) {
-                           return info.param.name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Datasets, DatasetTableTest,
+                         ::testing::ValuesIn(DatasetRows()), RowName);
 
 }  // namespace
 }  // namespace locator::test

@@ -229,6 +229,10 @@ LocateResult FromLocateResponse(const v1::LocateResponse& response) {
        ++end) {
     result.hull_edge_ids[end] = response.hull_edge_vertex_ids(end);
   }
+  for (int end = 0; end < response.domain_edge_vertex_ids_size() && end < 2;
+       ++end) {
+    result.domain_edge_ids[end] = response.domain_edge_vertex_ids(end);
+  }
   result.has_value = response.has_value();
   result.value = response.value();
   return result;
@@ -330,6 +334,10 @@ std::string Reference::Disagreement(const Point2& q, const LocateResult& got,
     return "triangle " + std::to_string(got.triangle_id) + ", CGAL says " +
            std::to_string(want.triangle_id);
   }
+  // A batch answer names no domain edge: the type is all there is.
+  if (want.type == LocationType::kOutsideDomain && !hull_edge_known) {
+    return got.has_value ? "a value outside the domain" : "";
+  }
   bool agrees = triangulation_->Agrees(q, got, want);
   if (!hull_edge_known && want.type == LocationType::kOutsideConvexHull) {
     // Some edge of the hull triangle, taken counter-clockwise, must see q.
@@ -341,8 +349,9 @@ std::string Reference::Disagreement(const Point2& q, const LocateResult& got,
     }
   }
   if (!agrees) return "not the location CGAL reports";
-  if (want.type == LocationType::kOutsideConvexHull) {
-    return got.has_value ? "a value outside the hull" : "";
+  if (want.type == LocationType::kOutsideConvexHull ||
+      want.type == LocationType::kOutsideDomain) {
+    return got.has_value ? "a value outside the hull or the domain" : "";
   }
   const double weight_sum =
       got.barycentric[0] + got.barycentric[1] + got.barycentric[2];

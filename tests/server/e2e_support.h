@@ -115,10 +115,12 @@ class Reference {
               const LocateResult& want) const;
 
   // Checks answers[i] for queries[i]: same type, Triangulation::Agrees, the
-  // same triangle id for FACE, and (inside the hull) barycentric weights and
-  // values consistent with the dataset. A batch answer has no hull edge; for
-  // it (`hull_edge_known` false) some edge of the reported hull triangle
-  // must see q. Returns the first few disagreements, "" if there are none.
+  // same triangle id for FACE, no value OUTSIDE_DOMAIN, and (inside the hull
+  // and the domain) barycentric weights and values consistent with the
+  // dataset. A batch answer names no hull or domain edge; for it
+  // (`hull_edge_known` false) some edge of the reported hull triangle must
+  // see q, and OUTSIDE_DOMAIN is checked by its type. Returns the first few
+  // disagreements, "" if there are none.
   std::string Disagreements(std::span<const Point2> queries,
                             std::span<const LocateResult> answers,
                             bool hull_edge_known) const;

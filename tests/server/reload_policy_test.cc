@@ -88,6 +88,36 @@ TEST_F(ReloadPolicyTest, FilesInsideTheReloadDirResolveToTheirRealPath) {
   EXPECT_EQ(Resolved(policy, "alias.csv"), points);
 }
 
+TEST_F(ReloadPolicyTest, AMeshIsAllowedOnlyWithItsNodeFileInside) {
+  const ReloadPolicy policy("uniform:300:7", dir_);
+  std::ofstream(dir_ + "/mesh.ele") << "1 3 0\n1 1 2 3\n";
+  // Without its .node the .ele is refused like a missing file.
+  EXPECT_EQ(Resolved(policy, "mesh.ele"), "denied");
+  std::ofstream(dir_ + "/mesh.node") << "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n";
+  EXPECT_EQ(Resolved(policy, "mesh.ele"), Canonical(dir_ + "/mesh.ele"));
+  // A .node that links outside takes the .ele with it.
+  std::ofstream(dir_ + "/leak.ele") << "1 3 0\n1 1 2 3\n";
+  std::ofstream(root_.path() + "/leak.node") << "3 2 0 0\n";
+  fs::create_symlink(root_.path() + "/leak.node", dir_ + "/leak.node");
+  EXPECT_EQ(Resolved(policy, "leak.ele"), "denied");
+}
+
+TEST_F(ReloadPolicyTest, PointsPlusWktNeedBothInside) {
+  const ReloadPolicy policy("uniform:300:7", dir_);
+  std::ofstream(dir_ + "/lake.wkt") << "POLYGON ((0 0, 1 0, 0 1, 0 0))\n";
+  std::ofstream(root_.path() + "/outside.wkt") << "LINESTRING (0 0, 1 1)\n";
+  const std::string lake = Canonical(dir_ + "/lake.wkt");
+  EXPECT_EQ(Resolved(policy, "points.csv+lake.wkt"),
+            Canonical(dir_ + "/points.csv") + "+" + lake);
+  EXPECT_EQ(Resolved(policy, "uniform:500:1+lake.wkt"),
+            "uniform:500:1+" + lake);
+  EXPECT_EQ(Resolved(policy, "points.csv+../outside.wkt"), "denied");
+  EXPECT_EQ(Resolved(policy, "points.csv+" + root_.path() + "/outside.wkt"),
+            "denied");
+  EXPECT_EQ(Resolved(policy, secret_ + "+lake.wkt"), "denied");
+  EXPECT_EQ(Resolved(policy, "points.csv+missing.wkt"), "denied");
+}
+
 TEST_F(ReloadPolicyTest, GeneratorSpecsNeedAReloadDir) {
   const ReloadPolicy policy("uniform:300:7", dir_);
   EXPECT_EQ(Resolved(policy, "uniform:500:1"), "uniform:500:1");

@@ -1,0 +1,199 @@
+// Meshes served as given: OFF and Triangle's .ele + .node, parsed exactly as
+// written, every error naming its file and line, and served with exactly the
+// given triangles in the domain.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "server/core/dataset.h"
+#include "server/core/triangulation.h"
+#include "tests/core/scratch_dir.h"
+
+namespace locator {
+namespace {
+
+using Triangles = std::vector<std::array<uint32_t, 3>>;
+
+// A fan of three triangles around (0, 0), covering a pentagon.
+constexpr std::string_view kLOff =
+    "OFF\n"
+    "# a fan\n"
+    "5 3 0\n"
+    "0 0 10\n"
+    "2 0 20\n"
+    "0 2 30\n"
+    "2 1 40\n"
+    "1 2 50\n"
+    "3 0 1 3\n"
+    "3 0 3 4\n"
+    "3 0 4 2\n";
+
+std::string OffError(std::string_view text) {
+  Dataset ds;
+  const Status s = ParseOffText(text, "m.off", &ds);
+  EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+  return s.message();
+}
+
+TEST(ParseOffTextTest, VerticesValuesAndFacesAsWritten) {
+  Dataset ds;
+  ASSERT_TRUE(ParseOffText(kLOff, "m.off", &ds).ok());
+  ASSERT_EQ(ds.points.size(), 5u);
+  EXPECT_EQ(ds.points[3].x, 2);
+  EXPECT_EQ(ds.points[3].y, 1);
+  EXPECT_EQ(ds.values, (std::vector<double>{10, 20, 30, 40, 50}));
+  EXPECT_EQ(ds.constraints.triangles,
+            (Triangles{{0, 1, 3}, {0, 3, 4}, {0, 4, 2}}));
+}
+
+TEST(ParseOffTextTest, CountsOnTheHeaderLineAndFaceColours) {
+  Dataset ds;
+  ASSERT_TRUE(ParseOffText("OFF 3 1 3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
+                           "m.off", &ds)
+                  .ok());
+  EXPECT_EQ(ds.values, (std::vector<double>{0, 0, 0}));
+  EXPECT_EQ(ds.constraints.triangles, (Triangles{{0, 1, 2}}));
+}
+
+TEST(ParseOffTextTest, ErrorsNameFileAndLine) {
+  const std::string kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_EQ(OffError("PLY\n3 1 0\n"), "m.off:1: expected the header 'OFF'");
+  EXPECT_EQ(OffError("OFF\n3 1\n"),
+            "m.off:2: expected counts '<#vertices> <#faces> <#edges>'");
+  EXPECT_EQ(OffError(kTriangle + "4 0 1 2 0\n"),
+            "m.off:6: only triangles are served; face 0 has 4 corners");
+  EXPECT_EQ(OffError(kTriangle + "3 0 1 3\n"),
+            "m.off:6: face 0 refers to vertex 3, which is not among the 3 "
+            "vertices numbered from 0");
+  EXPECT_EQ(OffError(kTriangle + "3 0 1\n"),
+            "m.off:6: face 0 lists 2 of its 3 corners");
+  EXPECT_EQ(OffError(kTriangle), "m.off:5: missing face 0");
+  EXPECT_EQ(OffError("OFF\n3 1 0\n0 0 0\n1 nan 0\n"),
+            "m.off:4: non-finite coordinate 'nan'");
+  EXPECT_EQ(OffError("OFF\n3 1 0\n0 0 0\n1 0\n"),
+            "m.off:4: expected 3 fields for vertex 1 'x y z', got 2");
+  EXPECT_EQ(OffError(kTriangle + "3 0 1 2\n3 0 1 2\n"),
+            "m.off:7: unexpected line after the 1 faces");
+  EXPECT_EQ(OffError(""), "m.off: empty dataset (no points)");
+}
+
+// The fan as Triangle writes it: nodes numbered from 1, one attribute (the
+// value) and a boundary marker; the .ele with 6 nodes per triangle (only the
+// corners count) and one attribute.
+constexpr std::string_view kLNode =
+    "5 2 1 1\n"
+    "1 0 0 10 1\n"
+    "2 2 0 20 1\n"
+    "3 0 2 30 1\n"
+    "4 2 1 40 1\n"
+    "5 1 2 50 1\n";
+constexpr std::string_view kLEle =
+    "3 6 1\n"
+    "1 1 2 4 9 9 9 0.5\n"
+    "2 1 4 5 9 9 9 0.5\n"
+    "3 1 5 3 9 9 9 0.5\n";
+
+std::string EleError(std::string_view ele) {
+  Dataset ds;
+  const Status s = ParseEleText(ele, "m.ele", kLNode, "m.node", &ds);
+  EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+  return s.message();
+}
+
+TEST(ParseEleTextTest, TrianglesNumberedLikeTheNodeFile) {
+  Dataset ds;
+  ASSERT_TRUE(ParseEleText(kLEle, "m.ele", kLNode, "m.node", &ds).ok());
+  EXPECT_EQ(ds.points.size(), 5u);
+  EXPECT_EQ(ds.values, (std::vector<double>{10, 20, 30, 40, 50}));
+  EXPECT_EQ(ds.constraints.triangles,
+            (Triangles{{0, 1, 3}, {0, 3, 4}, {0, 4, 2}}));
+}
+
+TEST(ParseEleTextTest, ErrorsNameFileAndLine) {
+  EXPECT_EQ(EleError("1 3 0\n1 1 2 812\n"),
+            "m.ele:2: triangle 0 refers to node 812, which is not among the 5 "
+            "nodes numbered from 1 in m.node");
+  EXPECT_EQ(EleError("1 4 0\n"),
+            "m.ele:1: nodes per triangle must be 3 or 6, got 4");
+  EXPECT_EQ(EleError("1 3\n"),
+            "m.ele:1: expected header '<#triangles> <nodes per triangle> "
+            "<#attributes>'");
+  EXPECT_EQ(EleError("2 3 0\n1 1 2 4\n"), "m.ele:2: missing triangle 1");
+  EXPECT_EQ(EleError("1 3 1\n1 1 2 4\n"),
+            "m.ele:2: expected 5 fields (index, 3 nodes, 1 attribute(s)) as "
+            "declared on line 1, got 4");
+  EXPECT_EQ(EleError("1 3 0\n1 1 2 4\n2 1 4 5\n"),
+            "m.ele:3: unexpected line after the 1 triangles");
+  Dataset ds;
+  const Status node_error = ParseEleText(
+      "1 3 0\n1 1 2 3\n", "m.ele", "3 2 0 0\n1 0 0\n2 1 0\n", "m.node", &ds);
+  EXPECT_EQ(node_error.message(),
+            "m.node:3: found only 2 of the 3 points "
+            "declared on line 1");
+}
+
+void WriteFile(const std::string& path, std::string_view text) {
+  std::ofstream(path) << text;
+}
+
+TEST(LoadDatasetTest, EleReadsTheNodeFileBesideIt) {
+  test::ScratchDir dir;
+  WriteFile(dir.path() + "/l.ele", kLEle);
+  Dataset ds;
+  const Status missing = LoadDataset(dir.path() + "/l.ele", &ds);
+  EXPECT_EQ(missing.code(), Status::Code::kNotFound);
+  EXPECT_NE(missing.message().find("node file of '" + dir.path() + "/l.ele' '" +
+                                   dir.path() + "/l.node'"),
+            std::string::npos)
+      << missing.message();
+  WriteFile(dir.path() + "/l.node", kLNode);
+  ASSERT_TRUE(LoadDataset(dir.path() + "/l.ele", &ds).ok());
+  EXPECT_EQ(ds.constraints.triangles.size(), 3u);
+  EXPECT_EQ(ds.source, dir.path() + "/l.ele");
+}
+
+// Writes `off` to a scratch file and builds its triangulation.
+Status BuildOff(std::string_view off, std::unique_ptr<Triangulation>* t) {
+  test::ScratchDir dir;
+  const std::string path = dir.path() + "/mesh.off";
+  WriteFile(path, off);
+  Dataset ds;
+  const Status loaded = LoadDataset(path, &ds);
+  return loaded.ok() ? Triangulation::Build(ds, t) : loaded;
+}
+
+TEST(LoadDatasetTest, OffMeshIsServedAsGiven) {
+  // An L of four triangles around (0, 0); its notch x > 1, y > 1 is inside
+  // the convex hull (bounded by the edge (2 1)-(1 2)) but in no triangle.
+  std::unique_ptr<Triangulation> t;
+  ASSERT_TRUE(BuildOff("OFF\n6 4 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
+                       "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n",
+                       &t)
+                  .ok());
+  EXPECT_EQ(t->num_triangles(), 4u);
+  EXPECT_EQ(t->ReferenceLocate({1.4, 1.4}).type, LocationType::kOutsideDomain);
+  EXPECT_EQ(t->ReferenceLocate({1.0, 0.25}).type, LocationType::kFace);
+  EXPECT_EQ(t->ReferenceLocate({2, 1}).type, LocationType::kVertex);
+}
+
+TEST(LoadDatasetTest, NonManifoldOffIsRefused) {
+  // Three triangles on the edge 0-1.
+  std::unique_ptr<Triangulation> t;
+  const Status s = BuildOff(
+      "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 2 0\n"
+      "3 0 1 2\n3 0 1 3\n3 0 1 4\n",
+      &t);
+  EXPECT_EQ(s.code(), Status::Code::kInvalidArgument);
+  EXPECT_NE(s.message().find("mesh edge (0 1) is shared by triangles 0, 1 "
+                             "and 2 (not a manifold)"),
+            std::string::npos)
+      << s.message();
+}
+
+}  // namespace
+}  // namespace locator
