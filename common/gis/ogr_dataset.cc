@@ -9,8 +9,9 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <mutex>
 #include <utility>
+
+#include "common/gis/gdal_support.h"
 
 namespace locator::gis {
 namespace {
@@ -29,14 +30,8 @@ struct Where {
   }
 };
 
-std::string GdalError() {
-  const char* message = CPLGetLastErrorMsg();
-  return message != nullptr && *message != '\0' ? message : "no detail";
-}
-
 Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
-  static std::once_flag registered;
-  std::call_once(registered, [] { GDALAllRegister(); });
+  RegisterGdalDrivers();
   CPLStringList open_options;
   for (const std::string& option : spec.open_options) {
     open_options.AddString(option.c_str());
@@ -51,7 +46,7 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
     return Status::NotFound(spec.source + ": no such file or directory");
   }
   return Status::InvalidArgument(
-      spec.source + ": not a readable OGR vector source: " + GdalError());
+      spec.source + ": not a readable OGR vector source: " + LastGdalError());
 }
 
 std::string LayerNames(GDALDataset& source) {
@@ -123,7 +118,7 @@ class PointReader {
       CPLErrorReset();
       if (layer.SetAttributeFilter(spec.where.c_str()) != OGRERR_NONE) {
         return Status::InvalidArgument(where_.Prefix() + ": bad where '" +
-                                       spec.where + "': " + GdalError());
+                                       spec.where + "': " + LastGdalError());
       }
     }
     if (!spec.z_field.empty()) {
@@ -325,7 +320,7 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
         OGRERR_NONE) {
       return Status::InvalidArgument(spec.source + ": unknown CRS '" +
                                      spec.assigned_crs +
-                                     "' (a_srs): " + GdalError());
+                                     "' (a_srs): " + LastGdalError());
     }
     *wkt = ToWkt(srs);
     return Status::OK();
