@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -82,31 +81,6 @@ std::vector<Point2> LonLatQueries() {
     }
   }
   return points;
-}
-
-// `points` transformed by cs2cs from `from` to `to`, both lon/lat or
-// easting/northing CRSs; cs2cs takes and gives EPSG:4326 as lat, lon.
-std::vector<Point2> Cs2cs(const std::vector<Point2>& points,
-                          const std::string& from, const std::string& to,
-                          const std::string& dir) {
-  const bool lat_lon_in = from == "EPSG:4326", lat_lon_out = to == "EPSG:4326";
-  std::ostringstream input;
-  input.precision(17);
-  for (const Point2& p : points) {
-    input << (lat_lon_in ? p.y : p.x) << " " << (lat_lon_in ? p.x : p.y)
-          << "\n";
-  }
-  const std::string path = dir + "/cs2cs_input.txt";
-  gis::testing::WriteFile(path, input.str());
-  std::istringstream output(
-      gis::testing::RunTool(CS2CS_PATH, {"-f", "%.12f", from, to, path}));
-  std::vector<Point2> out;
-  double a, b, height;
-  while (output >> a >> b >> height) {
-    out.push_back(lat_lon_out ? Point2{b, a} : Point2{a, b});
-  }
-  EXPECT_EQ(out.size(), points.size());
-  return out;
 }
 
 v1::LocateRequest LonLatRequest(const Point2& q, bool vertices_in_lon_lat) {
@@ -196,7 +170,7 @@ TEST_F(LocatordGisTest, ReloadTakesGisSpecsAndNamesTheirErrors) {
 TEST_F(LocatordGisTest, LonLatRequestsMatchPointsProjectedByCs2cs) {
   const std::vector<Point2> lon_lat = LonLatQueries();
   const std::vector<Point2> utm =
-      Cs2cs(lon_lat, "EPSG:4326", "EPSG:32633", dir_->path());
+      gis::testing::Cs2cs(lon_lat, "EPSG:4326", "EPSG:32633", dir_->path());
   ASSERT_EQ(utm.size(), lon_lat.size());
   v1::LocateBatchRequest batch = BatchRequestFor(lon_lat);
   batch.set_crs("EPSG:4326");
@@ -246,8 +220,8 @@ TEST_F(LocatordGisTest, VerticesComeBackInTheRequestCrs) {
   for (const v1::Point& v : in_dataset_crs.vertices()) {
     utm_vertices.push_back({v.x(), v.y()});
   }
-  const std::vector<Point2> expected =
-      Cs2cs(utm_vertices, "EPSG:32633", "EPSG:4326", dir_->path());
+  const std::vector<Point2> expected = gis::testing::Cs2cs(
+      utm_vertices, "EPSG:32633", "EPSG:4326", dir_->path());
   ASSERT_EQ(in_lon_lat.vertices_size(), 3);
   ASSERT_EQ(expected.size(), 3u);
   for (int corner = 0; corner < 3; ++corner) {
@@ -262,7 +236,7 @@ TEST_F(LocatordGisTest, StreamRequestsCarryTheirCrs) {
   const Point2 q{15.001, 49.651};
   ASSERT_TRUE(stream->Write(LonLatRequest(q, false)));
   v1::LocateRequest plain = LocateRequestFor(
-      Cs2cs({q}, "EPSG:4326", "EPSG:32633", dir_->path()).at(0));
+      gis::testing::Cs2cs({q}, "EPSG:4326", "EPSG:32633", dir_->path()).at(0));
   ASSERT_TRUE(stream->Write(plain));
   ASSERT_TRUE(stream->WritesDone());
   v1::LocateResponse first, second;

@@ -53,6 +53,29 @@ void Ogr2Ogr(const std::vector<std::string>& args) {
   RunTool(OGR2OGR_PATH, args);
 }
 
+std::vector<Point2> Cs2cs(const std::vector<Point2>& points,
+                          const std::string& from, const std::string& to,
+                          const std::string& dir) {
+  const bool lat_lon_in = from == "EPSG:4326", lat_lon_out = to == "EPSG:4326";
+  std::ostringstream input;
+  input.precision(17);
+  for (const Point2& p : points) {
+    input << (lat_lon_in ? p.y : p.x) << " " << (lat_lon_in ? p.x : p.y)
+          << "\n";
+  }
+  const std::string path = dir + "/cs2cs_input.txt";
+  WriteFile(path, input.str());
+  std::istringstream output(
+      RunTool(CS2CS_PATH, {"-f", "%.12f", from, to, path}));
+  std::vector<Point2> out;
+  double a, b, height;
+  while (output >> a >> b >> height) {
+    out.push_back(lat_lon_out ? Point2{b, a} : Point2{a, b});
+  }
+  EXPECT_EQ(out.size(), points.size());
+  return out;
+}
+
 std::vector<PointZ> UtmHill(int n) {
   constexpr double kCenterX = 500000, kCenterY = 5500000;
   constexpr double kSpacing = 400, kSigma = 1500;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry.h"
+
 namespace locator::gis::testing {
 
 struct PointZ {
@@ -34,6 +36,13 @@ void Ogr2Ogr(const std::vector<std::string>& args);
 // failed run fails the test with its stderr.
 std::string RunTool(const std::string& program,
                     const std::vector<std::string>& args);
+
+// `points` transformed by the real cs2cs from `from` to `to` (both lon/lat
+// or easting/northing CRSs; cs2cs takes and gives EPSG:4326 as lat, lon, and
+// this function swaps them), through a file in `dir`.
+std::vector<Point2> Cs2cs(const std::vector<Point2>& points,
+                          const std::string& from, const std::string& to,
+                          const std::string& dir);
 
 // A hill of `n` x `n` points around (500000, 5500000) in UTM 33N metres:
 // z = 400 + 300 * exp(-r^2 / 2 sigma^2), sigma 1.5 km, spacing 400 m.
