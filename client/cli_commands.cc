@@ -9,14 +9,6 @@
 namespace locator {
 namespace {
 
-// Usage check shared by the commands that take no arguments.
-bool TakesNoArguments(const CliSettings& settings, std::string_view command,
-                      const CliArgs& args) {
-  if (args.empty()) return true;
-  ReportUsageError(settings, std::string(command) + " takes no arguments");
-  return false;
-}
-
 // Makes `call` and prints its answer: as JSON with --json, else as
 // format_text(answer).
 template <typename Response, typename Call, typename FormatText>
@@ -40,6 +32,13 @@ int ReportRpcError(const grpc::Status& status) {
 int ReportUsageError(const CliSettings& settings, std::string_view what) {
   std::cerr << "error: " << what << "\n\n" << settings.usage;
   return kExitUsage;
+}
+
+bool TakesNoArguments(const CliSettings& settings, std::string_view command,
+                      const CliArgs& args) {
+  if (args.empty()) return true;
+  ReportUsageError(settings, std::string(command) + " takes no arguments");
+  return false;
 }
 
 int ReportInputError(std::string_view what) {
@@ -85,13 +84,39 @@ int RunRetune(LocatorClient& client, const CliSettings& settings,
 
 int RunReload(LocatorClient& client, const CliSettings& settings,
               const CliArgs& args) {
-  if (!TakesNoArguments(settings, "reload", args)) return kExitUsage;
+  if (args.size() > 1) {
+    return ReportUsageError(settings, "reload takes at most one SPEC");
+  }
+  const std::string spec = args.empty() ? "" : args[0];
   return CallAndPrint<v1::ReloadResponse>(
       settings,
       [&](v1::ReloadResponse* response) {
-        return client.Reload(settings.dataset, response);
+        return client.Reload(spec, response);
       },
       FormatReload);
+}
+
+int RunDatasets(LocatorClient& client, const CliSettings& settings,
+                const CliArgs& args) {
+  if (!TakesNoArguments(settings, "datasets", args)) return kExitUsage;
+  return CallAndPrint<v1::ListDatasetsResponse>(
+      settings,
+      [&](v1::ListDatasetsResponse* response) {
+        return client.ListDatasets(response);
+      },
+      FormatDatasets);
+}
+
+int RunProfile(LocatorClient& client, const CliSettings& settings,
+               const CliArgs& args) {
+  if (!TakesNoArguments(settings, "profile", args)) return kExitUsage;
+  return CallAndPrint<v1::ProfileResponse>(
+      settings,
+      [&](v1::ProfileResponse* response) {
+        return client.Profile(settings.profile.line, settings.profile.samples,
+                              response);
+      },
+      settings.csv ? ProfileCsv : FormatProfile);
 }
 
 int RunHealth(LocatorClient& client, const CliSettings& settings,

@@ -33,18 +33,25 @@ struct CliLine {
   CliSettings settings;
   ChannelOptions channel;  // its security is loaded later, from `security`
   ChannelSecurityFlags security;
-  // Of every call: --deadline-ms, or 10 minutes for `reload` by default.
+  // --dataset, --crs and --interpolation.
+  RequestScope scope;
+  // Of every call: --deadline-ms, or kLongCallDeadline for `reload` and
+  // `grid` by default.
   std::chrono::milliseconds deadline{5000};
 };
 
-// The default deadline of `reload`: building a triangulation of tens of
-// millions of points takes minutes.
-inline constexpr std::chrono::minutes kReloadDeadline{10};
+// The default deadline of `reload` and `grid`: building a triangulation of
+// tens of millions of points, or rendering a large raster, takes minutes.
+inline constexpr std::chrono::minutes kLongCallDeadline{10};
 
 // Parses `argc`/`argv` into `line` (settings.usage is set even on failure).
 // InvalidArgument with the problem: the flag parser's message, "no command",
-// "unknown command 'X'", "--deadline-ms must be positive", "--chunk must be
-// positive", "--dataset is for reload only".
+// "unknown command 'X'", "--FLAG is for COMMANDS only" for a flag the
+// command does not take, "--deadline-ms must be positive", "--chunk must be
+// positive", a bad --interpolation; for `profile` a missing or bad --line
+// and --json with --csv; for `grid` a missing --out, --outsize and --tr
+// both or neither, a bad --outsize, --tr, --te or --a_nodata, and a --of or
+// --co that gis::CheckRasterFormat rejects.
 Status ParseCliLine(int argc, const char* const* argv, CliLine* line);
 
 }  // namespace locator

@@ -35,11 +35,7 @@ std::string FormatBox(const v1::BoundingBox& box) {
 }
 
 std::string FormatMiB(uint64_t bytes) {
-  std::array<char, 32> text;
-  const auto [end, error] =
-      std::to_chars(text.begin(), text.end(), bytes / kMiB,
-                    std::chars_format::fixed, /*precision=*/1);
-  return StrCat({std::string_view(text.begin(), end), " MiB"});
+  return StrCat({FormatFixed(bytes / kMiB, 1), " MiB"});
 }
 
 // The values, formatted by `format`, separated by spaces.
@@ -66,10 +62,19 @@ std::string FormatDataset(const v1::DatasetStats& dataset) {
                      std::to_string(dataset.triangles()), " triangles"}),
              &out);
   AppendLine("bounds", FormatBox(dataset.bounding_box()), &out);
+  AppendLine("crs", FormatCrs(dataset), &out);
   AppendLine("values", dataset.has_values() ? "yes" : "no", &out);
   AppendLine("build", StrCat({FormatDouble(dataset.build_seconds()), " s"}),
              &out);
   return out;
+}
+
+// `name` without `prefix`; the number for a value newer than this client,
+// which has no name.
+std::string ShortEnumName(std::string name, std::string_view prefix,
+                          int number) {
+  if (name.starts_with(prefix)) name.erase(0, prefix.size());
+  return name.empty() ? std::to_string(number) : name;
 }
 
 // The state file line of a tuning: where, whether restored, why not.
@@ -94,12 +99,29 @@ std::string FormatDouble(double value) {
   return std::string(text.begin(), end);
 }
 
+std::string FormatFixed(double value, int decimals) {
+  std::array<char, 64> text;
+  const auto [end, error] = std::to_chars(text.begin(), text.end(), value,
+                                          std::chars_format::fixed, decimals);
+  // Too long for the buffer (a huge value): the shortest form instead.
+  if (error != std::errc()) return FormatDouble(value);
+  return std::string(text.begin(), end);
+}
+
+std::string FormatCrs(const v1::DatasetStats& stats) {
+  if (!stats.has_crs()) return "none";
+  const v1::CrsStats& crs = stats.crs();
+  if (crs.epsg_code() == 0) return crs.name();
+  return StrCat({crs.name(), " (EPSG:", std::to_string(crs.epsg_code()), ")"});
+}
+
 std::string LocationTypeName(v1::LocationType type) {
-  constexpr std::string_view kPrefix = "LOCATION_TYPE_";
-  std::string name = v1::LocationType_Name(type);
-  if (name.starts_with(kPrefix)) name.erase(0, kPrefix.size());
-  // An enum value newer than this client has no name: show its number.
-  return name.empty() ? std::to_string(static_cast<int>(type)) : name;
+  return ShortEnumName(v1::LocationType_Name(type), "LOCATION_TYPE_", type);
+}
+
+std::string ProfilePointKindName(v1::ProfilePointKind kind) {
+  return ShortEnumName(v1::ProfilePointKind_Name(kind), "PROFILE_POINT_KIND_",
+                       kind);
 }
 
 std::string MessageToJson(const google::protobuf::Message& message) {

@@ -1,7 +1,8 @@
 // locator: command-line client of a locator.v1.Locator server.
 //
-//   locator [--target HOST:PORT] [--deadline-ms N] [--json] [--retry]
-//           [--chunk N] [--token-file F] [--tls-ca F ...] COMMAND [ARGS]
+//   locator [--target HOST:PORT] [--deadline-ms N] [--dataset NAME]
+//           [--json] [--retry] [--token-file F] [--tls-ca F ...]
+//           [command flags] COMMAND [ARGS]
 //
 // Flags may stand anywhere on the line (see client/cli_flags.h). Exit codes
 // are documented in client/cli_commands.h.
@@ -29,7 +30,8 @@ int Main(int argc, char** argv) {
       !loaded.ok()) {
     return ReportInputError(loaded.message());
   }
-  LocatorClient client(CreateLocatorChannel(line.channel), line.deadline);
+  LocatorClient client(CreateLocatorChannel(line.channel), line.deadline,
+                       line.scope);
   return line.command(client, line.settings, line.args);
 }
 

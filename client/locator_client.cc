@@ -5,6 +5,17 @@
 #include "common/grpc_code_name.h"
 
 namespace locator {
+namespace {
+
+// The scope of a request that carries points: all of it.
+template <typename Request>
+void ApplyPointScope(const RequestScope& scope, Request* request) {
+  request->set_dataset(scope.dataset);
+  request->set_crs(scope.crs);
+  request->set_interpolation(scope.interpolation);
+}
+
+}  // namespace
 
 void SetDeadlineFromNow(grpc::ClientContext* context,
                         std::chrono::milliseconds timeout) {
@@ -23,17 +34,37 @@ void RequestColumns(const BatchColumns& columns,
   request->set_include_values(columns.values);
 }
 
+void ApplyScope(const RequestScope& scope, v1::LocateRequest* request) {
+  ApplyPointScope(scope, request);
+}
+
+void ApplyScope(const RequestScope& scope, v1::LocateBatchRequest* request) {
+  ApplyPointScope(scope, request);
+}
+
+void ApplyScope(const RequestScope& scope, v1::ProfileRequest* request) {
+  ApplyPointScope(scope, request);
+}
+
+void ApplyScope(const RequestScope& scope, v1::GridRequest* request) {
+  request->set_dataset(scope.dataset);
+  request->set_interpolation(scope.interpolation);
+}
+
 LocatorClient::LocatorClient(std::shared_ptr<grpc::Channel> channel,
-                             std::chrono::milliseconds deadline)
+                             std::chrono::milliseconds deadline,
+                             RequestScope scope)
     : stub_(v1::Locator::NewStub(channel)),
       health_(channel),
-      deadline_(deadline) {}
+      deadline_(deadline),
+      scope_(std::move(scope)) {}
 
 grpc::Status LocatorClient::Locate(const Point2& point,
                                    v1::LocateResponse* response) {
   v1::LocateRequest request;
   request.mutable_point()->set_x(point.x);
   request.mutable_point()->set_y(point.y);
+  ApplyScope(scope_, &request);
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
   return stub_->Locate(&context, request, response);
@@ -47,30 +78,77 @@ grpc::Status LocatorClient::LocateBatch(std::span<const double> xs,
   request.mutable_xs()->Add(xs.begin(), xs.end());
   request.mutable_ys()->Add(ys.begin(), ys.end());
   RequestColumns(columns, &request);
+  ApplyScope(scope_, &request);
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
   return stub_->LocateBatch(&context, request, response);
 }
 
 grpc::Status LocatorClient::GetStats(v1::GetStatsResponse* response) {
+  v1::GetStatsRequest request;
+  request.set_dataset(scope_.dataset);
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
-  return stub_->GetStats(&context, v1::GetStatsRequest(), response);
+  return stub_->GetStats(&context, request, response);
 }
 
 grpc::Status LocatorClient::Retune(v1::RetuneResponse* response) {
+  v1::RetuneRequest request;
+  request.set_dataset(scope_.dataset);
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
-  return stub_->Retune(&context, v1::RetuneRequest(), response);
+  return stub_->Retune(&context, request, response);
 }
 
-grpc::Status LocatorClient::Reload(const std::string& dataset,
+grpc::Status LocatorClient::Reload(const std::string& spec,
                                    v1::ReloadResponse* response) {
   v1::ReloadRequest request;
-  request.set_dataset(dataset);
+  request.set_dataset(spec);
+  request.set_name(scope_.dataset);
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
   return stub_->Reload(&context, request, response);
+}
+
+grpc::Status LocatorClient::ListDatasets(v1::ListDatasetsResponse* response) {
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->ListDatasets(&context, v1::ListDatasetsRequest(), response);
+}
+
+grpc::Status LocatorClient::Profile(std::span<const Point2> vertices,
+                                    uint32_t samples,
+                                    v1::ProfileResponse* response) {
+  v1::ProfileRequest request;
+  for (const Point2& vertex : vertices) {
+    v1::Point* added = request.add_vertices();
+    added->set_x(vertex.x);
+    added->set_y(vertex.y);
+  }
+  request.set_samples(samples);
+  ApplyScope(scope_, &request);
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  return stub_->Profile(&context, request, response);
+}
+
+grpc::Status LocatorClient::Grid(v1::GridRequest request,
+                                 const GridConsumer& consume) {
+  ApplyScope(scope_, &request);
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  const std::unique_ptr<grpc::ClientReader<v1::GridResponse>> reader =
+      stub_->Grid(&context, request);
+  v1::GridResponse message;
+  while (reader->Read(&message)) {
+    if (!consume(message)) {
+      context.TryCancel();
+      while (reader->Read(&message)) {
+      }
+      break;
+    }
+  }
+  return reader->Finish();
 }
 
 grpc::Status LocatorClient::CheckHealth(HealthStatus* status) {
@@ -80,16 +158,18 @@ grpc::Status LocatorClient::CheckHealth(HealthStatus* status) {
 }
 
 void LocatorClient::StartLocate(grpc::ClientContext* context,
-                                const v1::LocateRequest* request,
+                                v1::LocateRequest* request,
                                 v1::LocateResponse* response, Completion done) {
+  ApplyScope(scope_, request);
   SetDeadlineFromNow(context, deadline_);
   stub_->async()->Locate(context, request, response, std::move(done));
 }
 
 void LocatorClient::StartLocateBatch(grpc::ClientContext* context,
-                                     const v1::LocateBatchRequest* request,
+                                     v1::LocateBatchRequest* request,
                                      v1::LocateBatchResponse* response,
                                      Completion done) {
+  ApplyScope(scope_, request);
   SetDeadlineFromNow(context, deadline_);
   stub_->async()->LocateBatch(context, request, response, std::move(done));
 }

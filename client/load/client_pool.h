@@ -24,9 +24,11 @@ namespace locator {
 
 class ClientPool {
  public:
-  // `channels` (> 0) channels to options.target; every call gets `deadline`.
+  // `channels` (> 0) channels to options.target; every call gets `deadline`
+  // and every request `scope`.
   ClientPool(const ChannelOptions& options, size_t channels,
-             std::chrono::milliseconds deadline);
+             std::chrono::milliseconds deadline,
+             const RequestScope& scope = {});
 
   size_t size() const { return clients_.size(); }
   std::chrono::milliseconds deadline() const { return deadline_; }

@@ -58,6 +58,11 @@ po::options_description Flags(LoadOptions& options, RawFlags& raw) {
        "uniform | 1-cluster | 3-cluster | d-cluster | x-cluster | mixed | "
        "drift (in the dataset's bounding box) | file:PATH (replay x,y rows, "
        "cycled)")  //
+      ("dataset", po::value(&options.scope.dataset),
+       "the server's dataset to query (default: its default dataset)")  //
+      ("crs", po::value(&options.scope.crs),
+       "the CRS of the queries of a file: workload (EPSG:4326, WKT or a "
+       "PROJ string; default: the dataset's own coordinates)")  //
       ("seed", po::value(&raw.seed)->default_value(raw.seed),
        "seed of the generated workload and of the arrival schedule")  //
       ("concurrency",
@@ -217,6 +222,18 @@ Status ParseLoadOptions(const std::vector<std::string>& args,
 
   Status status = ParseMode(raw.mode, &options->mode);
   if (status.ok()) status = QuerySource::Validate(options->workload);
+  if (status.ok() && !options->scope.crs.empty() &&
+      !QuerySource::IsReplay(options->workload)) {
+    status = Status::InvalidArgument(
+        "--crs needs a --workload file:PATH: generated workloads lie in the "
+        "dataset's bounding box, in its own coordinates");
+  }
+  if (status.ok() && options->mode == LoadMode::kNestedBatch &&
+      (!options->scope.dataset.empty() || !options->scope.crs.empty())) {
+    status = Status::InvalidArgument(
+        "--dataset and --crs are for the Locator service; nested-batch "
+        "calls the bench service, which has neither");
+  }
   if (status.ok()) {
     status = CheckPositive({{"channels", raw.channels},
                             {"concurrency", raw.concurrency},

@@ -32,6 +32,9 @@ struct LoadOptions {
   LoadMode mode = LoadMode::kUnary;
   // A workload name or "file:PATH" (client/load/query_source.h).
   std::string workload = "uniform";
+  // The dataset every call goes to and the CRS of the queries (only with a
+  // file: workload; generated ones are in the dataset's own coordinates).
+  RequestScope scope;
   uint64_t seed = 1;
   // Calls (batches, streams) in flight in a closed-loop run.
   size_t concurrency = 64;

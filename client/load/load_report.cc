@@ -116,8 +116,15 @@ std::string FormatMicros(uint64_t micros) {
 }
 
 std::string DescribeRun(const LoadOptions& options) {
-  return StrCat({RunShape(options), "; workload ", options.workload, "; ",
-                 std::to_string(options.channels), " channels to ",
+  std::string run =
+      StrCat({RunShape(options), "; workload ", options.workload});
+  if (!options.scope.crs.empty()) {
+    run += StrCat({" in ", options.scope.crs});
+  }
+  if (!options.scope.dataset.empty()) {
+    run += StrCat({"; dataset ", options.scope.dataset});
+  }
+  return StrCat({run, "; ", std::to_string(options.channels), " channels to ",
                  options.channel.target});
 }
 
@@ -170,6 +177,8 @@ std::string FormatReportJson(const LoadOptions& options,
   Struct summary;
   Set(summary, "mode", std::string(LoadModeName(options.mode)));
   Set(summary, "workload", options.workload);
+  Set(summary, "dataset", options.scope.dataset);
+  Set(summary, "crs", options.scope.crs);
   Set(summary, "target", options.channel.target);
   Set(summary, "channels", options.channels);
   Set(summary, "concurrency", options.concurrency);

@@ -112,7 +112,8 @@ int Main(int argc, char** argv) {
       options.phase_signal ? &InstallPhaseSignal() : nullptr;
 
   ClientPool pool(options.channel, options.channels,
-                  std::chrono::milliseconds(options.deadline_ms));
+                  std::chrono::milliseconds(options.deadline_ms),
+                  options.scope);
   BoundingBox box;
   if (!QuerySource::IsReplay(options.workload) &&
       !ReadDatasetBox(pool.client(0), &box)) {

@@ -22,6 +22,8 @@ class WindowedStream : public LocatorClient::StreamReactor {
   void Start(LocatorClient& client,
              std::chrono::system_clock::time_point deadline) {
     streams_.Add();
+    // Every request of the stream is this one with another point.
+    ApplyScope(client.scope(), &request_);
     client.StartLocateStream(&context_, deadline, this);
     StartRead(&response_);
     SendMore();

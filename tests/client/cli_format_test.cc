@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -107,9 +108,18 @@ TEST(CliFormatTest, FormatStatsRedactedSourceAndReloadInProgress) {
   stats.mutable_memory()->set_triangulation_bytes(3 * 1024 * 1024 / 2);
   const std::string text = FormatStats(stats);
   EXPECT_THAT(text, HasSubstr("dataset      (redacted)\n"));
+  EXPECT_THAT(text, HasSubstr("crs          none\n"));
   EXPECT_THAT(text, HasSubstr("generation   3 (reload in progress)\n"));
   EXPECT_THAT(text, HasSubstr("strategy     self-tuning\n"));
   EXPECT_THAT(text, HasSubstr("memory       1.5 MiB triangulation, 0.0 MiB"));
+}
+
+TEST(CliFormatTest, FormatStatsNamesTheCrs) {
+  v1::GetStatsResponse stats;
+  stats.mutable_dataset()->mutable_crs()->set_name("WGS 84 / UTM zone 33N");
+  stats.mutable_dataset()->mutable_crs()->set_epsg_code(32633);
+  EXPECT_THAT(FormatStats(stats),
+              HasSubstr("crs          WGS 84 / UTM zone 33N (EPSG:32633)\n"));
 }
 
 TEST(CliFormatTest, BatchCsvRowsLeaveInapplicableCellsEmpty) {
@@ -132,6 +142,127 @@ TEST(CliFormatTest, BatchCsvRowsLeaveInapplicableCellsEmpty) {
             "x,y,type,triangle_id,v0,v1,v2,b0,b1,b2,value,cost\n"
             "0.25,0.25,FACE,42,10,11,12,0.5,0.25,0.25,1.75,8\n"
             "5,-1e-07,OUTSIDE_CONVEX_HULL,7,3,4,-1,,,,,2\n");
+}
+
+TEST(CliFormatTest, FormatFixedAndProfilePointKindName) {
+  EXPECT_EQ(FormatFixed(0.4249, 2), "0.42");
+  EXPECT_EQ(FormatFixed(12, 1), "12.0");
+  EXPECT_EQ(FormatFixed(1e300, 2), "1e+300");  // too long: the shortest form
+  EXPECT_EQ(ProfilePointKindName(v1::PROFILE_POINT_KIND_LINE_VERTEX),
+            "LINE_VERTEX");
+  EXPECT_EQ(ProfilePointKindName(v1::PROFILE_POINT_KIND_EDGE_CROSSING),
+            "EDGE_CROSSING");
+  EXPECT_EQ(ProfilePointKindName(v1::PROFILE_POINT_KIND_MESH_VERTEX),
+            "MESH_VERTEX");
+  EXPECT_EQ(ProfilePointKindName(v1::PROFILE_POINT_KIND_SAMPLE), "SAMPLE");
+  EXPECT_EQ(ProfilePointKindName(static_cast<v1::ProfilePointKind>(9)), "9");
+}
+
+TEST(CliFormatTest, FormatDatasetsIsOneLinePerDataset) {
+  v1::ListDatasetsResponse response;
+  v1::DatasetEntry* terrain = response.add_datasets();
+  terrain->set_name("terrain");
+  terrain->set_is_default(true);
+  terrain->set_serving(true);
+  terrain->mutable_stats()->set_input_points(225);
+  terrain->mutable_stats()->set_triangles(416);
+  terrain->mutable_stats()->mutable_crs()->set_name("WGS 84 / UTM zone 33N");
+  terrain->mutable_stats()->mutable_crs()->set_epsg_code(32633);
+  v1::DatasetEntry* plain = response.add_datasets();
+  plain->set_name("plain");
+  plain->set_serving(true);
+  plain->mutable_stats()->set_input_points(1000000);
+  plain->mutable_stats()->set_triangles(1999980);
+  v1::DatasetEntry* custom = response.add_datasets();
+  custom->set_name("custom");
+  custom->set_serving(true);
+  custom->mutable_stats()->mutable_crs()->set_name("unnamed");
+  v1::DatasetEntry* loading = response.add_datasets();
+  loading->set_name("bedrock");
+  EXPECT_EQ(FormatDatasets(response),
+            "name     default  serving       points   triangles  crs\n"
+            "terrain  *        yes           225      416        WGS 84 / UTM "
+            "zone 33N (EPSG:32633)\n"
+            "plain             yes           1000000  1999980    none\n"
+            "custom            yes           0        0          unnamed\n"
+            "bedrock           no (loading)  -        -          -\n");
+  EXPECT_EQ(FormatDatasets(v1::ListDatasetsResponse()),
+            "name  default  serving  points  triangles  crs\n");
+}
+
+// A line from (0, 0) to (30, 0): a breakpoint at 10, a gap from 20 on.
+v1::ProfileResponse TestProfile(bool with_samples) {
+  v1::ProfileResponse response;
+  response.set_length(30);
+  response.set_crossings(2);
+  const auto add = [](google::protobuf::RepeatedPtrField<v1::ProfilePoint>* to,
+                      v1::ProfilePointKind kind, double distance,
+                      std::optional<double> value, int64_t triangle) {
+    v1::ProfilePoint* point = to->Add();
+    point->set_kind(kind);
+    point->mutable_point()->set_x(distance);
+    point->set_distance(distance);
+    if (value.has_value()) point->set_value(*value);
+    point->set_triangle_id(triangle);
+  };
+  add(response.mutable_breakpoints(), v1::PROFILE_POINT_KIND_LINE_VERTEX, 0,
+      1.5, 4);
+  add(response.mutable_breakpoints(), v1::PROFILE_POINT_KIND_EDGE_CROSSING, 10,
+      2.25, 5);
+  add(response.mutable_breakpoints(), v1::PROFILE_POINT_KIND_EDGE_CROSSING, 20,
+      3, -1);
+  add(response.mutable_breakpoints(), v1::PROFILE_POINT_KIND_LINE_VERTEX, 30,
+      std::nullopt, -1);
+  response.mutable_breakpoints(3)->set_segment(0);
+  if (with_samples) {
+    add(response.mutable_samples(), v1::PROFILE_POINT_KIND_SAMPLE, 0, 1.5, 4);
+    add(response.mutable_samples(), v1::PROFILE_POINT_KIND_SAMPLE, 15, 2.625,
+        5);
+    add(response.mutable_samples(), v1::PROFILE_POINT_KIND_SAMPLE, 30,
+        std::nullopt, -1);
+  }
+  v1::ProfileGap* gap = response.add_gaps();
+  gap->set_from_distance(20);
+  gap->set_to_distance(30);
+  gap->set_reason(v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL);
+  return response;
+}
+
+TEST(CliFormatTest, FormatProfileTablesBreakpointsSamplesAndGaps) {
+  EXPECT_EQ(FormatProfile(TestProfile(/*with_samples=*/true)),
+            "length       30\n"
+            "crossings    2\n"
+            "breakpoints  4\n"
+            "  distance  x   y  z     triangle  kind\n"
+            "  0         0   0  1.5   4         LINE_VERTEX\n"
+            "  10        10  0  2.25  5         EDGE_CROSSING\n"
+            "  20        20  0  3     -1        EDGE_CROSSING\n"
+            "  30        30  0  none  -1        LINE_VERTEX\n"
+            "samples  3\n"
+            "  distance  x   y  z      triangle\n"
+            "  0         0   0  1.5    4\n"
+            "  15        15  0  2.625  5\n"
+            "  30        30  0  none   -1\n"
+            "gaps  1\n"
+            "  from  to  reason\n"
+            "  20    30  OUTSIDE_CONVEX_HULL\n");
+  v1::ProfileResponse no_gaps = TestProfile(/*with_samples=*/false);
+  no_gaps.clear_gaps();
+  const std::string text = FormatProfile(no_gaps);
+  EXPECT_THAT(text, ::testing::EndsWith("LINE_VERTEX\ngaps  none\n"));
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("samples")));
+}
+
+TEST(CliFormatTest, ProfileCsvMergesBreakpointsAndSamplesByDistance) {
+  EXPECT_EQ(ProfileCsv(TestProfile(/*with_samples=*/true)),
+            "kind,distance,x,y,z,triangle_id,segment\n"
+            "LINE_VERTEX,0,0,0,1.5,4,0\n"
+            "SAMPLE,0,0,0,1.5,4,0\n"
+            "EDGE_CROSSING,10,10,0,2.25,5,0\n"
+            "SAMPLE,15,15,0,2.625,5,0\n"
+            "EDGE_CROSSING,20,20,0,3,-1,0\n"
+            "LINE_VERTEX,30,30,0,,-1,0\n"
+            "SAMPLE,30,30,0,,-1,0\n");
 }
 
 }  // namespace

@@ -117,6 +117,20 @@ TEST(LoadOptionsTest, StreamModeAndReplayWorkload) {
   EXPECT_EQ(options.workload, "file:/tmp/queries.csv");
 }
 
+TEST(LoadOptionsTest, DatasetAndCrsMakeTheScope) {
+  LoadOptions options;
+  ASSERT_TRUE(ParseLoadOptions({"--dataset", "terrain"}, &options).ok());
+  EXPECT_EQ(options.scope.dataset, "terrain");
+  EXPECT_EQ(options.scope.crs, "");
+  ASSERT_TRUE(ParseLoadOptions({"--crs", "EPSG:4326", "--workload",
+                                "file:/tmp/lonlat.csv", "--mode", "batch"},
+                               &options)
+                  .ok());
+  EXPECT_EQ(options.scope.dataset, "");
+  EXPECT_EQ(options.scope.crs, "EPSG:4326");
+  EXPECT_EQ(options.scope.interpolation, v1::INTERPOLATION_UNSPECIFIED);
+}
+
 TEST(LoadOptionsTest, HelpIsNotAnError) {
   LoadOptions options;
   ASSERT_TRUE(ParseLoadOptions({"--help"}, &options).ok());
@@ -160,6 +174,12 @@ TEST(LoadOptionsTest, RejectsConflictingFlags) {
       std::string::npos);
   EXPECT_NE(ErrorOf({"--mode", "stream", "--rate", "100"}).find("--rate"),
             std::string::npos);
+  EXPECT_EQ(ErrorOf({"--crs", "EPSG:4326", "--workload", "1-cluster"}),
+            "--crs needs a --workload file:PATH: generated workloads lie in "
+            "the dataset's bounding box, in its own coordinates");
+  EXPECT_EQ(ErrorOf({"--mode", "nested-batch", "--dataset", "terrain"}),
+            "--dataset and --crs are for the Locator service; nested-batch "
+            "calls the bench service, which has neither");
 }
 
 TEST(LoadOptionsTest, RejectsUnknownFlagsAndPositionals) {

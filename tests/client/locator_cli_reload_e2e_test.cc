@@ -43,14 +43,14 @@ class LocatorCliReloadTest : public ::testing::Test {
 };
 
 TEST_F(LocatorCliReloadTest, ReloadPrintsTheNewDatasetAndGeneration) {
-  BinaryResult result = Locator({"reload", "--dataset", "uniform:500:3"});
+  BinaryResult result = Locator({"reload", "uniform:500:3"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("dataset      uniform:500:3"), std::string::npos)
       << result.out;
   EXPECT_NE(result.out.find("500 read"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("generation   2"), std::string::npos) << result.out;
 
-  // Without --dataset: the server's own dataset again, as JSON.
+  // Without a SPEC: the server's own dataset again, as JSON.
   result = Locator({"--json", "reload"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   v1::ReloadResponse response;
@@ -69,19 +69,18 @@ TEST_F(LocatorCliReloadTest, ABadDatasetIsAnRpcErrorWithFileAndLine) {
   const std::string path = ::testing::TempDir() + "locator_cli_reload_bad_" +
                            std::to_string(getpid()) + ".csv";
   std::ofstream(path) << "x,y\n1,2\n3,zz\n";
-  const BinaryResult result = Locator({"reload", "--dataset", path});
+  const BinaryResult result = Locator({"reload", path});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(result.err.rfind("error: INVALID_ARGUMENT: " + path + ":3", 0), 0u)
       << result.err;
   std::remove(path.c_str());
 }
 
-TEST_F(LocatorCliReloadTest, DatasetIsForReloadOnly) {
-  const BinaryResult result = Locator({"--dataset", "uniform:500:3", "stats"});
+TEST_F(LocatorCliReloadTest, ReloadTakesOneSpecAtMost) {
+  const BinaryResult result = Locator({"reload", "uniform:500:3", "extra"});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_NE(result.err.find("--dataset is for reload only"), std::string::npos)
+  EXPECT_NE(result.err.find("reload takes at most one SPEC"), std::string::npos)
       << result.err;
-  EXPECT_EQ(Locator({"reload", "extra"}).exit_code, 2);
 }
 
 }  // namespace
