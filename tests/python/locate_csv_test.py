@@ -12,17 +12,15 @@ Usage: locate_csv_test.py LOCATORD PYTHON_DIR EXAMPLE
 """
 
 import os
-import pathlib
 import random
-import re
 import subprocess
 import sys
 import tempfile
-import time
 import unittest
 
+from locatord_process import Locatord
+
 LOCATORD = PYTHON_DIR = EXAMPLE = None  # set from the command line in main()
-STARTUP_SECONDS = 60
 
 
 def plane(x, y):
@@ -35,54 +33,14 @@ POINTS = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] + [
     (_rng.random(), _rng.random()) for _ in range(200)]
 
 
-class LocatorServer:
-    """locatord on a dataset file, listening on a port the OS picks."""
-
-    def __init__(self, work):
-        self.dataset = os.path.join(work, "plane.csv")
-        with open(self.dataset, "w") as out:
-            out.write("x,y,z\n")
-            for x, y in POINTS:
-                out.write(f"{x!r},{y!r},{plane(x, y)!r}\n")
-        self.log = os.path.join(work, "locatord.log")
-        with open(self.log, "w") as log:
-            self.process = subprocess.Popen(
-                [LOCATORD, "--dataset", self.dataset, "--listen",
-                 "127.0.0.1:0"], stdout=log, stderr=subprocess.STDOUT)
-        self.target = self._wait_for_listening()
-        self._wait_until_serving()
-
-    def _wait_for_listening(self):
-        deadline = time.monotonic() + STARTUP_SECONDS
-        while time.monotonic() < deadline:
-            found = re.search(r"^locatord listening on (\S+)$",
-                              self._log_text(), re.MULTILINE)
-            if found:
-                return found.group(1)
-            if self.process.poll() is not None:
-                break
-            time.sleep(0.05)
-        raise RuntimeError("locatord did not start:\n" + self._log_text())
-
-    def _log_text(self):
-        return pathlib.Path(self.log).read_text()
-
-    def _wait_until_serving(self):
-        from locator_client import LocatorClient, LocatorError
-        deadline = time.monotonic() + STARTUP_SECONDS
-        with LocatorClient(self.target, deadline_s=1) as client:
-            while True:
-                try:
-                    client.stats()
-                    return
-                except LocatorError:
-                    if time.monotonic() > deadline:
-                        raise
-                    time.sleep(0.05)
-
-    def stop(self):
-        self.process.terminate()
-        self.process.wait(timeout=30)
+def start_server(work):
+    """locatord on the plane dataset, written to `work`."""
+    dataset = os.path.join(work, "plane.csv")
+    with open(dataset, "w") as out:
+        out.write("x,y,z\n")
+        for x, y in POINTS:
+            out.write(f"{x!r},{y!r},{plane(x, y)!r}\n")
+    return Locatord(LOCATORD, ["--dataset", dataset], work)
 
 
 class LocateCsvTest(unittest.TestCase):
@@ -91,7 +49,7 @@ class LocateCsvTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.work = tempfile.TemporaryDirectory()
-        cls.server = LocatorServer(cls.work.name)
+        cls.server = start_server(cls.work.name)
 
     @classmethod
     def tearDownClass(cls):
