@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "client/points_reader.h"
+#include "common/str_cat.h"
 
 namespace locator {
 
@@ -25,71 +26,58 @@ Status ParseInterpolation(const std::string& name,
 
 namespace {
 
-// The `count` numbers of a flag that takes several words. InvalidArgument
-// "--FLAG takes WHAT: ..." for a word that is not a number, or another
-// count of words (the flag given twice, or too few at the end of the line).
-Status ParseNumbers(const std::string& flag, const std::string& takes,
-                    size_t count, const std::vector<std::string>& words,
+// The words of a flag that takes several numbers: what it takes, and which
+// numbers it accepts.
+struct NumbersFlag {
+  const char* flag;
+  const char* takes;
+  size_t count;
+  bool (*accepts)(double number);
+};
+
+bool AnyNumber(double) { return true; }
+
+bool WholeCount(double number) {
+  return number >= 1 && number <= std::numeric_limits<uint32_t>::max() &&
+         number == std::floor(number);
+}
+
+bool PositiveFinite(double number) {
+  return number > 0 && std::isfinite(number);
+}
+
+constexpr NumbersFlag kTe{"te", "XMIN YMIN XMAX YMAX", 4, AnyNumber};
+constexpr NumbersFlag kOutsize{"outsize", "WIDTH HEIGHT, whole numbers from 1",
+                               2, WholeCount};
+constexpr NumbersFlag kTr{"tr", "XRES YRES, positive numbers", 2,
+                          PositiveFinite};
+
+// The numbers of `words`. InvalidArgument "--FLAG takes WHAT: ..." for
+// another count of words (the flag given twice, or too few at the end of
+// the line), a word that is not a number, or a number the flag does not
+// accept.
+Status ParseNumbers(const NumbersFlag& flag,
+                    const std::vector<std::string>& words,
                     std::vector<double>* numbers) {
-  const std::string problem = "--" + flag + " takes " + takes + ": ";
-  if (words.size() != count) {
-    return Status::InvalidArgument(problem + std::to_string(count) +
-                                   " values, once, not " +
-                                   std::to_string(words.size()));
+  const std::string problem =
+      StrCat({"--", flag.flag, " takes ", flag.takes, ": "});
+  if (words.size() != flag.count) {
+    return Status::InvalidArgument(
+        StrCat({problem, std::to_string(flag.count), " values, once, not ",
+                std::to_string(words.size())}));
   }
   numbers->clear();
   for (const std::string& word : words) {
     double number = 0;
     if (!ParseDouble(word, &number)) {
-      return Status::InvalidArgument(problem + "'" + word +
-                                     "' is not a number");
+      return Status::InvalidArgument(
+          StrCat({problem, "'", word, "' is not a number"}));
+    }
+    if (!flag.accepts(number)) {
+      return Status::InvalidArgument(StrCat({problem, "not '", word, "'"}));
     }
     numbers->push_back(number);
   }
-  return Status::OK();
-}
-
-// --outsize WIDTH HEIGHT: whole numbers from 1 to 2^32 - 1.
-Status ParseOutsize(const std::vector<std::string>& words, GridSettings* grid) {
-  constexpr char kTakes[] = "WIDTH HEIGHT, whole numbers from 1";
-  std::vector<double> size;
-  if (Status status = ParseNumbers("outsize", kTakes, 2, words, &size);
-      !status.ok()) {
-    return status;
-  }
-  for (size_t i = 0; i < size.size(); ++i) {
-    if (!(size[i] >= 1 && size[i] <= std::numeric_limits<uint32_t>::max() &&
-          size[i] == std::floor(size[i]))) {
-      return Status::InvalidArgument(std::string("--outsize takes ") + kTakes +
-                                     ": not '" + words[i] + "'");
-    }
-  }
-  grid->width = static_cast<uint32_t>(size[0]);
-  grid->height = static_cast<uint32_t>(size[1]);
-  return Status::OK();
-}
-
-// --tr XRES YRES: one positive cell size, as the Grid RPC renders square
-// cells.
-Status ParseResolution(const std::vector<std::string>& words,
-                       GridSettings* grid) {
-  constexpr char kTakes[] = "XRES YRES, positive numbers";
-  std::vector<double> resolution;
-  if (Status status = ParseNumbers("tr", kTakes, 2, words, &resolution);
-      !status.ok()) {
-    return status;
-  }
-  for (size_t i = 0; i < resolution.size(); ++i) {
-    if (!(resolution[i] > 0) || !std::isfinite(resolution[i])) {
-      return Status::InvalidArgument(std::string("--tr takes ") + kTakes +
-                                     ": not '" + words[i] + "'");
-    }
-  }
-  if (resolution[0] != resolution[1]) {
-    return Status::InvalidArgument(
-        "--tr: the Grid RPC renders square cells; give XRES equal to YRES");
-  }
-  grid->cell_size = resolution[0];
   return Status::OK();
 }
 
@@ -97,14 +85,12 @@ Status ParseResolution(const std::vector<std::string>& words,
 
 Status ParseGridFlags(const GridFlagWords& words, GridSettings* grid) {
   // The numbers first: a flag's value may have swallowed --out.
+  std::vector<double> numbers;
   if (!words.te.empty()) {
-    std::vector<double> box;
-    if (Status status =
-            ParseNumbers("te", "XMIN YMIN XMAX YMAX", 4, words.te, &box);
-        !status.ok()) {
+    if (Status status = ParseNumbers(kTe, words.te, &numbers); !status.ok()) {
       return status;
     }
-    grid->box = BoundingBox{box[0], box[1], box[2], box[3]};
+    grid->box = BoundingBox{numbers[0], numbers[1], numbers[2], numbers[3]};
   }
   const bool outsize = !words.outsize.empty();
   if (outsize == !words.tr.empty()) {
@@ -112,9 +98,20 @@ Status ParseGridFlags(const GridFlagWords& words, GridSettings* grid) {
         outsize ? "give --outsize or --tr, not both"
                 : "grid needs --outsize WIDTH HEIGHT or --tr XRES YRES");
   }
-  Status status = outsize ? ParseOutsize(words.outsize, grid)
-                          : ParseResolution(words.tr, grid);
-  if (!status.ok()) return status;
+  if (Status status = outsize ? ParseNumbers(kOutsize, words.outsize, &numbers)
+                              : ParseNumbers(kTr, words.tr, &numbers);
+      !status.ok()) {
+    return status;
+  }
+  if (outsize) {
+    grid->width = static_cast<uint32_t>(numbers[0]);
+    grid->height = static_cast<uint32_t>(numbers[1]);
+  } else if (numbers[0] != numbers[1]) {
+    return Status::InvalidArgument(
+        "--tr: the Grid RPC renders square cells; give XRES equal to YRES");
+  } else {
+    grid->cell_size = numbers[0];
+  }
   if (words.a_nodata.has_value() && words.nodata.has_value()) {
     return Status::InvalidArgument("give --a_nodata or --nodata, not both");
   }

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/client/fake_locator_server.h"
+
 namespace locator {
 namespace {
 
@@ -159,15 +161,8 @@ TEST(CliFormatTest, FormatFixedAndProfilePointKindName) {
 }
 
 TEST(CliFormatTest, FormatDatasetsIsOneLinePerDataset) {
-  v1::ListDatasetsResponse response;
-  v1::DatasetEntry* terrain = response.add_datasets();
-  terrain->set_name("terrain");
-  terrain->set_is_default(true);
-  terrain->set_serving(true);
-  terrain->mutable_stats()->set_input_points(225);
-  terrain->mutable_stats()->set_triangles(416);
-  terrain->mutable_stats()->mutable_crs()->set_name("WGS 84 / UTM zone 33N");
-  terrain->mutable_stats()->mutable_crs()->set_epsg_code(32633);
+  // terrain (default, EPSG:32633) and bedrock (loading), then two more.
+  v1::ListDatasetsResponse response = test::FakeDatasetList();
   v1::DatasetEntry* plain = response.add_datasets();
   plain->set_name("plain");
   plain->set_serving(true);
@@ -177,15 +172,13 @@ TEST(CliFormatTest, FormatDatasetsIsOneLinePerDataset) {
   custom->set_name("custom");
   custom->set_serving(true);
   custom->mutable_stats()->mutable_crs()->set_name("unnamed");
-  v1::DatasetEntry* loading = response.add_datasets();
-  loading->set_name("bedrock");
   EXPECT_EQ(FormatDatasets(response),
             "name     default  serving       points   triangles  crs\n"
             "terrain  *        yes           225      416        WGS 84 / UTM "
             "zone 33N (EPSG:32633)\n"
+            "bedrock           no (loading)  -        -          -\n"
             "plain             yes           1000000  1999980    none\n"
-            "custom            yes           0        0          unnamed\n"
-            "bedrock           no (loading)  -        -          -\n");
+            "custom            yes           0        0          unnamed\n");
   EXPECT_EQ(FormatDatasets(v1::ListDatasetsResponse()),
             "name  default  serving  points  triangles  crs\n");
 }

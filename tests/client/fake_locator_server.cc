@@ -17,6 +17,20 @@ double FakeGridValue(uint32_t col, uint32_t row, double nodata) {
   return row * 1000.0 + col + 0.5;
 }
 
+v1::ListDatasetsResponse FakeDatasetList() {
+  v1::ListDatasetsResponse response;
+  v1::DatasetEntry* terrain = response.add_datasets();
+  terrain->set_name("terrain");
+  terrain->set_is_default(true);
+  terrain->set_serving(true);
+  terrain->mutable_stats()->set_input_points(225);
+  terrain->mutable_stats()->set_triangles(416);
+  terrain->mutable_stats()->mutable_crs()->set_name("WGS 84 / UTM zone 33N");
+  terrain->mutable_stats()->mutable_crs()->set_epsg_code(32633);
+  response.add_datasets()->set_name("bedrock");
+  return response;
+}
+
 v1::ProfileResponse FakeProfile(const v1::ProfileRequest& request) {
   v1::ProfileResponse response;
   const auto& vertices = request.vertices();
@@ -194,15 +208,7 @@ class FakeLocatorServer::Service final : public v1::Locator::Service {
       MutexLock lock(&mu_);
       ++calls_;
     }
-    v1::DatasetEntry* terrain = response->add_datasets();
-    terrain->set_name("terrain");
-    terrain->set_is_default(true);
-    terrain->set_serving(true);
-    terrain->mutable_stats()->set_input_points(225);
-    terrain->mutable_stats()->set_triangles(416);
-    terrain->mutable_stats()->mutable_crs()->set_name("WGS 84 / UTM zone 33N");
-    terrain->mutable_stats()->mutable_crs()->set_epsg_code(32633);
-    response->add_datasets()->set_name("bedrock");
+    *response = FakeDatasetList();
     return grpc::Status::OK;
   }
 

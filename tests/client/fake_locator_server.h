@@ -9,8 +9,7 @@
 //     FakeSurface(x, y) (the batch fills the columns it is asked for).
 //   GetStats: source "fake", bounding box kFakeBox.
 //   Retune: an empty tuning. Reload: the dataset source the request named.
-//   ListDatasets: "terrain" (default, serving, 225 points, 416 triangles,
-//     WGS 84 / UTM zone 33N) and "bedrock" (still loading).
+//   ListDatasets: FakeDatasetList().
 //   Profile: FakeProfile(request).
 //   Grid: the header (the request's size, or for a cell size the box grown
 //     east and south to whole cells; nodata as asked, else NaN; crs_wkt as
@@ -46,6 +45,10 @@ double FakeSurface(double x, double y);
 // Cell (col, row) of a Grid answer: nodata on every fifth diagonal, else a
 // value that names the cell.
 double FakeGridValue(uint32_t col, uint32_t row, double nodata);
+
+// The ListDatasets answer: "terrain" (default, serving, 225 points, 416
+// triangles, WGS 84 / UTM zone 33N, EPSG:32633) and "bedrock" (loading).
+v1::ListDatasetsResponse FakeDatasetList();
 
 // The Profile answer to `request`: LINE_VERTEX breakpoints at the vertices
 // and an EDGE_CROSSING at the middle of every segment (triangle id: the

@@ -51,12 +51,8 @@ class LocatorCliGisTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new test::ScratchDir();
-    const std::string geojson = dir_->path() + "/hill.geojson";
-    gis::testing::WriteFile(
-        geojson, gis::testing::PointsGeoJson(gis::testing::UtmHill(kHillSide)));
-    const std::string gpkg = dir_->path() + "/hill.gpkg";
-    gis::testing::Ogr2Ogr(
-        {"-f", "GPKG", gpkg, geojson, "-nln", "hill", "-a_srs", "EPSG:32633"});
+    const std::string gpkg =
+        gis::testing::UtmHillGeoPackage(kHillSide, dir_->path());
     const Status started = ServerProcess::Start(
         LOCATORD_PATH, {"--dataset", gpkg, "--listen", "127.0.0.1:0"},
         &server_);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "tests/client/fake_locator_server.h"
+#include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/testing/run_binary.h"
 
@@ -31,17 +32,6 @@ using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-std::string Utm33Wkt() {
-  OGRSpatialReference crs;
-  EXPECT_EQ(crs.importFromEPSG(32633), OGRERR_NONE);
-  char* wkt = nullptr;
-  const char* const options[] = {"FORMAT=WKT2", nullptr};
-  EXPECT_EQ(crs.exportToWkt(&wkt, options), OGRERR_NONE);
-  const std::string text = wkt;
-  CPLFree(wkt);
-  return text;
-}
-
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream stream(text);
@@ -53,7 +43,7 @@ class LocatorCliGridTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     GDALAllRegister();
-    server_ = new FakeLocatorServer(Utm33Wkt());
+    server_ = new FakeLocatorServer(gis::testing::EpsgWkt2(32633));
   }
   static void TearDownTestSuite() { delete server_; }
 

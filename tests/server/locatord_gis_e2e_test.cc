@@ -32,12 +32,8 @@ class LocatordGisTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new test::ScratchDir();
-    const std::string geojson = dir_->path() + "/hill.geojson";
-    gis::testing::WriteFile(
-        geojson, gis::testing::PointsGeoJson(gis::testing::UtmHill(kHillSide)));
-    gpkg_ = new std::string(dir_->path() + "/hill.gpkg");
-    gis::testing::Ogr2Ogr({"-f", "GPKG", *gpkg_, geojson, "-nln", "hill",
-                           "-a_srs", "EPSG:32633"});
+    gpkg_ = new std::string(
+        gis::testing::UtmHillGeoPackage(kHillSide, dir_->path()));
     Dataset points;
     ASSERT_TRUE(gis::LoadOgrDataset(*gpkg_, &points).ok());
     ASSERT_TRUE(Reference::FromDataset(std::move(points), &reference_).ok());

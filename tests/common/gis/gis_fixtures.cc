@@ -1,6 +1,8 @@
 #include "tests/common/gis/gis_fixtures.h"
 
+#include <cpl_conv.h>
 #include <gtest/gtest.h>
+#include <ogr_spatialref.h>
 
 #include <cmath>
 #include <fstream>
@@ -51,6 +53,26 @@ std::string RunTool(const std::string& program,
 
 void Ogr2Ogr(const std::vector<std::string>& args) {
   RunTool(OGR2OGR_PATH, args);
+}
+
+std::string UtmHillGeoPackage(int n, const std::string& dir) {
+  const std::string geojson = dir + "/hill.geojson";
+  WriteFile(geojson, PointsGeoJson(UtmHill(n)));
+  const std::string gpkg = dir + "/hill.gpkg";
+  Ogr2Ogr(
+      {"-f", "GPKG", gpkg, geojson, "-nln", "hill", "-a_srs", "EPSG:32633"});
+  return gpkg;
+}
+
+std::string EpsgWkt2(int code) {
+  OGRSpatialReference crs;
+  EXPECT_EQ(crs.importFromEPSG(code), OGRERR_NONE) << code;
+  char* wkt = nullptr;
+  const char* const options[] = {"FORMAT=WKT2", nullptr};
+  EXPECT_EQ(crs.exportToWkt(&wkt, options), OGRERR_NONE) << code;
+  const std::string text = wkt != nullptr ? wkt : "";
+  CPLFree(wkt);
+  return text;
 }
 
 std::vector<Point2> Cs2cs(const std::vector<Point2>& points,

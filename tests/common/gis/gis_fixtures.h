@@ -37,6 +37,14 @@ void Ogr2Ogr(const std::vector<std::string>& args);
 std::string RunTool(const std::string& program,
                     const std::vector<std::string>& args);
 
+// The UtmHill(n) points as the GeoPackage DIR/hill.gpkg (layer "hill",
+// EPSG:32633, PointZ with z also in the attribute "height"), made by
+// ogr2ogr; returns its path.
+std::string UtmHillGeoPackage(int n, const std::string& dir);
+
+// The WKT2 of the CRS EPSG:`code`, as GDAL writes it.
+std::string EpsgWkt2(int code);
+
 // `points` transformed by the real cs2cs from `from` to `to` (both lon/lat
 // or easting/northing CRSs; cs2cs takes and gives EPSG:4326 as lat, lon, and
 // this function swaps them), through a file in `dir`.

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/testing/run_binary.h"
 
@@ -37,17 +38,6 @@ RasterShape TestShape() {
   shape.box = {500000, 5500000 - 270 * 20.0, 500000 + 300 * 10.0, 5500000};
   shape.nodata = kNodata;
   return shape;
-}
-
-std::string Utm33Wkt() {
-  OGRSpatialReference crs;
-  EXPECT_EQ(crs.importFromEPSG(32633), OGRERR_NONE);
-  char* wkt = nullptr;
-  const char* const options[] = {"FORMAT=WKT2", nullptr};
-  EXPECT_EQ(crs.exportToWkt(&wkt, options), OGRERR_NONE);
-  const std::string text = wkt;
-  CPLFree(wkt);
-  return text;
 }
 
 // The value of cell (col, row); every eleventh diagonal has none.
@@ -151,7 +141,7 @@ class RasterWriterTest : public ::testing::Test {
 };
 
 RasterShape WithUtm33(RasterShape shape) {
-  shape.crs_wkt = Utm33Wkt();
+  shape.crs_wkt = gis::testing::EpsgWkt2(32633);
   return shape;
 }
 
