@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "common/gis/gdal_support.h"
@@ -29,6 +30,12 @@ Status CheckShape(const std::string& path, const RasterShape& shape) {
   if (shape.width == 0 || shape.height == 0) {
     return bad("a raster needs at least one row and one column, not " +
                std::to_string(shape.width) + " x " +
+               std::to_string(shape.height));
+  }
+  constexpr uint32_t kGdalMaxSize = std::numeric_limits<int>::max();
+  if (shape.width > kGdalMaxSize || shape.height > kGdalMaxSize) {
+    return bad("GDAL takes at most " + std::to_string(kGdalMaxSize) +
+               " rows and columns, not " + std::to_string(shape.width) + " x " +
                std::to_string(shape.height));
   }
   if (!std::isfinite(shape.cell_width) || !(shape.cell_width > 0) ||

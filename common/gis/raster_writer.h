@@ -43,8 +43,8 @@ namespace locator::gis {
 
 // The raster's size and georeferencing, as plain values.
 struct RasterShape {
-  uint32_t width = 0;   // columns, > 0
-  uint32_t height = 0;  // rows, > 0
+  uint32_t width = 0;   // columns, 1 .. INT_MAX (GDAL's limit)
+  uint32_t height = 0;  // rows, 1 .. INT_MAX
   // The outer edges; the geotransform's origin is (min_x, max_y).
   BoundingBox box;
   // Cell width and height, both positive and finite.
@@ -74,9 +74,11 @@ Status CheckRasterFormat(const RasterFormat& format);
 class RasterWriter {
  public:
   // Creates `path` for a raster of `shape` in `format`. InvalidArgument for
-  // a bad shape, a driver other than GTiff or COG, a creation option that is
-  // not NAME=VALUE or that the driver rejects, or a WKT GDAL cannot read;
-  // IOError when GDAL cannot create the file.
+  // a bad shape (no rows or columns, more than GDAL takes, a cell size that
+  // is not positive and finite, an origin that is not finite), a driver other
+  // than GTiff or COG, a creation option that is not NAME=VALUE or that the
+  // driver rejects, or a WKT GDAL cannot read; IOError when GDAL cannot create
+  // the file.
   static Status Open(const std::string& path, const RasterShape& shape,
                      const RasterFormat& format,
                      std::unique_ptr<RasterWriter>* writer);
@@ -88,13 +90,14 @@ class RasterWriter {
   // Writes rows first_row .. first_row + rows - 1: `values` holds rows x
   // width values, row by row, west to east. Rows may come in any order.
   // InvalidArgument when they fall outside the raster or `values` has
-  // another size; IOError when GDAL fails.
+  // another size; IOError when GDAL fails; FailedPrecondition after
+  // Close().
   Status WriteRows(uint32_t first_row, uint32_t rows,
                    std::span<const double> values);
 
   // Flushes and closes the file (for COG: copies the temporary GTiff to
   // `path` and removes it). IOError with GDAL's message on failure; the
-  // files are then removed. Call once; nothing may be written after it.
+  // files are then removed. FailedPrecondition when called again.
   Status Close();
 
   const std::string& path() const { return path_; }

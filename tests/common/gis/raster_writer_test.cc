@@ -295,6 +295,12 @@ TEST_F(RasterWriterTest, BadShapesAndWkt) {
   ExpectOpenFails(path, empty, {.driver = "GTiff"},
                   Status::Code::kInvalidArgument,
                   "at least one row and one column, not 300 x 0");
+  RasterShape huge = TestShape();
+  huge.width = 1u << 31;
+  ExpectOpenFails(path, huge, {.driver = "GTiff"},
+                  Status::Code::kInvalidArgument,
+                  "GDAL takes at most 2147483647 rows and columns, not "
+                  "2147483648 x 270");
   RasterShape flat = TestShape();
   flat.cell_height = 0;
   ExpectOpenFails(path, flat, {.driver = "GTiff"},
