@@ -84,16 +84,8 @@ std::vector<Point2> HardQueries(const Triangulation& t, uint64_t seed) {
     queries.push_back({box.min_x + u(random) * box.width(),
                        box.min_y + u(random) * box.height()});
   }
-  const auto& dt = t.cgal();
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    if (!dt.is_constrained(*e)) continue;
-    const Point2 a =
-        Triangulation::FromCgal(e->first->vertex(dt.cw(e->second))->point());
-    const Point2 b =
-        Triangulation::FromCgal(e->first->vertex(dt.ccw(e->second))->point());
-    queries.push_back(a);
-    queries.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
-  }
+  const std::vector<Point2> on_edges = test::ConstrainedEdgePoints(t);
+  queries.insert(queries.end(), on_edges.begin(), on_edges.end());
   return queries;
 }
 
