@@ -6,11 +6,11 @@
 // triangle by the first of its edges, in a fixed order, that has the query
 // strictly on its far side) can loop forever in a triangulation that is not
 // Delaunay, which is why a walk must randomise its edge order (or remember
-// more). Their figure is a windmill of triangles around the query's
+// more). Their example is a ring of triangles around the query's
 // triangle. The windmill below is ours, not their published coordinates,
 // with the same property: an inner triangle A0 A1 A2 around the query
-// q = (0, 0), an outer triangle B0 B1 B2 turned 10 degrees further, and the
-// ring between them cut into six thin triangles whose spokes A_i B_i and
+// q = (0, 0), an outer triangle B0 B1 B2 turned about 10 degrees further, and
+// the ring between them cut into six thin triangles whose spokes A_i B_i and
 // A_i B_(i+1) all pass q on the same side. From any ring triangle, q is
 // beyond the spoke ahead of it; with the edges tried in the order of their
 // opposite corner's id (the A's have smaller ids than the B's), that spoke
