@@ -131,8 +131,13 @@ std::string MessageToJson(const google::protobuf::Message& message) {
 std::string FormatLocate(const v1::LocateResponse& response) {
   std::string out;
   AppendLine("type", LocationTypeName(response.type()), &out);
-  AppendLine("triangle", std::to_string(response.triangle_id()), &out);
-  for (int i = 0; i < response.vertex_ids_size(); ++i) {
+  const bool outside_domain =
+      response.type() == v1::LOCATION_TYPE_OUTSIDE_DOMAIN;
+  // Outside the domain there is no triangle: its id and corners are -1.
+  if (!outside_domain) {
+    AppendLine("triangle", std::to_string(response.triangle_id()), &out);
+  }
+  for (int i = 0; i < response.vertex_ids_size() && !outside_domain; ++i) {
     std::string vertex = std::to_string(response.vertex_ids(i));
     if (i < response.vertices_size()) {
       vertex.push_back(' ');
@@ -152,8 +157,6 @@ std::string FormatLocate(const v1::LocateResponse& response) {
                     [](int64_t id) { return std::to_string(id); }),
                &out);
   }
-  const bool outside_domain =
-      response.type() == v1::LOCATION_TYPE_OUTSIDE_DOMAIN;
   AppendLine("barycentric",
              !response.barycentric().empty()
                  ? Join(response.barycentric(), FormatDouble)

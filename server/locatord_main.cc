@@ -221,10 +221,12 @@ int Main(int argc, char** argv) {
         [&service](v1::GetStatsResponse* stats) {
           return service.CurrentStats(stats);
         },
-        [&service](std::vector<std::array<Point2, 2>>* edges) {
+        [&service](MapEdges* edges) {
           const std::shared_ptr<Engine> engine = service.engine();
           if (engine == nullptr) return false;
-          *edges = engine->EdgeSample();
+          edges->segments = engine->EdgeSample();
+          edges->boundary = engine->domain_outline().boundary;
+          edges->breaklines = engine->domain_outline().breaklines;
           return true;
         });
     interceptors.push_back(status_server->NewInterceptorFactory());

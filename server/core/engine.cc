@@ -40,6 +40,7 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   Status s = Triangulation::Build(dataset, &e->triangulation_);
   if (!s.ok()) return s;
   const Triangulation& t = *e->triangulation_;
+  e->outline_ = OutlineOf(t, kOutlineSize);
   s = MakePointLocator(options.strategy, t, options.tuning, &e->locator_);
   if (!s.ok()) return s;
   DatasetInfo& info = e->info_;

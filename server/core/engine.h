@@ -21,6 +21,7 @@
 
 #include "common/status.h"
 #include "server/core/dataset.h"
+#include "server/core/domain_outline.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
 #include "server/core/tuning_options.h"
@@ -78,6 +79,8 @@ class Engine {
   static constexpr uint64_t kStatsWindow = 1000;
   // Edges returned by EdgeSample().
   static constexpr size_t kEdgeSampleSize = 3000;
+  // Edges per list of domain_outline().
+  static constexpr size_t kOutlineSize = 3000;
 
   // Triangulates `dataset` and sets up the strategy. Fails with
   // InvalidArgument for fewer than 3 distinct or all-collinear points, or an
@@ -117,12 +120,18 @@ class Engine {
   // outline and density. Computed on the first call, then reused.
   const std::vector<std::array<Point2, 2>>& EdgeSample() const;
 
+  // The domain's boundary and the breaklines, at most kOutlineSize edges
+  // each (see OutlineOf); both empty for a plain point cloud. Computed once,
+  // by Create().
+  const DomainOutline& domain_outline() const { return outline_; }
+
  private:
   Engine();
   // Counts `queries` answered at total `cost` in the serving statistics.
   void Record(uint64_t queries, uint64_t cost) const;
 
   DatasetInfo info_;
+  DomainOutline outline_;
   std::unique_ptr<Triangulation> triangulation_;
   std::unique_ptr<PointLocator> locator_;
 

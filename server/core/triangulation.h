@@ -105,6 +105,9 @@ class Triangulation {
   size_t num_holes() const { return num_holes_; }
   // Whether the finite face f is in the domain.
   bool InDomain(Face_handle f) const { return f->info() >= 0; }
+  // Whether the finite edge (f, i) lies along a breakline or a .poly
+  // segment; false for an edge only rings or mesh triangles constrain.
+  bool AlongBreakline(Face_handle f, int i) const;
   bool has_values() const { return has_values_; }
   // Bounding box of the input points.
   const BoundingBox& bounding_box() const { return box_; }

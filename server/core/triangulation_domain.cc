@@ -1,6 +1,7 @@
 // Triangulation::Builder's last steps: which faces are in the domain (ring
 // nesting depth, Triangle's segment and hole rules) and the ids of the
-// in-domain triangles (see triangulation_builder.h).
+// in-domain triangles (see triangulation_builder.h); and which edges are
+// breaklines, by the kinds of the constraints along them.
 
 #include <cstdint>
 #include <deque>
@@ -12,6 +13,20 @@
 #include "server/core/triangulation_builder.h"
 
 namespace locator {
+
+bool Triangulation::AlongBreakline(Face_handle f, int i) const {
+  if (!f->is_constrained(i)) return false;
+  const Vertex_handle a = f->vertex(Cdt::cw(i));
+  const Vertex_handle b = f->vertex(Cdt::ccw(i));
+  for (auto c = dt_.contexts_begin(a, b); c != dt_.contexts_end(a, b); ++c) {
+    const ConstraintKind kind = constraint_kinds_.at(c->id());
+    if (kind == ConstraintKind::kBreakline ||
+        kind == ConstraintKind::kSegment) {
+      return true;
+    }
+  }
+  return false;
+}
 
 int Triangulation::Builder::RingCount(Face_handle f, int i) const {
   if (!f->is_constrained(i)) return 0;

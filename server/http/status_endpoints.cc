@@ -29,18 +29,29 @@ std::string HistoryJson(const std::vector<StatsSample>& history) {
   return json.text();
 }
 
-std::string EdgesJson(const std::vector<std::array<Point2, 2>>& edges) {
-  JsonWriter json;
-  json.BeginObject().Key("segments").BeginArray();
-  for (const auto& [a, b] : edges) {
-    json.BeginArray()
+// `segments` as the value of `key`: [[x0, y0, x1, y1], ...].
+void SegmentsJson(const char* key,
+                  const std::vector<std::array<Point2, 2>>& segments,
+                  JsonWriter* json) {
+  json->Key(key).BeginArray();
+  for (const auto& [a, b] : segments) {
+    json->BeginArray()
         .Number(a.x)
         .Number(a.y)
         .Number(b.x)
         .Number(b.y)
         .EndArray();
   }
-  json.EndArray().EndObject();
+  json->EndArray();
+}
+
+std::string EdgesJson(const MapEdges& edges) {
+  JsonWriter json;
+  json.BeginObject();
+  SegmentsJson("segments", edges.segments, &json);
+  SegmentsJson("boundary", edges.boundary, &json);
+  SegmentsJson("breaklines", edges.breaklines, &json);
+  json.EndObject();
   return json.text();
 }
 
@@ -83,7 +94,7 @@ HttpResponse StatusEndpoints::Api(std::string_view path) const {
     return HttpResponse{200, kJson, HistoryJson(sources_.history->Samples())};
   }
   if (path == "/api/edges") {
-    std::vector<std::array<Point2, 2>> edges;
+    MapEdges edges;
     if (!sources_.edges(&edges)) return Loading();
     return HttpResponse{200, kJson, EdgesJson(edges)};
   }

@@ -9,8 +9,13 @@
 //   /api/history  the recent throughput and cost, oldest first:
 //                 {"t": [unix s], "qps": [...], "mean_cost": [...]}, null
 //                 where an interval located no point
-//   /api/edges    a sample of the triangulation's edges,
-//                 {"segments": [[x0, y0, x1, y1], ...]}; 503 while loading
+//   /api/edges    what the map draws of the triangulation, each a list of
+//                 [x0, y0, x1, y1]: {"segments": a sample of its edges,
+//                 "boundary": the domain's boundary and holes,
+//                 "breaklines": its breaklines}, each at most 3000 long
+//                 (Engine::kEdgeSampleSize, Engine::kOutlineSize; evenly
+//                 thinned beyond), the last two empty without constraints;
+//                 503 while loading
 //   /            the status page (index.html); other embedded page files
 //                by name, e.g. /app.js
 //   otherwise    404
@@ -37,9 +42,18 @@
 
 namespace locator {
 
-// Fills its argument with a sample of the serving triangulation's edges;
-// false while no engine serves.
-using EdgeSource = std::function<bool(std::vector<std::array<Point2, 2>>*)>;
+// The lines /api/edges serves, as endpoint pairs.
+struct MapEdges {
+  // A sample of the triangulation's edges (Engine::EdgeSample).
+  std::vector<std::array<Point2, 2>> segments;
+  // Domain boundary and holes, and breaklines (Engine::domain_outline).
+  std::vector<std::array<Point2, 2>> boundary;
+  std::vector<std::array<Point2, 2>> breaklines;
+};
+
+// Fills its argument with the serving triangulation's map edges; false
+// while no engine serves.
+using EdgeSource = std::function<bool(MapEdges*)>;
 
 struct StatusSources {
   // The serving engine's statistics, as GetStats answers them.

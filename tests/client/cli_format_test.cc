@@ -90,6 +90,28 @@ TEST(CliFormatTest, FormatLocateOutsideTheHull) {
   EXPECT_THAT(text, HasSubstr("value        none\n"));
 }
 
+TEST(CliFormatTest, FormatLocateOutsideTheDomainNamesNoTriangle) {
+  v1::LocateResponse response;
+  response.set_type(v1::LOCATION_TYPE_OUTSIDE_DOMAIN);
+  response.set_triangle_id(-1);
+  for (int i = 0; i < 3; ++i) {
+    response.add_vertex_ids(-1);
+    response.add_vertices();
+  }
+  response.add_domain_edge_vertex_ids(4);
+  response.add_domain_edge_vertex_ids(5);
+  response.mutable_cost()->set_faces_visited(2);
+  response.mutable_cost()->set_total(2);
+  EXPECT_EQ(FormatLocate(response),
+            "type         OUTSIDE_DOMAIN\n"
+            "domain edge  4 5\n"
+            "barycentric  none (outside the domain: in a hole or beyond its "
+            "boundary)\n"
+            "value        none\n"
+            "cost         2 (2 faces visited, 0 comparisons, 0 table "
+            "lookups)\n");
+}
+
 TEST(CliFormatTest, MessageToJsonUsesProtoNamesAndPrintsDefaults) {
   v1::LocateResponse response;
   response.set_triangle_id(5);

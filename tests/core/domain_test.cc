@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "server/core/domain_outline.h"
 #include "server/core/locator_factory.h"
+#include "server/core/segment_distance.h"
 #include "server/core/triangulation.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
@@ -84,16 +87,8 @@ std::vector<Point2> HardQueries(const Triangulation& t, uint64_t seed) {
     queries.push_back({box.min_x + u(random) * box.width(),
                        box.min_y + u(random) * box.height()});
   }
-  const auto& dt = t.cgal();
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    if (!dt.is_constrained(*e)) continue;
-    const Point2 a =
-        Triangulation::FromCgal(e->first->vertex(dt.cw(e->second))->point());
-    const Point2 b =
-        Triangulation::FromCgal(e->first->vertex(dt.ccw(e->second))->point());
-    queries.push_back(a);
-    queries.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
-  }
+  const std::vector<Point2> on_edges = test::ConstrainedEdgePoints(t);
+  queries.insert(queries.end(), on_edges.begin(), on_edges.end());
   return queries;
 }
 
@@ -262,6 +257,77 @@ TEST(DomainTest, CrossingBreaklinesGetAnInterpolatedVertex) {
   // 4 breakline points after the 1000 input points, then the crossing.
   EXPECT_EQ(r.vertex_ids[r.feature_index], 1004);
   EXPECT_DOUBLE_EQ(r.value, 5);  // along the first breakline
+}
+
+// Total length of `segments`.
+double Length(const std::vector<std::array<Point2, 2>>& segments) {
+  double length = 0;
+  for (const auto& [a, b] : segments)
+    length += std::hypot(b.x - a.x, b.y - a.y);
+  return length;
+}
+
+// Whether every segment lies on one of `lines`: both ends within 1e-12 of
+// it (a crossing of two breaklines is rounded to doubles).
+bool AllOn(const std::vector<std::array<Point2, 2>>& segments,
+           const std::vector<std::array<Point2, 2>>& lines) {
+  const auto on = [](const std::array<Point2, 2>& line, const Point2& p) {
+    return SegmentDistance2(line[0], line[1], p) <= 1e-24;
+  };
+  return std::all_of(segments.begin(), segments.end(), [&](const auto& s) {
+    return std::any_of(lines.begin(), lines.end(), [&](const auto& line) {
+      return on(line, s[0]) && on(line, s[1]);
+    });
+  });
+}
+
+// The segments of `lines`, closing each one if `closed`.
+std::vector<std::array<Point2, 2>> SegmentsOf(
+    const std::vector<Polyline>& lines, bool closed) {
+  std::vector<std::array<Point2, 2>> segments;
+  for (const Polyline& line : lines) {
+    const size_t n = line.points.size();
+    for (size_t k = 0; k + (closed ? 0 : 1) < n; ++k) {
+      segments.push_back({line.points[k], line.points[(k + 1) % n]});
+    }
+  }
+  return segments;
+}
+
+TEST(DomainTest, OutlineIsTheBoundaryAndTheBreaklines) {
+  const Dataset d = TerrainDataset();
+  const auto t = BuildOk(d);
+  ASSERT_TRUE(t);
+  const DomainOutline outline = OutlineOf(*t, 100'000);
+  const auto rings = SegmentsOf(d.constraints.rings, true);
+  const auto breaklines = SegmentsOf(d.constraints.breaklines, false);
+  EXPECT_TRUE(AllOn(outline.boundary, rings));
+  EXPECT_TRUE(AllOn(outline.breaklines, breaklines));
+  // All of both, once: the pieces add up to the rings and the breaklines.
+  EXPECT_NEAR(Length(outline.boundary), Length(rings), 1e-12);
+  EXPECT_NEAR(Length(outline.breaklines), Length(breaklines), 1e-12);
+
+  // Thinned evenly to the bound.
+  const DomainOutline thin = OutlineOf(*t, 10);
+  EXPECT_LE(thin.boundary.size(), 10u);
+  EXPECT_GE(thin.boundary.size(), 5u);
+  EXPECT_EQ(thin.boundary.front()[0].x, outline.boundary.front()[0].x);
+  EXPECT_EQ(thin.boundary.front()[1].y, outline.boundary.front()[1].y);
+}
+
+TEST(DomainTest, MeshOutlineIsItsHullAndPlainPointsHaveNone) {
+  const auto mesh = BuildOk(AnisotropicMesh(10, 3));
+  ASSERT_TRUE(mesh);
+  const DomainOutline outline = OutlineOf(*mesh, 100'000);
+  // A mesh's own edges are not breaklines; its boundary is the 450 x 9 box.
+  EXPECT_TRUE(outline.breaklines.empty());
+  EXPECT_DOUBLE_EQ(Length(outline.boundary), 2 * (450 + 9));
+
+  const auto plain = BuildOk(GenerateUniform(500, 3));
+  ASSERT_TRUE(plain);
+  const DomainOutline none = OutlineOf(*plain, 100'000);
+  EXPECT_TRUE(none.boundary.empty());
+  EXPECT_TRUE(none.breaklines.empty());
 }
 
 TEST(DomainTest, BadConstraintsArePreciseErrors) {

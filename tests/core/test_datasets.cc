@@ -103,6 +103,21 @@ bool SomeRegionCovers(const std::vector<BoundingBox>& regions,
   return false;
 }
 
+std::vector<Point2> ConstrainedEdgePoints(const Triangulation& t) {
+  std::vector<Point2> points;
+  const auto& dt = t.cgal();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    if (!dt.is_constrained(*e)) continue;
+    const Point2 a =
+        Triangulation::FromCgal(e->first->vertex(dt.cw(e->second))->point());
+    const Point2 b =
+        Triangulation::FromCgal(e->first->vertex(dt.ccw(e->second))->point());
+    points.push_back(a);
+    points.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
+  }
+  return points;
+}
+
 std::vector<LocateResult> ReferenceAnswers(const Triangulation& t,
                                            std::span<const Point2> queries) {
   std::vector<LocateResult> refs;

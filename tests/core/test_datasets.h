@@ -71,6 +71,11 @@ bool Covers(const BoundingBox& outer, const BoundingBox& inner);
 bool SomeRegionCovers(const std::vector<BoundingBox>& regions,
                       const BoundingBox& inner);
 
+// For every constrained edge of `t` (breaklines, boundaries; every edge of
+// a mesh given as triangles), one of its ends and its midpoint: queries on
+// vertices and, where the midpoint is representable, exactly on the edge.
+std::vector<Point2> ConstrainedEdgePoints(const Triangulation& t);
+
 // Triangulation::ReferenceLocate for every query.
 std::vector<LocateResult> ReferenceAnswers(const Triangulation& t,
                                            std::span<const Point2> queries);

@@ -1,7 +1,11 @@
 // Fuzzes the dataset parsers: every input is parsed as CSV/XYZ text, as
 // Triangle .node, .poly and .ele text (the .ele against a fixed .node of four
 // points numbered from 1) and as OFF text, with the limits locatord uses,
-// and as a WKT constraints file.
+// and as a WKT constraints file. Every dataset that parses with constraints
+// (a .poly, a mesh, WKT over the fixed four points) is then triangulated,
+// as locatord would: bad domains and meshes (self-intersecting boundaries,
+// hole points outside every ring, non-manifold or overlapping meshes, empty
+// domains) must be refused, never crash.
 //
 // Aborts unless each parse either
 //   - succeeds with at least one point, finite coordinates and values, values
@@ -13,18 +17,22 @@
 //     finite coordinates and values, values empty or one per point); or
 //   - fails with InvalidArgument or ResourceExhausted and a message that
 //     starts with the file name, followed by ": " or by ":LINE: " with LINE a
-//     line of the input.
+//     line of the input;
+// and unless triangulating a constrained dataset either succeeds with at
+// least one triangle in the domain or fails with InvalidArgument.
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "server/core/dataset.h"
+#include "server/core/triangulation.h"
 
 namespace locator {
 namespace {
@@ -107,6 +115,18 @@ bool SameDoubles(const Dataset& a, const Dataset& b) {
   return true;
 }
 
+// Triangulates `ds` if it has constraints (see the file comment).
+void CheckTriangulates(const Dataset& ds) {
+  if (ds.constraints.empty()) return;
+  std::unique_ptr<Triangulation> t;
+  const Status status = Triangulation::Build(ds, &t);
+  if (status.ok()) {
+    if (t->num_triangles() == 0) Fail("built an empty domain", status);
+  } else if (status.code() != Status::Code::kInvalidArgument) {
+    Fail("triangulating failed with an unexpected code", status);
+  }
+}
+
 void CheckDataset(const Dataset& ds) {
   const Status ok;
   if (ds.points.empty()) Fail("parsed an empty dataset", ok);
@@ -128,6 +148,7 @@ void CheckDataset(const Dataset& ds) {
   const Status reparsed = ParseXyzText(ToCsv(ds), kCsvName, &again);
   if (!reparsed.ok()) Fail("its own CSV does not parse", reparsed);
   if (!SameDoubles(ds, again)) Fail("CSV round trip changed the doubles", ok);
+  CheckTriangulates(ds);
 }
 
 template <typename Parser>
@@ -158,11 +179,13 @@ void CheckPolylines(const std::vector<Polyline>& lines, size_t min_points) {
 }
 
 void CheckWkt(std::string_view text) {
-  DatasetConstraints c;
-  const Status status = ParseWktConstraints(text, kWktName, &c);
+  Dataset ds;
+  ds.points = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+  const Status status = ParseWktConstraints(text, kWktName, &ds.constraints);
   if (!status.ok()) return CheckError(status, text, kWktName);
-  CheckPolylines(c.breaklines, 2);
-  CheckPolylines(c.rings, 3);
+  CheckPolylines(ds.constraints.breaklines, 2);
+  CheckPolylines(ds.constraints.rings, 3);
+  CheckTriangulates(ds);
 }
 
 }  // namespace

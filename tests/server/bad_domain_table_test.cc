@@ -1,7 +1,9 @@
 // The bad-input table, part 3: breaklines, domains and meshes (the harness
 // is dataset_table.h). Every invalid domain or mesh is refused with a message
-// that names the file and line, or the ring, hole point, triangle or edge at
-// fault; a valid one is served with its holes answering OUTSIDE_DOMAIN.
+// that names the file and line (a parse error), or the dataset and the ring,
+// hole point, triangle or edge at fault (a domain or mesh that cannot be
+// served as given); a valid one is served with its holes answering
+// OUTSIDE_DOMAIN.
 
 #include <gtest/gtest.h>
 
@@ -80,6 +82,18 @@ void ExpectLakeAnswersAgreeWithCgal(const ServerProcess& server,
   EXPECT_GE(stats.dataset().constraints(), 8u);
 }
 
+// What locatord says of a dataset it parsed but cannot serve.
+std::string CannotServe(const std::string& spec, const std::string& problem) {
+  return "cannot serve dataset '" + spec + "': INVALID_ARGUMENT: " + problem;
+}
+
+// An OFF mesh of the points (0, 0), (1, 0), (0, 1), (2, 0) and the faces
+// "3 0 1 2" and `second_face`.
+std::string OffWithSecondFace(const std::string& second_face) {
+  return "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n2 0 0\n3 0 1 2\n" + second_face +
+         "\n";
+}
+
 std::vector<DatasetRow> DomainRows() {
   return {
       {.name = "SelfIntersectingBoundary",
@@ -87,8 +101,10 @@ std::vector<DatasetRow> DomainRows() {
        .file_name = "grid.csv",
        .contents = GridCsv(),
        .exit_code = 1,
-       .message = "ring 0 segment 0 and ring 0 segment 2 cross at (2, 2): a "
-                  "domain boundary must not intersect itself",
+       .message = CannotServe("{file}+{dir}/bowtie.wkt",
+                              "ring 0 segment 0 and ring 0 segment 2 cross at "
+                              "(2, 2): a domain boundary must not intersect "
+                              "itself"),
        .more_files = {{"bowtie.wkt", "POLYGON ((0 0, 4 4, 4 0, 0 4, 0 0))\n"}},
        .spec = "{file}+{dir}/bowtie.wkt"},
       {.name = "HoleOutsideBoundary",
@@ -107,8 +123,9 @@ std::vector<DatasetRow> DomainRows() {
        .file_name = "far_hole.poly",
        .contents = SquarePoly("1\n1 9 9\n"),
        .exit_code = 1,
-       .message = "hole point 0 (9, 9) is outside every region bounded by the "
-                  "rings and segments"},
+       .message = CannotServe("{file}",
+                              "hole point 0 (9, 9) is outside every region "
+                              "bounded by the rings and segments")},
       {.name = "EleMissingNodeFile",
        .input = "a .ele without its .node",
        .file_name = "mesh.ele",
@@ -129,21 +146,48 @@ std::vector<DatasetRow> DomainRows() {
        .contents = "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 2 0\n"
                    "3 0 1 2\n3 0 1 3\n3 0 1 4\n",
        .exit_code = 1,
-       .message = "mesh edge (0 1) is shared by triangles 0, 1 and 2 (not a "
-                  "manifold)"},
+       .message = CannotServe("{file}",
+                              "mesh edge (0 1) is shared by triangles 0, 1 "
+                              "and 2 (not a manifold)")},
       {.name = "OverlappingMesh",
        .input = "an OFF mesh whose two triangles overlap",
        .file_name = "overlap.off",
        .contents = "OFF\n6 2 0\n0 0 0\n2 0 0\n0 2 0\n1 -1 0\n1 1.5 0\n3 1 0\n"
                    "3 0 1 2\n3 3 5 4\n",
        .exit_code = 1,
-       .message = "the mesh's triangles overlap"},
+       .message = CannotServe("{file}",
+                              "mesh edge (0 1) of triangle 0 and mesh edge "
+                              "(3 4) of triangle 1 cross at (1, 0): the "
+                              "mesh's triangles overlap")},
+      {.name = "MeshRepeatedCorners",
+       .input = "an OFF mesh with a triangle naming one vertex twice",
+       .file_name = "repeated.off",
+       .contents = OffWithSecondFace("3 0 0 1"),
+       .exit_code = 1,
+       .message = CannotServe("{file}",
+                              "mesh triangle 1 (0 0 1) has repeated corners")},
+      {.name = "MeshCollinearCorners",
+       .input = "an OFF mesh with a triangle on three collinear vertices",
+       .file_name = "collinear.off",
+       .contents = OffWithSecondFace("3 0 1 3"),
+       .exit_code = 1,
+       .message = CannotServe("{file}",
+                              "mesh triangle 1 (0 1 3) has collinear corners")},
+      {.name = "MeshIndexOutOfRange",
+       .input = "an OFF face naming a vertex the file does not have",
+       .file_name = "out_of_range.off",
+       .contents = OffWithSecondFace("3 0 1 7"),
+       .exit_code = 1,
+       .message = "{file}:8: face 1 refers to vertex 7, which is not among "
+                  "the 4 vertices numbered from 0"},
       {.name = "EmptyDomain",
        .input = "a .poly whose only region is a hole",
        .file_name = "all_hole.poly",
        .contents = SquarePoly("1\n1 2 2\n"),
        .exit_code = 1,
-       .message = "the domain is empty: no triangle is inside its boundary"},
+       .message = CannotServe(
+           "{file}",
+           "the domain is empty: no triangle is inside its boundary")},
       {.name = "WktSyntax",
        .input = "a WKT file with a word for a coordinate",
        .file_name = "grid.csv",

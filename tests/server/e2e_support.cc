@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "server/core/triangulation.h"
 #include "tests/testing/wait.h"
@@ -270,10 +272,92 @@ v1::LocateBatchRequest BatchRequestFor(std::span<const Point2> points) {
   return request;
 }
 
+std::vector<LocateResult> LocateEach(
+    v1::Locator::Stub& stub, std::span<const Point2> queries,
+    const std::function<void(const v1::LocateResponse&)>& inspect) {
+  std::vector<LocateResult> answers;
+  answers.reserve(queries.size());
+  for (const Point2& q : queries) {
+    v1::LocateResponse response;
+    const grpc::Status status = LocateOne(stub, q, &response);
+    if (!status.ok()) {
+      ADD_FAILURE() << "Locate " << Describe(q) << ": "
+                    << status.error_message();
+      break;
+    }
+    if (inspect) inspect(response);
+    answers.push_back(FromLocateResponse(response));
+  }
+  return answers;
+}
+
+std::vector<LocateResult> LocateInBatches(v1::Locator::Stub& stub,
+                                          std::span<const Point2> queries,
+                                          size_t batch_size) {
+  std::vector<LocateResult> answers;
+  answers.reserve(queries.size());
+  for (size_t begin = 0; begin < queries.size(); begin += batch_size) {
+    const std::span<const Point2> batch =
+        queries.subspan(begin, std::min(batch_size, queries.size() - begin));
+    grpc::ClientContext context;
+    v1::LocateBatchResponse response;
+    const grpc::Status status =
+        stub.LocateBatch(&context, BatchRequestFor(batch), &response);
+    if (!status.ok()) {
+      ADD_FAILURE() << "LocateBatch: " << status.error_message();
+      break;
+    }
+    if (response.types_size() != static_cast<int>(batch.size()) ||
+        response.vertex_ids_size() != static_cast<int>(3 * batch.size())) {
+      ADD_FAILURE() << "LocateBatch of " << batch.size() << " points answered "
+                    << response.types_size() << " types and "
+                    << response.vertex_ids_size() << " vertex ids";
+      break;
+    }
+    uint64_t cost_sum = 0;
+    for (size_t row = 0; row < batch.size(); ++row) {
+      answers.push_back(FromBatchRow(response, row));
+      cost_sum += response.costs(static_cast<int>(row));
+    }
+    EXPECT_EQ(response.total_cost(), cost_sum);
+  }
+  return answers;
+}
+
+std::vector<LocateResult> LocateOverStream(v1::Locator::Stub& stub,
+                                           std::span<const Point2> queries) {
+  grpc::ClientContext context;
+  auto stream = stub.LocateStream(&context);
+  std::thread writer([&] {
+    for (const Point2& q : queries) {
+      if (!stream->Write(LocateRequestFor(q))) return;
+    }
+    stream->WritesDone();
+  });
+  std::vector<LocateResult> answers;
+  answers.reserve(queries.size());
+  v1::LocateResponse response;
+  while (stream->Read(&response)) {
+    answers.push_back(FromLocateResponse(response));
+  }
+  writer.join();
+  const grpc::Status status = stream->Finish();
+  EXPECT_TRUE(status.ok()) << status.error_message();
+  return answers;
+}
+
 Reference::~Reference() = default;
 
 LocateResult Reference::Locate(const Point2& q) const {
   return triangulation_->ReferenceLocate(q);
+}
+
+std::vector<LocateResult> Reference::LocateAll(
+    std::span<const Point2> queries) const {
+  std::vector<LocateResult> answers;
+  answers.reserve(queries.size());
+  for (const Point2& q : queries) answers.push_back(Locate(q));
+  return answers;
 }
 
 bool Reference::Agrees(const Point2& q, const LocateResult& got,
@@ -302,15 +386,23 @@ Status Reference::FromDataset(Dataset dataset,
 std::string Reference::Disagreements(std::span<const Point2> queries,
                                      std::span<const LocateResult> answers,
                                      bool hull_edge_known) const {
-  if (queries.size() != answers.size()) {
-    return std::to_string(answers.size()) + " answers for " +
+  return Disagreements(queries, answers, LocateAll(queries), hull_edge_known);
+}
+
+std::string Reference::Disagreements(std::span<const Point2> queries,
+                                     std::span<const LocateResult> answers,
+                                     std::span<const LocateResult> wants,
+                                     bool hull_edge_known) const {
+  if (queries.size() != answers.size() || queries.size() != wants.size()) {
+    return std::to_string(answers.size()) + " answers (and " +
+           std::to_string(wants.size()) + " references) for " +
            std::to_string(queries.size()) + " queries";
   }
   std::string report;
   size_t count = 0;
   for (size_t i = 0; i < queries.size(); ++i) {
     const std::string problem =
-        Disagreement(queries[i], answers[i], hull_edge_known);
+        Disagreement(queries[i], answers[i], wants[i], hull_edge_known);
     if (problem.empty()) continue;
     if (++count <= kMaxReported) {
       report += "query " + std::to_string(i) + " " + Describe(queries[i]) +
@@ -324,8 +416,8 @@ std::string Reference::Disagreements(std::span<const Point2> queries,
 }
 
 std::string Reference::Disagreement(const Point2& q, const LocateResult& got,
+                                    const LocateResult& want,
                                     bool hull_edge_known) const {
-  const LocateResult want = Locate(q);
   if (got.type != want.type) {
     return std::string("type ") + std::string(LocationTypeName(got.type)) +
            ", CGAL says " + std::string(LocationTypeName(want.type));

@@ -95,6 +95,22 @@ LocateResult FromBatchRow(const v1::LocateBatchResponse& response, size_t row);
 // Packs `points` into a columnar request with every optional column on.
 v1::LocateBatchRequest BatchRequestFor(std::span<const Point2> points);
 
+// The answers to `queries` over each way a client can send them, in query
+// order. An RPC that fails is a test failure, and the answers end there.
+// One unary Locate per query; `inspect`, if set, sees every response.
+std::vector<LocateResult> LocateEach(
+    v1::Locator::Stub& stub, std::span<const Point2> queries,
+    const std::function<void(const v1::LocateResponse&)>& inspect = nullptr);
+// LocateBatch calls of at most `batch_size` points with every column on;
+// each response's total_cost must be the sum of its costs.
+std::vector<LocateResult> LocateInBatches(v1::Locator::Stub& stub,
+                                          std::span<const Point2> queries,
+                                          size_t batch_size);
+// One LocateStream carrying every query (written from a second thread, as
+// the server stops reading while its answers wait unread).
+std::vector<LocateResult> LocateOverStream(v1::Locator::Stub& stub,
+                                           std::span<const Point2> queries);
+
 // CGAL's own answers for the same dataset file, built in-process.
 class Reference {
  public:
@@ -110,6 +126,8 @@ class Reference {
   const Dataset& dataset() const { return dataset_; }
   // CGAL's own locate() of q.
   LocateResult Locate(const Point2& q) const;
+  // Locate() of every query, in order.
+  std::vector<LocateResult> LocateAll(std::span<const Point2> queries) const;
   // Triangulation::Agrees: `got` and `want` are equally right answers for q.
   bool Agrees(const Point2& q, const LocateResult& got,
               const LocateResult& want) const;
@@ -124,9 +142,16 @@ class Reference {
   std::string Disagreements(std::span<const Point2> queries,
                             std::span<const LocateResult> answers,
                             bool hull_edge_known) const;
+  // As above, with CGAL's answers already known: wants[i] is
+  // Locate(queries[i]).
+  std::string Disagreements(std::span<const Point2> queries,
+                            std::span<const LocateResult> answers,
+                            std::span<const LocateResult> wants,
+                            bool hull_edge_known) const;
 
  private:
   std::string Disagreement(const Point2& q, const LocateResult& got,
+                           const LocateResult& want,
                            bool hull_edge_known) const;
 
   Dataset dataset_;

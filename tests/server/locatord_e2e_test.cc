@@ -8,7 +8,6 @@
 
 #include <memory>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -103,48 +102,29 @@ TEST_F(LocatordTest, ReferenceCheckCatchesWrongAnswers) {
 }
 
 TEST_F(LocatordTest, UnaryAnswersMatchReference) {
-  std::vector<LocateResult> answers;
-  for (const Point2& q : *queries_) {
-    v1::LocateResponse response;
-    const grpc::Status status = LocateOne(*stub_, q, &response);
-    ASSERT_TRUE(status.ok()) << status.error_message();
-    answers.push_back(FromLocateResponse(response));
-    // Unary answers carry the corners' coordinates; they are dataset points.
-    for (int corner = 0; corner < 3; ++corner) {
-      const Point2& p = reference_->dataset().points.at(
-          static_cast<size_t>(response.vertex_ids(corner)));
-      ASSERT_EQ(response.vertices(corner).x(), p.x);
-      ASSERT_EQ(response.vertices(corner).y(), p.y);
-    }
-    ASSERT_EQ(response.cost().total(), response.cost().faces_visited() +
-                                           response.cost().comparisons() +
-                                           response.cost().table_lookups());
-  }
+  const std::vector<LocateResult> answers =
+      LocateEach(*stub_, *queries_, [&](const v1::LocateResponse& response) {
+        // Unary answers carry the corners' coordinates; they are dataset
+        // points.
+        for (int corner = 0; corner < 3; ++corner) {
+          const Point2& p = reference_->dataset().points.at(
+              static_cast<size_t>(response.vertex_ids(corner)));
+          ASSERT_EQ(response.vertices(corner).x(), p.x);
+          ASSERT_EQ(response.vertices(corner).y(), p.y);
+        }
+        ASSERT_EQ(response.cost().total(), response.cost().faces_visited() +
+                                               response.cost().comparisons() +
+                                               response.cost().table_lookups());
+      });
   EXPECT_EQ(reference_->Disagreements(*queries_, answers,
                                       /*hull_edge_known=*/true),
             "");
 }
 
 TEST_F(LocatordTest, BatchAnswersMatchReference) {
-  std::vector<LocateResult> answers;
-  for (size_t begin = 0; begin < queries_->size(); begin += kBatchSize) {
-    const std::span<const Point2> batch =
-        std::span<const Point2>(*queries_).subspan(
-            begin, std::min(kBatchSize, queries_->size() - begin));
-    v1::LocateBatchResponse response;
-    const grpc::Status status = LocateBatch(BatchRequestFor(batch), &response);
-    ASSERT_TRUE(status.ok()) << status.error_message();
-    ASSERT_EQ(response.types_size(), static_cast<int>(batch.size()));
-    ASSERT_EQ(response.vertex_ids_size(), static_cast<int>(3 * batch.size()));
-    uint64_t cost_sum = 0;
-    for (size_t row = 0; row < batch.size(); ++row) {
-      answers.push_back(FromBatchRow(response, row));
-      cost_sum += response.costs(static_cast<int>(row));
-    }
-    EXPECT_EQ(response.total_cost(), cost_sum);
-  }
-  EXPECT_EQ(reference_->Disagreements(*queries_, answers,
-                                      /*hull_edge_known=*/false),
+  EXPECT_EQ(reference_->Disagreements(
+                *queries_, LocateInBatches(*stub_, *queries_, kBatchSize),
+                /*hull_edge_known=*/false),
             "");
 }
 
@@ -178,26 +158,10 @@ TEST_F(LocatordTest, LargeBatchSplitAcrossThreadsMatchesReference) {
 }
 
 TEST_F(LocatordTest, StreamAnswersMatchReferenceInOrder) {
-  grpc::ClientContext context;
-  auto stream = stub_->LocateStream(&context);
-  // Write from a second thread: the server stops reading while its answers
-  // wait unread, so one thread doing both would deadlock.
-  std::thread writer([&] {
-    for (const Point2& q : *queries_) {
-      if (!stream->Write(LocateRequestFor(q))) return;
-    }
-    stream->WritesDone();
-  });
-  std::vector<LocateResult> answers;
-  v1::LocateResponse response;
-  while (stream->Read(&response))
-    answers.push_back(FromLocateResponse(response));
-  writer.join();
-  const grpc::Status status = stream->Finish();
-  ASSERT_TRUE(status.ok()) << status.error_message();
-  EXPECT_EQ(reference_->Disagreements(*queries_, answers,
-                                      /*hull_edge_known=*/true),
-            "");
+  EXPECT_EQ(
+      reference_->Disagreements(*queries_, LocateOverStream(*stub_, *queries_),
+                                /*hull_edge_known=*/true),
+      "");
 }
 
 TEST_F(LocatordTest, GetStatsDescribesDatasetAndCountsQueries) {

@@ -1,14 +1,17 @@
 // locatord status page: polls /api/stats (GetStatsResponse as proto JSON:
 // 64-bit integers arrive as strings) and /api/history, draws the query heat
-// map with hot regions, start points and an edge sample, charts cost and
-// throughput, and records what it rendered in data attributes for scripts
-// and tests.
+// map with hot regions, start points and an edge sample, and over the heat
+// map the domain's boundary and holes and the breaklines of a constrained
+// dataset; charts cost and throughput, and records what it rendered in data
+// attributes for scripts and tests.
 'use strict';
 
 const REFRESH_MS = 1500;
 const HOT_CELLS_LISTED = 10;
 const COLORS = {
   edge: 'rgba(160, 174, 196, 0.4)',
+  boundary: '#f6ad55',
+  breakline: '#b794f4',
   hot: '#4fd1c5',
   start: '#f6e05e',
   axis: '#8b97aa',
@@ -16,8 +19,9 @@ const COLORS = {
   qps: '#63b3ed',
 };
 
-let edgeSegments = [];
-let edgesGeneration = null;  // the serving generation edgeSegments are of
+// /api/edges: the edge sample, the domain's boundary and the breaklines.
+let mapEdges = {segments: [], boundary: [], breaklines: []};
+let edgesGeneration = null;  // the serving generation mapEdges are of
 let renderCount = 0;
 
 function setText(id, text) {
@@ -100,19 +104,24 @@ function hotCells(tuning) {
   return cells;
 }
 
+// Strokes every [x0, y0, x1, y1] of `segments` through the transform t.
+function strokeSegments(ctx, t, segments, color, lineWidth) {
+  ctx.strokeStyle = color;
+  ctx.lineWidth = lineWidth;
+  ctx.beginPath();
+  for (const [x0, y0, x1, y1] of segments) {
+    ctx.moveTo(t.x(x0), t.y(y0));
+    ctx.lineTo(t.x(x1), t.y(y1));
+  }
+  ctx.stroke();
+}
+
 function drawMap(stats) {
   const {ctx, width, height} = prepareCanvas('map');
   const tuning = stats.tuning;
   const t = mapTransform(stats.dataset.bounding_box, width, height);
 
-  ctx.strokeStyle = COLORS.edge;
-  ctx.lineWidth = 0.8;
-  ctx.beginPath();
-  for (const [x0, y0, x1, y1] of edgeSegments) {
-    ctx.moveTo(t.x(x0), t.y(y0));
-    ctx.lineTo(t.x(x1), t.y(y1));
-  }
-  ctx.stroke();
+  strokeSegments(ctx, t, mapEdges.segments, COLORS.edge, 0.8);
 
   const n = tuning.grid_size;
   const cells = hotCells(tuning);
@@ -128,6 +137,15 @@ function drawMap(stats) {
       ctx.fillRect(x0, y1, cellWidth * t.scale, cellHeight * t.scale);
     }
   }
+
+  // Over the heat map: breaklines, then the boundary on top of them.
+  strokeSegments(ctx, t, mapEdges.breaklines, COLORS.breakline, 1.5);
+  strokeSegments(ctx, t, mapEdges.boundary, COLORS.boundary, 2);
+  const layers = document.getElementById('domain-layers');
+  layers.dataset.boundary = String(mapEdges.boundary.length);
+  layers.dataset.breaklines = String(mapEdges.breaklines.length);
+  document.getElementById('domain-legend').hidden =
+      mapEdges.boundary.length === 0 && mapEdges.breaklines.length === 0;
 
   ctx.strokeStyle = COLORS.hot;
   ctx.lineWidth = 2;
@@ -248,13 +266,13 @@ async function fetchJson(path) {
   return {status: response.status, body};
 }
 
-// Fetches the edge sample once per serving generation (it changes only when
-// a reload swaps the dataset).
+// Fetches the map's edges once per serving generation (they change only
+// when a reload swaps the dataset).
 async function ensureEdges(generation) {
   if (generation === edgesGeneration) return;
   const edges = await fetchJson('/api/edges');
   if (edges.status !== 200) return;
-  edgeSegments = edges.body.segments;
+  mapEdges = edges.body;
   edgesGeneration = generation;
 }
 

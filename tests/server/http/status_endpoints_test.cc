@@ -19,6 +19,7 @@
 namespace locator {
 namespace {
 
+using test::JsonArray;
 using test::JsonValue;
 using test::ParseJson;
 using test::ParsePrometheusText;
@@ -39,20 +40,21 @@ class StatusEndpointsTest : public ::testing::Test {
     return StatusEndpoints(
         {.stats = stats,
          .edges =
-             [this](std::vector<std::array<Point2, 2>>* edges) {
+             [this](MapEdges* edges) {
                if (engine_ == nullptr) return false;
-               *edges = engine_->EdgeSample();
+               edges->segments = engine_->EdgeSample();
+               edges->boundary = engine_->domain_outline().boundary;
+               edges->breaklines = engine_->domain_outline().breaklines;
                return true;
              },
          .history = &history_,
          .metrics_text = [collector] { return MetricsText({collector}); }});
   }
 
-  void Load() {
+  void Load(Dataset dataset = GenerateUniform(2000, 3)) {
     std::unique_ptr<Engine> engine;
     ASSERT_TRUE(
-        Engine::Create(GenerateUniform(2000, 3), EngineOptions(), &engine)
-            .ok());
+        Engine::Create(std::move(dataset), EngineOptions(), &engine).ok());
     engine_ = std::move(engine);
   }
 
@@ -111,6 +113,34 @@ TEST_F(StatusEndpointsTest, FollowsTheCurrentEngine) {
   JsonValue edges;
   ASSERT_TRUE(ParseJson(endpoints.Handle("/api/edges").body, &edges).ok());
   EXPECT_EQ(edges["segments"].array().size(), engine_->EdgeSample().size());
+  // A plain point cloud has no domain outline.
+  EXPECT_TRUE(edges["boundary"].array().empty());
+  EXPECT_TRUE(edges["breaklines"].array().empty());
+}
+
+TEST_F(StatusEndpointsTest, EdgesCarryTheDomainBoundaryAndBreaklines) {
+  const StatusEndpoints endpoints = Endpoints();
+  Dataset dataset = GenerateUniform(2000, 3);
+  dataset.constraints.rings = {
+      Polyline{{{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}}, {}},
+      Polyline{{{0.4, 0.4}, {0.6, 0.4}, {0.6, 0.6}, {0.4, 0.6}}, {}}};
+  dataset.constraints.breaklines = {Polyline{{{0.2, 0.2}, {0.3, 0.8}}, {}}};
+  Load(std::move(dataset));
+  const DomainOutline& outline = engine_->domain_outline();
+  ASSERT_FALSE(outline.boundary.empty());
+  ASSERT_FALSE(outline.breaklines.empty());
+  JsonValue edges;
+  ASSERT_TRUE(ParseJson(endpoints.Handle("/api/edges").body, &edges).ok());
+  const JsonArray& boundary = edges["boundary"].array();
+  const JsonArray& breaklines = edges["breaklines"].array();
+  ASSERT_EQ(boundary.size(), outline.boundary.size());
+  ASSERT_EQ(breaklines.size(), outline.breaklines.size());
+  const auto& [a, b] = outline.breaklines.front();
+  ASSERT_EQ(breaklines.front().array().size(), 4u);
+  EXPECT_EQ(breaklines.front().array()[0].number(), a.x);
+  EXPECT_EQ(breaklines.front().array()[1].number(), a.y);
+  EXPECT_EQ(breaklines.front().array()[2].number(), b.x);
+  EXPECT_EQ(breaklines.front().array()[3].number(), b.y);
 }
 
 TEST_F(StatusEndpointsTest, ServesTheEmbeddedPage) {

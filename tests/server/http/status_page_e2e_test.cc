@@ -1,8 +1,11 @@
 // The status page in a real browser: locatord serves clustered traffic,
 // headless Chromium loads "/" and runs its script, and the DOM it leaves
 // must show the heat map's hottest cells inside the cluster and the same
-// figures /api/stats reports. The screenshot is kept as a test artifact
-// (ARTIFACTS_DIR/status_page.png). Skipped when Chromium is not installed.
+// figures /api/stats reports; on a constrained dataset it must have drawn
+// the domain's boundary and holes and the breaklines /api/edges serves,
+// with their legend. The screenshots are kept as test artifacts
+// (ARTIFACTS_DIR/status_page.png, status_page_domain.png). Skipped when
+// Chromium is not installed.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -18,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/status_e2e_support.h"
@@ -124,6 +128,23 @@ std::pair<uint32_t, uint32_t> PngSize(const std::string& png) {
   return {be32(16), be32(20)};
 }
 
+// Takes a 1280x900 screenshot of `url` into ARTIFACTS_DIR/`name` and
+// checks that it is a PNG of that size with something drawn in it.
+void ExpectScreenshotDrawn(const std::string& url, const std::string& name) {
+  const std::string artifacts = ARTIFACTS_DIR;
+  std::filesystem::create_directories(artifacts);
+  const std::string png_path = artifacts + "/" + name;
+  std::filesystem::remove(png_path);
+  RunChromium(url, {"--screenshot=" + png_path, "--window-size=1280,900"});
+  std::ifstream file(png_path, std::ios::binary);
+  ASSERT_TRUE(file.good()) << png_path;
+  const std::string png((std::istreambuf_iterator<char>(file)),
+                        std::istreambuf_iterator<char>());
+  EXPECT_EQ(PngSize(png), std::make_pair(1280u, 900u));
+  // A blank 1280x900 page compresses to a few KB; the drawn one does not.
+  EXPECT_GT(png.size(), 30000u);
+}
+
 TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
   if (access(kChromium, X_OK) != 0) {
     GTEST_SKIP() << kChromium << " is not installed (Debian package chromium)";
@@ -214,18 +235,64 @@ TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
         << "cell " << cell["i"].number() << "," << cell["j"].number();
   }
 
-  const std::string artifacts = ARTIFACTS_DIR;
-  std::filesystem::create_directories(artifacts);
-  const std::string png_path = artifacts + "/status_page.png";
-  std::filesystem::remove(png_path);
-  RunChromium(url, {"--screenshot=" + png_path, "--window-size=1280,900"});
-  std::ifstream file(png_path, std::ios::binary);
-  ASSERT_TRUE(file.good()) << png_path;
-  const std::string png((std::istreambuf_iterator<char>(file)),
-                        std::istreambuf_iterator<char>());
-  EXPECT_EQ(PngSize(png), std::make_pair(1280u, 900u));
-  // A blank 1280x900 page compresses to a few KB; the drawn one does not.
-  EXPECT_GT(png.size(), 30000u);
+  ExpectScreenshotDrawn(url, "status_page.png");
+}
+
+// A .poly terrain: the square [0, 8]^2 with a bay cut in from the top to
+// (4, 5), a square lake (2, 1)-(3, 2) marked by a hole point, and a
+// breakline (1, 3)-(7, 3) through the grid points between its ends.
+std::string TerrainPoly() {
+  std::ostringstream poly;
+  poly << "81 2 0 0\n";
+  for (int i = 0; i < 81; ++i)
+    poly << i << " " << i % 9 << " " << i / 9 << "\n";
+  const auto index = [](int x, int y) { return y * 9 + x; };
+  const std::vector<std::array<int, 2>> segments = {
+      {index(0, 0), index(8, 0)}, {index(8, 0), index(8, 8)},
+      {index(8, 8), index(4, 5)}, {index(4, 5), index(0, 8)},
+      {index(0, 8), index(0, 0)}, {index(2, 1), index(3, 1)},
+      {index(3, 1), index(3, 2)}, {index(3, 2), index(2, 2)},
+      {index(2, 2), index(2, 1)}, {index(1, 3), index(7, 3)}};
+  poly << segments.size() << " 0\n";
+  for (size_t k = 0; k < segments.size(); ++k) {
+    poly << k << " " << segments[k][0] << " " << segments[k][1] << "\n";
+  }
+  poly << "1\n0 2.5 1.5\n";
+  return poly.str();
+}
+
+TEST(StatusPageTest, DomainBoundaryHolesAndBreaklinesAreDrawn) {
+  if (access(kChromium, X_OK) != 0) {
+    GTEST_SKIP() << kChromium << " is not installed (Debian package chromium)";
+  }
+  ScratchDir dir;
+  const std::string poly_path = dir.path() + "/terrain.poly";
+  std::ofstream(poly_path) << TerrainPoly();
+  std::unique_ptr<LocatordWithHttp> server;
+  const Status started = LocatordWithHttp::Start(poly_path, {}, &server);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  const int port = server->http_port();
+
+  const JsonValue edges = GetJson(port, "/api/edges");
+  const size_t boundary = edges["boundary"].array().size();
+  const size_t breaklines = edges["breaklines"].array().size();
+  // The outer boundary (three sides of 8 unit edges, and the bay's two
+  // sides, which pass through no grid point) and the lake's 4 unit edges;
+  // the breakline's 6 unit edges.
+  EXPECT_EQ(boundary, 3 * 8u + 2u + 4u);
+  EXPECT_EQ(breaklines, 6u);
+
+  const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/";
+  const std::string dom = RunChromium(url, {"--dump-dom"});
+  const std::string layers = StartTag(dom, "domain-layers");
+  EXPECT_EQ(Attribute(layers, "data-boundary"), std::to_string(boundary))
+      << dom;
+  EXPECT_EQ(Attribute(layers, "data-breaklines"), std::to_string(breaklines));
+  // The legend names both layers once there are any.
+  const std::string legend = StartTag(dom, "domain-legend");
+  ASSERT_NE(legend, "") << dom;
+  EXPECT_EQ(legend.find(" hidden"), std::string::npos) << legend;
+  ExpectScreenshotDrawn(url, "status_page_domain.png");
 }
 
 }  // namespace

@@ -1,0 +1,49 @@
+#include "server/core/domain_outline.h"
+
+#include <utility>
+
+#include "server/core/triangulation.h"
+
+namespace locator {
+namespace {
+
+using Segments = std::vector<std::array<Point2, 2>>;
+
+// Every k-th of `all` (k as small as keeps at most `max_edges`).
+Segments Thinned(Segments all, size_t max_edges) {
+  if (all.size() <= max_edges) return all;
+  Segments kept;
+  if (max_edges == 0) return kept;
+  const size_t stride = (all.size() + max_edges - 1) / max_edges;
+  kept.reserve(max_edges);
+  for (size_t i = 0; i < all.size(); i += stride) kept.push_back(all[i]);
+  return kept;
+}
+
+}  // namespace
+
+DomainOutline OutlineOf(const Triangulation& t, size_t max_edges) {
+  const auto& dt = t.cgal();
+  // Whether the face beyond an edge is outside the domain (or the hull).
+  const auto out = [&t](Triangulation::Face_handle f) {
+    return t.IsInfinite(f) || !t.InDomain(f);
+  };
+  Segments boundary, breaklines;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const Triangulation::Face_handle f = e->first;
+    const int i = e->second;
+    const Triangulation::Face_handle g = f->neighbor(i);
+    const std::array<Point2, 2> segment = {
+        Triangulation::FromCgal(f->vertex(dt.ccw(i))->point()),
+        Triangulation::FromCgal(f->vertex(dt.cw(i))->point())};
+    if (t.has_domain() && out(f) != out(g)) {
+      boundary.push_back(segment);
+    } else if (t.AlongBreakline(f, i)) {
+      breaklines.push_back(segment);
+    }
+  }
+  return DomainOutline{Thinned(std::move(boundary), max_edges),
+                       Thinned(std::move(breaklines), max_edges)};
+}
+
+}  // namespace locator

@@ -1,0 +1,38 @@
+// DomainOutline: what a map of a constrained dataset draws over the
+// triangulation: the domain's boundary (outer boundaries and holes alike)
+// and its breaklines, as plain segments.
+//
+// Thread-safety: a plain value.
+
+#ifndef LOCATOR_CORE_DOMAIN_OUTLINE_H_
+#define LOCATOR_CORE_DOMAIN_OUTLINE_H_
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "common/geometry.h"
+
+namespace locator {
+
+class Triangulation;
+
+struct DomainOutline {
+  // Edges between an in-domain triangle and an out-of-domain face or the
+  // outside of the hull; empty for a dataset without a domain (rings,
+  // .poly segments or mesh triangles).
+  std::vector<std::array<Point2, 2>> boundary;
+  // Constrained edges that are not boundary edges and lie along a
+  // breakline or a .poly segment (a mesh's own edges are constrained too,
+  // but are not breaklines).
+  std::vector<std::array<Point2, 2>> breaklines;
+};
+
+// The outline of `t`, each list at most `max_edges` long: all its edges if
+// they fit, else every k-th in CGAL's edge order (k as small as keeps the
+// count within `max_edges`). Deterministic; O(edges of t).
+DomainOutline OutlineOf(const Triangulation& t, size_t max_edges);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_DOMAIN_OUTLINE_H_
