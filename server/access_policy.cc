@@ -41,16 +41,12 @@ AccessPolicy::Digest AccessPolicy::Sha256(std::string_view text) {
   return digest;
 }
 
-grpc::Status AccessPolicy::Check(const grpc::ServerContextBase& context,
-                                 Scope scope) const {
+std::optional<std::string_view> AccessPolicy::Authorization(
+    const grpc::ServerContextBase& context) {
   const auto& metadata = context.client_metadata();
   const auto found = metadata.find("authorization");
-  std::optional<std::string_view> authorization;
-  if (found != metadata.end()) {
-    authorization =
-        std::string_view(found->second.data(), found->second.size());
-  }
-  return CheckAuthorization(authorization, scope);
+  if (found == metadata.end()) return std::nullopt;
+  return std::string_view(found->second.data(), found->second.size());
 }
 
 grpc::Status AccessPolicy::CheckAuthorization(
@@ -67,7 +63,8 @@ grpc::Status AccessPolicy::CheckAuthorization(
   std::string_view token;
   if (!ParseBearer(authorization, &token)) {
     return ToGrpcStatus(Refusal::kUnauthenticated,
-                        "expected metadata 'authorization: Bearer <token>'");
+                        "expected 'authorization: Bearer <token>' (gRPC "
+                        "metadata or HTTP header)");
   }
   const Digest presented = Sha256(token);
   bool matched = false;

@@ -7,7 +7,8 @@
 //   admin only       open                            the admin token
 //   both             the data or the admin token     the admin token
 //
-// A call presents a token as metadata "authorization: Bearer <token>".
+// A call presents a token as metadata (gRPC) or header (HTTP)
+// "authorization: Bearer <token>".
 // Missing or malformed: UNAUTHENTICATED. Well formed but not accepted for
 // this RPC: PERMISSION_DENIED. Tokens are compared as SHA-256 digests with
 // CRYPTO_memcmp, so neither the time a comparison takes nor the token's
@@ -15,7 +16,7 @@
 // reflection are not behind the policy (probes carry no token).
 //
 // Holds the tokens' digests only. Thread-safety: immutable after
-// construction; Check() may be called concurrently.
+// construction; CheckAuthorization() may be called concurrently.
 
 #ifndef LOCATOR_SERVER_ACCESS_POLICY_H_
 #define LOCATOR_SERVER_ACCESS_POLICY_H_
@@ -38,13 +39,15 @@ class AccessPolicy {
   // Empty tokens are not required (see the table above).
   AccessPolicy(std::string_view data_token, std::string_view admin_token);
 
-  // OK if the call whose context this is may run an RPC of `scope`;
-  // otherwise the refusal to finish it with. The one line at the top of
-  // every handler.
-  grpc::Status Check(const grpc::ServerContextBase& context, Scope scope) const;
+  // The "authorization" metadata of the gRPC call of `context` (nullopt
+  // when it has none), for CheckAuthorization().
+  static std::optional<std::string_view> Authorization(
+      const grpc::ServerContextBase& context);
 
-  // The same decision from the call's "authorization" metadata value
-  // (nullopt when the call has none).
+  // OK if a call presenting `authorization` (an "authorization" metadata or
+  // HTTP header value; nullopt when the call has none) may run an RPC of
+  // `scope`; otherwise the refusal to finish it with. gRPC and HTTP calls
+  // alike are admitted by it (LocatorService::Admit).
   grpc::Status CheckAuthorization(std::optional<std::string_view> authorization,
                                   Scope scope) const;
 

@@ -18,6 +18,7 @@ namespace {
 
 grpc::Status InterruptedStatus(const CallDeadline& deadline) {
   if (deadline.Passed()) return deadline.ExceededStatus("locating the batch");
+  // Not the deadline, so the client went.
   return grpc::Status(grpc::StatusCode::CANCELLED,
                       "call cancelled while locating the batch");
 }
@@ -27,9 +28,7 @@ grpc::Status InterruptedStatus(const CallDeadline& deadline) {
 // Everything the shards of one call share. The last shard to finish reads
 // the others' results, hence the acquire-release countdown.
 struct BatchLocator::Call {
-  grpc::CallbackServerContext* context = nullptr;
-  CallDeadline deadline;
-  grpc::ServerUnaryReactor* reactor = nullptr;
+  CallControl control;
   const v1::LocateBatchRequest* request = nullptr;
   v1::LocateBatchResponse* response = nullptr;
   BatchColumns columns;
@@ -82,28 +81,43 @@ size_t BatchLocator::ShardCount(size_t points) const {
   return std::clamp<size_t>(points / kMinShardPoints, 1, threads);
 }
 
+BatchLocator::CallControl BatchLocator::ControlFor(
+    grpc::CallbackServerContext* context,
+    grpc::ServerUnaryReactor* reactor) const {
+  return CallControl{
+      .deadline = CallDeadline::For(*context, default_deadline_),
+      .cancelled = [context] { return context->IsCancelled(); },
+      .finish = [reactor](const grpc::Status& s) { reactor->Finish(s); }};
+}
+
 grpc::ServerUnaryReactor* BatchLocator::Serve(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest& request,
     LocateBatchFn locate_batch, v1::LocateBatchResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  Run(request, std::move(locate_batch), ControlFor(context, reactor), response);
+  return reactor;
+}
+
+void BatchLocator::Run(const v1::LocateBatchRequest& request,
+                       LocateBatchFn locate_batch, CallControl control,
+                       v1::LocateBatchResponse* response) {
   if (Status invalid = Validate(request); !invalid.ok()) {
-    reactor->Finish(ToGrpcStatus(invalid));
-    return reactor;
+    control.finish(ToGrpcStatus(invalid));
+    return;
   }
   const size_t points = static_cast<size_t>(request.xs_size());
   const size_t shards = ShardCount(points);
   auto call = std::make_shared<Call>();
-  call->context = context;
-  call->deadline = CallDeadline::For(*context, default_deadline_);
-  call->reactor = reactor;
+  // Once false it stays false: cancellation and a passed deadline are final.
+  call->keep_going = [deadline = control.deadline,
+                      cancelled = control.cancelled] {
+    return !(cancelled && cancelled()) && !deadline.Passed();
+  };
+  call->control = std::move(control);
   call->request = &request;
   call->response = response;
   call->columns = SizeBatchColumns(request, points, response);
   call->locate_batch = std::move(locate_batch);
-  // Once false it stays false: cancellation and a passed deadline are final.
-  call->keep_going = [context, deadline = call->deadline] {
-    return !context->IsCancelled() && !deadline.Passed();
-  };
   call->shards_left.store(shards, std::memory_order_relaxed);
 
   // Shard s covers [s * points / shards, (s + 1) * points / shards).
@@ -115,7 +129,6 @@ grpc::ServerUnaryReactor* BatchLocator::Serve(
         });
   }
   RunShard(call, 0, shard_begin(1));
-  return reactor;
 }
 
 void BatchLocator::RunShard(const std::shared_ptr<Call>& call, size_t begin,
@@ -156,15 +169,16 @@ void BatchLocator::Complete(Call* call) {
     MutexLock lock(&call->failure_mu);
     failure = call->failure;
   }
+  const std::function<void(const grpc::Status&)>& finish = call->control.finish;
   if (failure.ok()) {
     call->response->set_total_cost(
         call->total_cost.load(std::memory_order_relaxed));
-    call->reactor->Finish(grpc::Status::OK);
+    finish(grpc::Status::OK);
   } else if (!call->keep_going()) {
     // Whatever failed, the client has gone or stopped waiting.
-    call->reactor->Finish(InterruptedStatus(call->deadline));
+    finish(InterruptedStatus(call->control.deadline));
   } else {
-    call->reactor->Finish(ToGrpcStatus(failure));
+    finish(ToGrpcStatus(failure));
   }
 }
 

@@ -26,6 +26,7 @@
 #include "common/geometry.h"
 #include "common/status.h"
 #include "locator/v1/locator.pb.h"
+#include "server/call_deadline.h"
 #include "server/core/locate_result.h"
 #include "server/worker_pool.h"
 
@@ -42,6 +43,16 @@ class BatchLocator {
       std::span<const Point2> points, std::vector<LocateResult>* results,
       const std::function<bool()>& keep_going)>;
 
+  // How one call is carried out, whatever transport brought it (gRPC,
+  // HTTP).
+  struct CallControl {
+    CallDeadline deadline;
+    // Whether the client has gone; null when the transport cannot tell.
+    std::function<bool()> cancelled;
+    // Receives the call's outcome, once, on the thread that finished it.
+    std::function<void(const grpc::Status&)> finish;
+  };
+
   // Splits large batches across `threads` threads (the caller plus
   // threads - 1 pool workers), rejects batches above `max_batch_points` and
   // stops a batch whose client set no deadline after `default_deadline`
@@ -52,15 +63,32 @@ class BatchLocator {
   BatchLocator(const BatchLocator&) = delete;
   BatchLocator& operator=(const BatchLocator&) = delete;
 
-  // Serves one LocateBatch call: validates `request` (xs/ys lengths, the
+  // Runs one LocateBatch call: validates `request` (xs/ys lengths, the
   // point limit, finite coordinates), locates its points with `locate_batch`
   // into `response` while the call is neither cancelled nor past its
-  // deadline (see CallDeadline), and finishes the returned reactor with the
-  // outcome (CANCELLED or DEADLINE_EXCEEDED when interrupted).
+  // deadline, and calls control.finish with the outcome (CANCELLED or
+  // DEADLINE_EXCEEDED when interrupted), possibly before returning.
+  // `request` and `response` must live until then.
+  void Run(const v1::LocateBatchRequest& request, LocateBatchFn locate_batch,
+           CallControl control, v1::LocateBatchResponse* response);
+
+  // The control of the gRPC call of `context`: its deadline (or the
+  // server's default) and cancellation, finishing `reactor`.
+  CallControl ControlFor(grpc::CallbackServerContext* context,
+                         grpc::ServerUnaryReactor* reactor) const;
+
+  // Run() for the gRPC call of `context` (see ControlFor), finishing the
+  // returned reactor.
   grpc::ServerUnaryReactor* Serve(grpc::CallbackServerContext* context,
                                   const v1::LocateBatchRequest& request,
                                   LocateBatchFn locate_batch,
                                   v1::LocateBatchResponse* response);
+
+  // The deadline of a call that carries none (HTTP): the server's default
+  // from now.
+  CallDeadline DefaultDeadline() const {
+    return CallDeadline::ServerDefault(default_deadline_);
+  }
 
   // The checks Serve() makes before locating anything: xs and ys of equal
   // length (InvalidArgument), at most max_batch_points points

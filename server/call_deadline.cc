@@ -6,11 +6,18 @@ namespace locator {
 
 CallDeadline CallDeadline::For(const grpc::CallbackServerContext& context,
                                std::chrono::milliseconds server_default) {
-  CallDeadline deadline;
-  deadline.when = context.deadline();
   // gRPC reports "no deadline" as the largest time_point.
-  if (deadline.when == std::chrono::system_clock::time_point::max() &&
-      server_default.count() > 0) {
+  if (context.deadline() == std::chrono::system_clock::time_point::max()) {
+    return ServerDefault(server_default);
+  }
+  return CallDeadline{.when = context.deadline()};
+}
+
+CallDeadline CallDeadline::ServerDefault(
+    std::chrono::milliseconds server_default) {
+  CallDeadline deadline;
+  deadline.when = std::chrono::system_clock::time_point::max();
+  if (server_default.count() > 0) {
     deadline.when = std::chrono::system_clock::now() + server_default;
     deadline.server_default = server_default;
   }

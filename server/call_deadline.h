@@ -25,6 +25,9 @@ struct CallDeadline {
   // none) standing in for a deadline the client did not set.
   static CallDeadline For(const grpc::CallbackServerContext& context,
                           std::chrono::milliseconds server_default);
+  // The deadline of a call that cannot carry one (HTTP): `server_default`
+  // from now (zero: none).
+  static CallDeadline ServerDefault(std::chrono::milliseconds server_default);
 
   bool Passed() const { return std::chrono::system_clock::now() >= when; }
   // Whether a deadline the client did not set has to be enforced by the

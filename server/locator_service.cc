@@ -1,5 +1,6 @@
 #include "server/locator_service.h"
 
+#include <map>
 #include <type_traits>
 #include <utility>
 
@@ -11,11 +12,6 @@
 
 namespace locator {
 namespace {
-
-grpc::Status LoadingStatus() {
-  return grpc::Status(grpc::StatusCode::UNAVAILABLE,
-                      "dataset is still loading");
-}
 
 using StreamReactor =
     grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>;
@@ -47,13 +43,16 @@ StreamReactor* Refuse(grpc::CallbackServerContext* /*context*/,
 }
 
 // Every handler's prologue: serves the call with `serve(admission)` if
-// service->Admit() lets it in, or ends it with the refusal.
+// service->Admit() lets it in for `dataset` (nullopt: no single dataset),
+// or ends it with the refusal.
 template <typename Reactor, typename Serve>
 Reactor* AdmitThen(LocatorService* service,
                    grpc::CallbackServerContext* context,
-                   AccessPolicy::Scope scope, Serve serve) {
+                   AccessPolicy::Scope scope,
+                   std::optional<std::string_view> dataset, Serve serve) {
   LocatorService::Admission admission;
-  if (grpc::Status refused = service->Admit(*context, scope, &admission);
+  if (grpc::Status refused =
+          service->Admit(*context, scope, dataset, &admission);
       !refused.ok()) {
     return Refuse(context, refused, std::type_identity<Reactor>());
   }
@@ -66,60 +65,54 @@ LocatorService::LocatorService(const LocatorServiceOptions& options)
     : default_deadline_(options.default_deadline),
       redact_(options.access.redact),
       access_(options.access.data_token, options.access.admin_token),
-      reload_policy_(options.reload_policy),
       batch_locator_(options.batch_threads, options.max_batch_points,
                      options.default_deadline),
-      reloader_(
-          [this, build = options.build_engine](const std::string& dataset,
-                                               std::shared_ptr<Engine>* built) {
-            if (!build) {
-              return Status::FailedPrecondition("this server cannot reload");
-            }
-            const std::shared_ptr<Engine> serving = engine();
-            return build(dataset, serving.get(), built);
-          },
-          [this](std::shared_ptr<Engine> engine) {
-            return Publish(std::move(engine));
-          }) {}
+      registry_(options.datasets, options.reload_dir, options.build_engine) {}
 
-uint64_t LocatorService::Publish(std::shared_ptr<Engine> engine) {
-  MutexLock lock(&engine_mu_);
-  engine_ = std::move(engine);
-  return ++generation_;
-}
-
-std::shared_ptr<Engine> LocatorService::engine() const {
-  MutexLock lock(&engine_mu_);
-  return engine_;
-}
-
-bool LocatorService::CurrentStats(v1::GetStatsResponse* stats) const {
-  std::shared_ptr<Engine> engine;
-  uint64_t generation;
-  {
-    MutexLock lock(&engine_mu_);
-    engine = engine_;
-    generation = generation_;
+Status LocatorService::Resolve(std::string_view name,
+                               Admission* admission) const {
+  DatasetSlot* slot = nullptr;
+  if (Status status = registry_.Find(name, &slot); !status.ok()) {
+    return status;
   }
-  if (engine == nullptr) return false;
-  FillStats(*engine, generation, stats);
-  return true;
+  DatasetSlot::Serving serving = slot->serving();
+  if (serving.engine == nullptr) {
+    return Status::Unavailable("dataset '" + slot->name() +
+                               "' is still loading");
+  }
+  admission->dataset = slot;
+  admission->engine = std::move(serving.engine);
+  admission->generation = serving.generation;
+  return Status::OK();
+}
+
+Status LocatorService::CurrentStats(std::string_view dataset,
+                                    v1::GetStatsResponse* stats) const {
+  Admission current;
+  if (Status status = Resolve(dataset, &current); !status.ok()) return status;
+  FillStats(*current.dataset, *current.engine, current.generation, stats);
+  return Status::OK();
+}
+
+Status LocatorService::ServingEngine(std::string_view dataset,
+                                     std::shared_ptr<Engine>* engine) const {
+  Admission current;
+  if (Status status = Resolve(dataset, &current); !status.ok()) return status;
+  *engine = std::move(current.engine);
+  return Status::OK();
 }
 
 EngineStats LocatorService::OutputStats(const Engine& engine) const {
   return redact_ ? RedactStats(engine.Stats()) : engine.Stats();
 }
 
-void LocatorService::FillStats(const Engine& engine, uint64_t generation,
+void LocatorService::FillStats(const DatasetSlot& dataset, const Engine& engine,
+                               uint64_t generation,
                                v1::GetStatsResponse* response) const {
   ToGetStatsResponse(OutputStats(engine), response);
+  response->mutable_dataset()->set_name(dataset.name());
   response->set_generation(generation);
-  response->set_reload_in_progress(reloader_.in_progress());
-}
-
-Status LocatorService::StartReload(const std::string& dataset,
-                                   EngineReloader::Done done) {
-  return reloader_.Start(dataset, std::move(done));
+  response->set_reload_in_progress(dataset.reload_in_progress());
 }
 
 void LocatorService::Drain(std::chrono::system_clock::time_point deadline) {
@@ -127,34 +120,88 @@ void LocatorService::Drain(std::chrono::system_clock::time_point deadline) {
   drain_gate_.WaitUntilIdle(deadline);
 }
 
-grpc::Status LocatorService::Admit(const grpc::CallbackServerContext& context,
-                                   AccessPolicy::Scope scope,
-                                   Admission* admission) {
+grpc::Status LocatorService::Admit(
+    std::optional<std::string_view> authorization, AccessPolicy::Scope scope,
+    std::optional<std::string_view> dataset, Admission* admission) {
   admission->ticket = drain_gate_.Enter();
   if (admission->ticket == nullptr) {
     return ToGrpcStatus(Refusal::kShuttingDown, "server is shutting down");
   }
-  if (grpc::Status denied = access_.Check(context, scope); !denied.ok()) {
+  if (grpc::Status denied = access_.CheckAuthorization(authorization, scope);
+      !denied.ok()) {
     return denied;
   }
-  {
-    MutexLock lock(&engine_mu_);
-    admission->engine = engine_;
-    admission->generation = generation_;
+  if (!dataset.has_value()) return grpc::Status::OK;
+  return ToGrpcStatus(Resolve(*dataset, admission));
+}
+
+grpc::Status LocatorService::Admit(const grpc::CallbackServerContext& context,
+                                   AccessPolicy::Scope scope,
+                                   std::optional<std::string_view> dataset,
+                                   Admission* admission) {
+  return Admit(AccessPolicy::Authorization(context), scope, dataset, admission);
+}
+
+grpc::Status LocatorService::RunLocate(const Admission& call,
+                                       const v1::LocateRequest& request,
+                                       v1::LocateResponse* response) const {
+  LocateResult result;
+  const Status status = LocateInRequestCrs(*call.engine, request, &result);
+  if (status.ok()) ToLocateResponse(result, response);
+  return ToGrpcStatus(status);
+}
+
+void LocatorService::RunLocateBatch(Admission call,
+                                    const v1::LocateBatchRequest& request,
+                                    BatchLocator::CallControl control,
+                                    v1::LocateBatchResponse* response) {
+  // Points in another CRS are validated first (an oversized batch must not
+  // pay for a transform), then transformed once, into a copy that the
+  // function holds.
+  std::shared_ptr<v1::LocateBatchRequest> in_dataset_crs;
+  if (!request.crs().empty()) {
+    in_dataset_crs = std::make_shared<v1::LocateBatchRequest>();
+    Status status = batch_locator_.Validate(request);
+    if (status.ok()) {
+      status = BatchInDatasetCrs(*call.engine, request, in_dataset_crs.get());
+    }
+    if (!status.ok()) {
+      control.finish(ToGrpcStatus(status));
+      return;
+    }
   }
-  return admission->engine != nullptr ? grpc::Status::OK : LoadingStatus();
+  // The function (and with it the admission) lives until the batch ends.
+  batch_locator_.Run(
+      in_dataset_crs ? *in_dataset_crs : request,
+      [call = std::move(call), in_dataset_crs](
+          std::span<const Point2> points, std::vector<LocateResult>* results,
+          const std::function<bool()>& keep_going) {
+        return call.engine->LocateBatch(points, results, keep_going);
+      },
+      std::move(control), response);
+}
+
+void LocatorService::RunListDatasets(v1::ListDatasetsResponse* response) const {
+  for (const std::unique_ptr<DatasetSlot>& slot : registry_.slots()) {
+    v1::DatasetEntry* entry = response->add_datasets();
+    const DatasetSlot::Serving serving = slot->serving();
+    if (serving.engine != nullptr) {
+      ToDatasetEntry(OutputStats(*serving.engine), serving.generation, entry);
+      entry->mutable_stats()->set_name(slot->name());
+    }
+    entry->set_name(slot->name());
+    entry->set_is_default(slot->is_default());
+    entry->set_serving(serving.engine != nullptr);
+  }
 }
 
 grpc::ServerUnaryReactor* LocatorService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
     v1::LocateResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
-      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
-        LocateResult result;
-        const Status status =
-            LocateInRequestCrs(*call.engine, *request, &result);
-        if (status.ok()) ToLocateResponse(result, response);
-        return FinishNow(context, ToGrpcStatus(status));
+      this, context, AccessPolicy::Scope::kData, request->dataset(),
+      [&](Admission call) {
+        return FinishNow(context, RunLocate(call, *request, response));
       });
 }
 
@@ -162,66 +209,59 @@ grpc::ServerUnaryReactor* LocatorService::LocateBatch(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
     v1::LocateBatchResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
-      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
-        // Points in another CRS are validated first (an oversized batch
-        // must not pay for a transform), then transformed once, into a copy
-        // that the function holds.
-        std::shared_ptr<v1::LocateBatchRequest> in_dataset_crs;
-        if (!request->crs().empty()) {
-          in_dataset_crs = std::make_shared<v1::LocateBatchRequest>();
-          Status status = batch_locator_.Validate(*request);
-          if (status.ok()) {
-            status =
-                BatchInDatasetCrs(*call.engine, *request, in_dataset_crs.get());
-          }
-          if (!status.ok()) {
-            return FinishNow(context, ToGrpcStatus(status));
-          }
-        }
-        // The function (and with it the admission) lives until the batch
-        // ends.
-        return batch_locator_.Serve(
-            context, in_dataset_crs ? *in_dataset_crs : *request,
-            [call = std::move(call), in_dataset_crs](
-                std::span<const Point2> points,
-                std::vector<LocateResult>* results,
-                const std::function<bool()>& keep_going) {
-              return call.engine->LocateBatch(points, results, keep_going);
-            },
-            response);
+      this, context, AccessPolicy::Scope::kData, request->dataset(),
+      [&](Admission call) {
+        grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+        RunLocateBatch(std::move(call), *request,
+                       batch_locator_.ControlFor(context, reactor), response);
+        return reactor;
       });
 }
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
 LocatorService::LocateStream(grpc::CallbackServerContext* context) {
   return AdmitThen<StreamReactor>(
-      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
-        // The reactor holds the function (and with it the admission) until
-        // done.
+      this, context, AccessPolicy::Scope::kData, std::nullopt,
+      [&](Admission call) {
+        // The reactor holds the function (and with it the admission and the
+        // engines the stream resolved) until done. Its reactions run one at
+        // a time, so `resolved` needs no lock of its own.
         return new LocateStreamReactor(
             context, default_deadline_,
-            [call = std::move(call)](const v1::LocateRequest& request,
-                                     LocateResult* result) {
-              return LocateInRequestCrs(*call.engine, request, result);
+            [this, call = std::move(call),
+             resolved = std::map<const DatasetSlot*, Admission>()](
+                const v1::LocateRequest& request,
+                LocateResult* result) mutable {
+              Admission dataset;
+              if (Status status = Resolve(request.dataset(), &dataset);
+                  !status.ok()) {
+                return status;
+              }
+              const Admission& pinned =
+                  resolved.try_emplace(dataset.dataset, std::move(dataset))
+                      .first->second;
+              return LocateInRequestCrs(*pinned.engine, request, result);
             });
       });
 }
 
 grpc::ServerUnaryReactor* LocatorService::GetStats(
-    grpc::CallbackServerContext* context,
-    const v1::GetStatsRequest* /*request*/, v1::GetStatsResponse* response) {
+    grpc::CallbackServerContext* context, const v1::GetStatsRequest* request,
+    v1::GetStatsResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
-      this, context, AccessPolicy::Scope::kData, [&](Admission call) {
-        FillStats(*call.engine, call.generation, response);
+      this, context, AccessPolicy::Scope::kData, request->dataset(),
+      [&](Admission call) {
+        FillStats(*call.dataset, *call.engine, call.generation, response);
         return FinishNow(context, grpc::Status::OK);
       });
 }
 
 grpc::ServerUnaryReactor* LocatorService::Retune(
-    grpc::CallbackServerContext* context, const v1::RetuneRequest* /*request*/,
+    grpc::CallbackServerContext* context, const v1::RetuneRequest* request,
     v1::RetuneResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
-      this, context, AccessPolicy::Scope::kAdmin, [&](Admission call) {
+      this, context, AccessPolicy::Scope::kAdmin, request->dataset(),
+      [&](Admission call) {
         call.engine->Retune();
         ToTuningStats(OutputStats(*call.engine).tuning,
                       /*include_histogram=*/false, response->mutable_tuning());
@@ -233,27 +273,42 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
     grpc::CallbackServerContext* context, const v1::ReloadRequest* request,
     v1::ReloadResponse* response) {
   return AdmitThen<grpc::ServerUnaryReactor>(
-      this, context, AccessPolicy::Scope::kAdmin, [&](Admission call) {
-        std::string dataset;
+      this, context, AccessPolicy::Scope::kAdmin, request->name(),
+      [&](Admission call) {
+        DatasetSlot* dataset = call.dataset;
+        std::string spec;
         if (grpc::Status denied =
-                reload_policy_.Resolve(request->dataset(), &dataset);
+                dataset->reload_policy().Resolve(request->dataset(), &spec);
             !denied.ok()) {
           return FinishNow(context, denied);
         }
         grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
         // The reload thread finishes the call; the admission it holds until
         // then keeps a drain waiting for the build.
-        const Status started = StartReload(
-            dataset, [this, reactor, response, call = std::move(call)](
-                         const Status& status, std::shared_ptr<Engine> engine,
-                         uint64_t generation) {
+        const Status started = dataset->StartReload(
+            spec, [this, reactor, response, call = std::move(call)](
+                      const Status& status, std::shared_ptr<Engine> engine,
+                      uint64_t generation) {
               if (status.ok()) {
                 ToReloadResponse(OutputStats(*engine), generation, response);
+                response->mutable_dataset()->set_name(call.dataset->name());
               }
               reactor->Finish(ToGrpcStatus(status));
             });
         if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
         return reactor;
+      });
+}
+
+grpc::ServerUnaryReactor* LocatorService::ListDatasets(
+    grpc::CallbackServerContext* context,
+    const v1::ListDatasetsRequest* /*request*/,
+    v1::ListDatasetsResponse* response) {
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kData, std::nullopt,
+      [&](Admission /*call*/) {
+        RunListDatasets(response);
+        return FinishNow(context, grpc::Status::OK);
       });
 }
 

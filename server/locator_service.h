@@ -1,45 +1,55 @@
-// LocatorService: the locator.v1.Locator gRPC service (callback API) over an
-// Engine that is published once the dataset has been triangulated.
+// LocatorService: the locator.v1.Locator gRPC service (callback API) over
+// the server's named datasets (DatasetRegistry), each served by an Engine
+// that is published once its dataset has been triangulated.
 //
-// Owns the BatchLocator (and with it the batch worker pool) and the
-// AccessPolicy. The engine is shared: every call copies the reference under
-// a mutex when it starts, so an engine stays alive until the calls using it
-// have finished. (Not std::atomic<std::shared_ptr>: libstdc++ 12's spins on
-// a lock bit; see server/core/snapshot_slot.h.)
+// Owns the DatasetRegistry, the BatchLocator (and with it the batch worker
+// pool) and the AccessPolicy. Engines are shared: a call copies its
+// dataset's engine reference when it is admitted, so an engine stays alive
+// until the calls using it have finished.
 //
-// Every output of the engine's statistics, here (GetStats, Retune, Reload)
-// and elsewhere (CurrentStats(): /api/stats, /metrics, logs), is made from
-// OutputStats(), which applies --redact once.
+// Every output of an engine's statistics, here (GetStats, Retune, Reload,
+// ListDatasets) and elsewhere (CurrentStats(): /api/stats, /metrics, logs),
+// is made from OutputStats(), which applies --redact once.
 //
-// Every handler starts with Admit(), which refuses, in this order: calls
-// started after Drain() began (UNAVAILABLE "server is shutting down"; see
-// DrainGate), calls the AccessPolicy does not allow (UNAUTHENTICATED /
-// PERMISSION_DENIED), and, until Publish(), every call (UNAVAILABLE "dataset
-// is still loading").
+// Every call, gRPC or HTTP, is admitted by Admit(), which refuses, in this
+// order: calls started after Drain() began (UNAVAILABLE "server is shutting
+// down"; see DrainGate), calls the AccessPolicy does not allow
+// (UNAUTHENTICATED / PERMISSION_DENIED), calls naming an unknown dataset
+// (NOT_FOUND listing the known names), and calls to a dataset whose first
+// engine is still being built (UNAVAILABLE "dataset 'NAME' is still
+// loading"). The dataset is resolved there once per call; a LocateStream
+// names none at its start, and each of its messages is routed by its own
+// `dataset` field (the engine serving that dataset when the stream first
+// named it answers the stream's later messages for it too).
 //
-// Thread-safety: all methods may be called concurrently, Publish() included.
+// The work of each RPC, after admission, is one Run*() method that the
+// gRPC handlers and the HTTP/JSON API (server/http/json_api.h) both call.
+//
+// Thread-safety: all methods may be called concurrently.
 
 #ifndef LOCATOR_SERVER_LOCATOR_SERVICE_H_
 #define LOCATOR_SERVER_LOCATOR_SERVICE_H_
 
 #include <grpcpp/grpcpp.h>
 
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
-#include "common/mutex.h"
 #include "common/status.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/access_policy.h"
 #include "server/batch_locator.h"
 #include "server/core/engine.h"
+#include "server/dataset_flag.h"
+#include "server/dataset_registry.h"
 #include "server/drain_gate.h"
-#include "server/engine_reloader.h"
-#include "server/reload_policy.h"
 #include "server/security_config.h"
 
 namespace locator {
@@ -54,37 +64,34 @@ struct LocatorServiceOptions {
   std::chrono::milliseconds default_deadline{0};
   // Tokens and redaction.
   AccessConfig access;
-  // Which datasets a Reload RPC may load (the default: only the configured
-  // one).
-  ReloadPolicy reload_policy;
-  // Builds the engine for a dataset spec ("": the configured dataset), given
-  // the engine serving now (null before the first); runs on the reload
-  // thread. Unset: reloads fail with FAILED_PRECONDITION.
-  std::function<Status(const std::string& dataset, Engine* serving,
-                       std::shared_ptr<Engine>* built)>
-      build_engine;
+  // The datasets, in flag order; the first is the default. By default one,
+  // "default", whose configured spec is "".
+  std::vector<DatasetConfig> datasets = {DatasetConfig()};
+  // --reload-dir: what a Reload may load besides a dataset's own spec (see
+  // ReloadPolicy); empty: only that.
+  std::string reload_dir;
+  // Builds a dataset's engines, at start and on reloads. Unset: reloads
+  // fail with FAILED_PRECONDITION.
+  DatasetBuild build_engine;
 };
 
 class LocatorService final : public v1::Locator::CallbackService {
  public:
   explicit LocatorService(const LocatorServiceOptions& options);
 
-  // Starts answering with `engine`; calls already running keep the engine
-  // they started with. Returns its generation.
-  uint64_t Publish(std::shared_ptr<Engine> engine) EXCLUDES(engine_mu_);
+  // The datasets served.
+  DatasetRegistry& datasets() { return registry_; }
+  const DatasetRegistry& datasets() const { return registry_; }
 
-  // The engine new calls use, or null while the dataset is loading.
-  std::shared_ptr<Engine> engine() const EXCLUDES(engine_mu_);
-
-  // Fills `stats` as GetStats would answer now (redacted with --redact);
-  // false, and nothing filled, while the dataset is loading.
-  bool CurrentStats(v1::GetStatsResponse* stats) const EXCLUDES(engine_mu_);
-
-  // Builds an engine for `dataset` ("": the configured one) with
-  // options.build_engine on the reload thread and publishes it; then calls
-  // `done` there with the outcome (see EngineReloader::Start).
-  // FailedPrecondition "reload in progress" while another build runs.
-  Status StartReload(const std::string& dataset, EngineReloader::Done done);
+  // Fills `stats` as GetStats for `dataset` ("": the default) would answer
+  // now (redacted with --redact). NotFound for an unknown dataset,
+  // Unavailable while it is loading (nothing filled then).
+  Status CurrentStats(std::string_view dataset,
+                      v1::GetStatsResponse* stats) const;
+  // Sets `engine` to the engine serving `dataset` now, with
+  // CurrentStats()'s errors.
+  Status ServingEngine(std::string_view dataset,
+                       std::shared_ptr<Engine>* engine) const;
 
   // Refuses new calls from now on (UNAVAILABLE) and waits until the calls
   // already admitted have ended or `deadline` passes. Called when the server
@@ -94,15 +101,45 @@ class LocatorService final : public v1::Locator::CallbackService {
   // What an admitted call runs with. Whatever finishes the call holds it:
   // the ticket keeps the call counted as in flight.
   struct Admission {
+    // The dataset the call is for and the engine serving it then; null for
+    // calls that name none (ListDatasets, LocateStream).
+    DatasetSlot* dataset = nullptr;
     std::shared_ptr<Engine> engine;
     uint64_t generation = 0;  // of `engine`
     DrainGate::Ticket ticket;
   };
 
-  // OK if a call with `context` may run an RPC of `scope` now, with
-  // `*admission` set; otherwise the refusal to finish it with (see above).
+  // OK if a call presenting `authorization` (the "authorization" metadata or
+  // header value; nullopt without one) may run an RPC of `scope` on
+  // `dataset` ("": the default; nullopt: a call about no single dataset)
+  // now, with `*admission` set; otherwise the refusal to finish it with
+  // (see above).
+  grpc::Status Admit(std::optional<std::string_view> authorization,
+                     AccessPolicy::Scope scope,
+                     std::optional<std::string_view> dataset,
+                     Admission* admission);
+  // The same for the gRPC call of `context`.
   grpc::Status Admit(const grpc::CallbackServerContext& context,
-                     AccessPolicy::Scope scope, Admission* admission);
+                     AccessPolicy::Scope scope,
+                     std::optional<std::string_view> dataset,
+                     Admission* admission);
+
+  // The work of Locate on an admitted call.
+  grpc::Status RunLocate(const Admission& call,
+                         const v1::LocateRequest& request,
+                         v1::LocateResponse* response) const;
+  // The work of LocateBatch on an admitted call, finished through
+  // control.finish (see BatchLocator::Run); `request` and `response` must
+  // live until then.
+  void RunLocateBatch(Admission call, const v1::LocateBatchRequest& request,
+                      BatchLocator::CallControl control,
+                      v1::LocateBatchResponse* response);
+  // The work of ListDatasets.
+  void RunListDatasets(v1::ListDatasetsResponse* response) const;
+  // The deadline a call without one is held to (see BatchLocator).
+  CallDeadline DefaultDeadline() const {
+    return batch_locator_.DefaultDeadline();
+  }
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
                                    const v1::LocateRequest* request,
@@ -122,31 +159,35 @@ class LocatorService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Retune(grpc::CallbackServerContext* context,
                                    const v1::RetuneRequest* request,
                                    v1::RetuneResponse* response) override;
-  // Loads what options.reload_policy allows (PERMISSION_DENIED otherwise).
-  // Finishes when the new engine serves or the build failed (see
-  // StartReload); the callback thread is not held meanwhile.
+  // Loads into the dataset request.name names what its reload policy
+  // allows (PERMISSION_DENIED otherwise). Finishes when the new engine
+  // serves or the build failed (see DatasetSlot::StartReload); the callback
+  // thread is not held meanwhile. The other datasets are not touched.
   grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
                                    const v1::ReloadRequest* request,
                                    v1::ReloadResponse* response) override;
+  grpc::ServerUnaryReactor* ListDatasets(
+      grpc::CallbackServerContext* context,
+      const v1::ListDatasetsRequest* request,
+      v1::ListDatasetsResponse* response) override;
 
  private:
+  // Sets admission's dataset, engine and generation for `name` ("": the
+  // default): NotFound for an unknown one, Unavailable while it loads.
+  Status Resolve(std::string_view name, Admission* admission) const;
   // `engine`'s statistics as every output shows them: redacted with
   // --redact.
   EngineStats OutputStats(const Engine& engine) const;
-  // Fills `response` for `engine` serving as `generation`.
-  void FillStats(const Engine& engine, uint64_t generation,
-                 v1::GetStatsResponse* response) const;
+  // Fills `response` for `engine` serving `dataset` as `generation`.
+  void FillStats(const DatasetSlot& dataset, const Engine& engine,
+                 uint64_t generation, v1::GetStatsResponse* response) const;
 
   const std::chrono::milliseconds default_deadline_;
   const bool redact_;
   const AccessPolicy access_;
-  const ReloadPolicy reload_policy_;
   DrainGate drain_gate_;
-  mutable Mutex engine_mu_;
-  std::shared_ptr<Engine> engine_ GUARDED_BY(engine_mu_);
-  uint64_t generation_ GUARDED_BY(engine_mu_) = 0;
   BatchLocator batch_locator_;
-  EngineReloader reloader_;
+  DatasetRegistry registry_;  // last: its reload threads use the rest
 };
 
 }  // namespace locator

@@ -1,31 +1,32 @@
-// locatord: serves point location in one dataset's Delaunay triangulation
-// over gRPC (locator.v1.Locator).
+// locatord: serves point location in the triangulations of one or more
+// named datasets over gRPC (locator.v1.Locator) and, with --http-listen,
+// HTTP/JSON.
 //
-// The server starts listening (NOT_SERVING) before the dataset is loaded, so
-// that orchestration sees the process alive while a large triangulation is
-// built; locate calls meanwhile answer UNAVAILABLE. Exit codes: 0 after a
-// signal-initiated drain, 1 when the dataset cannot be served or the address
-// cannot be bound, 2 for bad flags.
+// The server starts listening (NOT_SERVING) before any dataset is loaded,
+// so that orchestration sees the process alive while large triangulations
+// are built; the datasets are built one after another, in flag order, and
+// calls to one still loading answer UNAVAILABLE. Health reports SERVING
+// once every dataset serves. Exit codes: 0 after a signal-initiated drain,
+// 1 when a dataset cannot be served or an address cannot be bound, 2 for bad
+// flags.
 
-#include <array>
 #include <boost/asio/post.hpp>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
-#include "server/core/dataset.h"
 #include "server/core/engine.h"
-#include "server/dataset_source.h"
+#include "server/dataset_builder.h"
+#include "server/dataset_registry.h"
 #include "server/http/status_server.h"
 #include "server/locator_service.h"
 #include "server/server_config.h"
+#include "server/server_log.h"
 #include "server/server_runner.h"
 
 namespace locator {
@@ -33,111 +34,32 @@ namespace {
 
 constexpr char kProgram[] = "locatord";
 
-// One stderr line, written whole when the statement ends.
-class LogLine {
- public:
-  LogLine() { line_ << kProgram << ' '; }
-  ~LogLine() { std::cerr << line_.str() << std::endl; }
-  template <typename T>
-  LogLine& operator<<(const T& value) {
-    line_ << value;
-    return *this;
-  }
-
- private:
-  std::ostringstream line_;
-};
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-      .count();
-}
-
-// Writes `engine`'s learned tuning to the state dir if it changed since the
-// last save. A failure is logged; serving goes on.
-void SaveTuningStateOrWarn(Engine& engine, std::string_view when) {
-  const Status status = engine.SaveTuningState();
-  if (!status.ok()) {
-    LogLine() << "warning: cannot save the tuning state " << when << ": "
-              << status.ToString();
+// SIGHUP reloads every dataset that serves from its configured spec, each
+// on its own, like a Reload RPC naming it; one still loading its first
+// engine is left to finish.
+void ReloadOnHangup(LocatorService& service, const DatasetBuilder& builder) {
+  for (const std::unique_ptr<DatasetSlot>& slot : service.datasets().slots()) {
+    const std::string_view tag = builder.Tag(*slot);
+    if (slot->serving().engine == nullptr) {
+      LogLine(tag) << "SIGHUP: still loading, not reloaded";
+      continue;
+    }
+    LogLine(tag) << "SIGHUP: reloading " << slot->spec();
+    const Status started = slot->StartReload(
+        "", [tag](const Status& status, std::shared_ptr<Engine> engine,
+                  uint64_t generation) {
+          if (!status.ok()) return;  // DatasetBuilder said why
+          LogLine(tag) << "reloaded: serving "
+                       << engine->dataset_info().triangles
+                       << " triangles as generation " << generation;
+        });
+    if (!started.ok()) LogLine(tag) << "SIGHUP ignored: " << started.message();
   }
 }
 
-// Says where a new engine's tuning came from, and why a state file in the
-// state dir was ignored.
-void LogTuningState(const Engine& engine) {
-  const PersistenceSummary p = engine.Stats().tuning.persistence;
-  if (p.state_path.empty()) return;
-  if (p.restored_from_state) {
-    LogLine() << "restored the tuning state from " << p.state_path;
-  } else if (!p.load_error.empty()) {
-    LogLine() << "warning: ignoring the tuning state " << p.state_path << ": "
-              << p.load_error;
-  } else {
-    LogLine() << "no tuning state at " << p.state_path << " yet";
-  }
-}
-
-// Loads the dataset and triangulates it, logging progress.
-Status LoadAndTriangulate(const ServerConfig& config,
-                          const std::string& dataset_spec,
-                          std::shared_ptr<Engine>* engine) {
-  LogLine() << "loading dataset " << dataset_spec;
-  const auto load_start = std::chrono::steady_clock::now();
-  Dataset dataset;
-  if (Status status =
-          LoadServedDataset(dataset_spec, config.dataset_limits, &dataset);
-      !status.ok()) {
-    return status;
-  }
-  LogLine() << "loaded " << dataset.points.size() << " points in "
-            << SecondsSince(load_start) << " s; triangulating";
-  std::unique_ptr<Engine> created;
-  if (Status status =
-          Engine::Create(std::move(dataset), config.engine, &created);
-      !status.ok()) {
-    return status;
-  }
-  const DatasetInfo& info = created->dataset_info();
-  LogLine() << "built " << info.triangles << " triangles over " << info.vertices
-            << " vertices (" << info.duplicates_merged
-            << " duplicates merged) in " << info.build_seconds << " s";
-  LogTuningState(*created);
-  *engine = std::move(created);
-  return Status::OK();
-}
-
-// Builds the engine for `spec` ("": --dataset) at start and on reloads.
-// Before a reload it saves the serving engine's tuning, so that reloading
-// the same points continues from it.
-Status BuildEngine(const ServerConfig& config, const std::string& spec,
-                   Engine* serving, std::shared_ptr<Engine>* engine) {
-  if (serving != nullptr) SaveTuningStateOrWarn(*serving, "before the reload");
-  const Status status =
-      LoadAndTriangulate(config, spec.empty() ? config.dataset : spec, engine);
-  if (!status.ok() && serving != nullptr) {
-    LogLine() << "reload failed, still serving the previous dataset: "
-              << status.ToString();
-  }
-  return status;
-}
-
-// SIGHUP reloads the configured dataset, like a Reload RPC without one.
-void ReloadOnHangup(const ServerConfig& config, LocatorService& service) {
-  LogLine() << "SIGHUP: reloading " << config.dataset;
-  const Status started = service.StartReload(
-      "", [](const Status& status, std::shared_ptr<Engine> engine,
-             uint64_t generation) {
-        if (!status.ok()) return;  // BuildEngine said why
-        LogLine() << "reloaded: serving " << engine->dataset_info().triangles
-                  << " triangles as generation " << generation;
-      });
-  if (!started.ok()) LogLine() << "SIGHUP ignored: " << started.message();
-}
-
-// Periodic work acts on whichever engine the service currently publishes.
-void StartPeriodicWork(const ServerConfig& config,
-                       const LocatorService& service, StatusServer* status,
+// Periodic work acts on whichever engines the datasets serve at the time.
+void StartPeriodicWork(const ServerConfig& config, LocatorService& service,
+                       const DatasetBuilder& builder, StatusServer* status,
                        ServerRunner* runner) {
   if (status != nullptr) {
     // The first sample is the baseline the first interval is measured from.
@@ -146,41 +68,97 @@ void StartPeriodicWork(const ServerConfig& config,
                      [status] { status->SampleHistory(); });
   }
   if (config.stats_interval_s > 0) {
-    runner->RunEvery(config.stats_interval_s, [&service] {
-      v1::GetStatsResponse stats;
-      if (!service.CurrentStats(&stats)) return;
-      LogLine() << "stats: queries=" << stats.queries_served()
-                << " mean_cost_recent=" << stats.mean_cost_recent()
-                << " snapshot_version=" << stats.tuning().snapshot_version();
+    runner->RunEvery(config.stats_interval_s, [&service, &builder] {
+      for (const std::unique_ptr<DatasetSlot>& slot :
+           service.datasets().slots()) {
+        v1::GetStatsResponse stats;
+        if (!service.CurrentStats(slot->name(), &stats).ok()) continue;
+        LogLine(builder.Tag(*slot))
+            << "stats: queries=" << stats.queries_served()
+            << " mean_cost_recent=" << stats.mean_cost_recent()
+            << " snapshot_version=" << stats.tuning().snapshot_version();
+      }
     });
   }
   if (config.retune_interval_s > 0) {
     // On the loop thread, which has nothing else to do between signals.
-    runner->RunEvery(config.retune_interval_s,
-                     [&service] { service.engine()->Retune(); });
+    runner->RunEvery(config.retune_interval_s, [&service] {
+      for (const std::unique_ptr<DatasetSlot>& slot :
+           service.datasets().slots()) {
+        if (std::shared_ptr<Engine> engine = slot->serving().engine) {
+          engine->Retune();
+        }
+      }
+    });
   }
 }
 
-// On the loop thread, once the first engine is built (and published) or
-// its build failed.
-void ServeOrExit(const Status& built, const Engine* engine,
-                 const ServerConfig& config, const LocatorService& service,
-                 StatusServer* status_server, ServerRunner* runner) {
-  if (!built.ok()) {
+// Builds the datasets' first engines one after another, in flag order, so
+// that the point budget is taken in that order; once all serve, the server
+// reports SERVING. A dataset that cannot be built stops the server.
+class StartupBuilds {
+ public:
+  StartupBuilds(const ServerConfig& config, LocatorService& service,
+                const DatasetBuilder& builder, StatusServer* status_server,
+                ServerRunner* runner)
+      : config_(config),
+        service_(service),
+        builder_(builder),
+        status_server_(status_server),
+        runner_(runner) {}
+
+  // Starts building dataset `index` (the first: 0). The build runs off the
+  // loop, so that signals are handled meanwhile, and hands its outcome to
+  // the loop, which owns every state change of the process.
+  void Start(size_t index) {
+    DatasetSlot& slot = *service_.datasets().slots()[index];
+    // A first build is a reload from nothing, which nothing can refuse.
+    const Status started = slot.StartReload(
+        "", [this, index](const Status& status, std::shared_ptr<Engine> engine,
+                          uint64_t /*generation*/) {
+          boost::asio::post(runner_->io_context(),
+                            [this, index, status, engine] {
+                              Built(index, status, engine.get());
+                            });
+        });
+    if (!started.ok()) Fail(slot, started);
+  }
+
+ private:
+  // On the loop thread, once dataset `index`'s first build has ended.
+  // `engine` is the one built (null when the build failed).
+  void Built(size_t index, const Status& status, const Engine* engine) {
+    const DatasetSlot& slot = *service_.datasets().slots()[index];
+    if (!status.ok()) {
+      Fail(slot, status);
+      return;
+    }
+    LogLine(builder_.Tag(slot))
+        << "serving " << engine->dataset_info().triangles << " triangles";
+    if (index + 1 < service_.datasets().slots().size()) {
+      Start(index + 1);
+      return;
+    }
+    runner_->SetServing(true);
+    if (index > 0) LogLine() << "serving all " << index + 1 << " datasets";
+    StartPeriodicWork(config_, service_, builder_, status_server_, runner_);
+  }
+
+  void Fail(const DatasetSlot& slot, const Status& status) {
     // Parse errors name the file and line themselves; whole-dataset
     // problems (too few points, all collinear) need the spec said.
-    LogLine() << "cannot serve dataset '" << config.dataset
-              << "': " << built.ToString()
-              << (built.code() == Status::Code::kResourceExhausted
-                      ? " (see --max-dataset-points)"
-                      : "");
-    runner->Stop(1);
-    return;
+    LogLine() << "cannot serve dataset "
+              << (slot.named() ? slot.name() + "=" : std::string()) << "'"
+              << slot.spec() << "': " << status.ToString();
+    runner_->Stop(1);
   }
-  runner->SetServing(true);
-  LogLine() << "serving " << engine->dataset_info().triangles << " triangles";
-  StartPeriodicWork(config, service, status_server, runner);
-}
+
+  const ServerConfig& config_;
+  LocatorService& service_;
+  const DatasetBuilder& builder_;
+  StatusServer* const status_server_;
+  ServerRunner* const runner_;
+};
 
 // Ends the process once ServerRunner::Run() has returned `exit_code`: the
 // log streams are flushed, and nothing still alive is torn down (see
@@ -199,15 +177,18 @@ int Main(int argc, char** argv) {
     return *exit_code;
   }
 
+  DatasetBuilder builder(config);
   LocatorService service(LocatorServiceOptions{
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points,
       .default_deadline = config.serving.transport.default_deadline,
       .access = config.access,
-      .reload_policy = ReloadPolicy(config.dataset, config.reload_dir),
-      .build_engine = [&config](const std::string& spec, Engine* serving,
-                                std::shared_ptr<Engine>* engine) {
-        return BuildEngine(config, spec, serving, engine);
+      .datasets = config.datasets,
+      .reload_dir = config.reload_dir,
+      .build_engine = [&builder](const DatasetSlot& slot,
+                                 const std::string& spec, Engine* serving,
+                                 std::shared_ptr<Engine>* engine) {
+        return builder.Build(slot, spec, serving, engine);
       }});
   // With --http-listen, every gRPC call is counted for /metrics.
   std::unique_ptr<StatusServer> status_server;
@@ -215,20 +196,9 @@ int Main(int argc, char** argv) {
       std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
       interceptors;
   if (config.http_enabled()) {
-    // It gets the statistics as GetStats answers them (redacted with
-    // --redact), never the engine's own.
     status_server = std::make_unique<StatusServer>(
-        [&service](v1::GetStatsResponse* stats) {
-          return service.CurrentStats(stats);
-        },
-        [&service](MapEdges* edges) {
-          const std::shared_ptr<Engine> engine = service.engine();
-          if (engine == nullptr) return false;
-          edges->segments = engine->EdgeSample();
-          edges->boundary = engine->domain_outline().boundary;
-          edges->breaklines = engine->domain_outline().breaklines;
-          return true;
-        });
+        &service, HttpOptions{.max_body_bytes = config.http_max_body_bytes,
+                              .cors_origins = config.http_cors_origins});
     interceptors.push_back(status_server->NewInterceptorFactory());
   }
   std::unique_ptr<ServerRunner> runner;
@@ -252,31 +222,22 @@ int Main(int argc, char** argv) {
   runner->OnDrain([&service](std::chrono::system_clock::time_point deadline) {
     service.Drain(deadline);
   });
-  runner->OnHangup([&] { ReloadOnHangup(config, service); });
-  runner->BeforeExit([&service] {
-    if (std::shared_ptr<Engine> engine = service.engine()) {
-      SaveTuningStateOrWarn(*engine, "at exit");
+  runner->OnHangup([&] { ReloadOnHangup(service, builder); });
+  runner->BeforeExit([&service, &builder] {
+    for (const std::unique_ptr<DatasetSlot>& slot :
+         service.datasets().slots()) {
+      if (std::shared_ptr<Engine> engine = slot->serving().engine) {
+        DatasetBuilder::SaveTuningStateOrWarn(*engine, builder.Tag(*slot),
+                                              "at exit");
+      }
     }
   });
 
-  // The first build is a reload from nothing, which nothing can refuse. It
-  // runs off the loop so that signals are handled meanwhile, and hands its
-  // outcome to the loop, which owns every state change of the process. What
-  // the callbacks refer to here outlives them: the process ends below
+  // What the callbacks refer to here outlives them: the process ends below
   // without unwinding this frame.
-  const Status first_build = service.StartReload(
-      "", [&](const Status& status, std::shared_ptr<Engine> engine,
-              uint64_t /*generation*/) {
-        boost::asio::post(runner->io_context(), [&, status, engine] {
-          ServeOrExit(status, engine.get(), config, service,
-                      status_server.get(), runner.get());
-        });
-      });
-  if (!first_build.ok()) {
-    LogLine() << "cannot load dataset '" << config.dataset
-              << "': " << first_build.ToString();
-    runner->Stop(1);
-  }
+  StartupBuilds startup(config, service, builder, status_server.get(),
+                        runner.get());
+  startup.Start(0);
   ExitWithoutTeardown(runner->Run());
 }
 

@@ -229,4 +229,11 @@ void ToReloadResponse(const EngineStats& stats, uint64_t generation,
                 response->mutable_tuning());
 }
 
+void ToDatasetEntry(const EngineStats& stats, uint64_t generation,
+                    v1::DatasetEntry* entry) {
+  ToDatasetStats(stats.dataset, entry->mutable_stats());
+  entry->set_strategy(stats.strategy);
+  entry->set_generation(generation);
+}
+
 }  // namespace locator

@@ -68,6 +68,12 @@ void ToGetStatsResponse(const EngineStats& stats,
 void ToReloadResponse(const EngineStats& stats, uint64_t generation,
                       v1::ReloadResponse* response);
 
+// Fills the statistics, strategy and generation of a ListDatasets entry for
+// the engine with `stats` serving as `generation` (the service adds the
+// name and the serving flags).
+void ToDatasetEntry(const EngineStats& stats, uint64_t generation,
+                    v1::DatasetEntry* entry);
+
 }  // namespace locator
 
 #endif  // LOCATOR_SERVER_PROTO_CONVERT_H_

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "server/flag_parsing.h"
 
@@ -35,7 +36,12 @@ struct EngineFlags {
   std::string stats_interval_s;
   std::string retune_interval_s;
   std::string state_dir;
-  std::string http_listen;
+};
+
+struct HttpFlags {
+  std::string listen;
+  std::string max_body_bytes;
+  std::vector<std::string> cors_origins;
 };
 
 void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
@@ -120,10 +126,64 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       "also re-tune this often; 0 = only by query count")(
       "state-dir", po::value(&flags->state_dir)->default_value(""),
       "self-tuning: directory where the learned tuning persists across "
-      "restarts and reloads; empty = off")(
-      "http-listen", po::value(&flags->http_listen)->default_value(""),
-      "HOST:PORT for /metrics and the status page; port 0 lets the OS pick "
-      "(the chosen port is printed); empty = off");
+      "restarts and reloads (a dataset named by NAME=SPEC keeps its files "
+      "in DIR/NAME, made if missing); empty = off");
+}
+
+void AddHttpFlags(const ServerConfig& defaults, HttpFlags* flags,
+                  po::options_description* description) {
+  description->add_options()(
+      "http-listen", po::value(&flags->listen)->default_value(""),
+      "HOST:PORT for /metrics, the status page, the web example (/web/) and "
+      "the HTTP/JSON API (/v1/); port 0 lets the OS pick (the chosen port is "
+      "printed); empty = off")(
+      "http-max-body-bytes",
+      po::value(&flags->max_body_bytes)
+          ->default_value(std::to_string(defaults.http_max_body_bytes >> 20) +
+                          "MiB"),
+      "larger HTTP request bodies get 413 (bytes; B, KiB, MiB, GiB suffix)")(
+      "http-cors-origin", po::value(&flags->cors_origins)->composing(),
+      "an origin (scheme://host[:port], exact) whose web pages may call the "
+      "HTTP server (CORS); repeatable; none = CORS off");
+}
+
+// An exact origin as browsers send it: http(s)://host[:port], nothing after.
+Status CheckCorsOrigin(const std::string& origin) {
+  const size_t scheme_end = origin.find("://");
+  const std::string_view scheme = std::string_view(origin).substr(
+      0, scheme_end == std::string::npos ? 0 : scheme_end);
+  if (scheme != "http" && scheme != "https") {
+    return FlagError("http-cors-origin", origin,
+                     "expected http://HOST[:PORT] or https://HOST[:PORT]");
+  }
+  const std::string_view rest = std::string_view(origin).substr(scheme_end + 3);
+  if (rest.empty() || rest.find_first_of("/?#* ") != std::string_view::npos) {
+    return FlagError("http-cors-origin", origin,
+                     "an origin is scheme://host[:port] exactly, without a "
+                     "path or wildcards");
+  }
+  return Status::OK();
+}
+
+Status ReadHttpFlags(const HttpFlags& flags, ServerConfig* config) {
+  if (!flags.listen.empty()) {
+    if (Status status = ParseListenAddress(flags.listen, &config->http_host,
+                                           &config->http_port);
+        !status.ok()) {
+      return FlagError("http-listen", flags.listen, status.message());
+    }
+  }
+  if (Status status = ParseByteFlag("http-max-body-bytes", flags.max_body_bytes,
+                                    1024, std::numeric_limits<uint32_t>::max(),
+                                    &config->http_max_body_bytes);
+      !status.ok()) {
+    return status;
+  }
+  for (const std::string& origin : flags.cors_origins) {
+    if (Status status = CheckCorsOrigin(origin); !status.ok()) return status;
+  }
+  config->http_cors_origins = flags.cors_origins;
+  return Status::OK();
 }
 
 // The state dir must exist (locatord does not create directories), and only
@@ -175,13 +235,6 @@ Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
                           &config->retune_interval_s);
   }
   if (status.ok()) status = ReadStateDir(flags, &engine);
-  if (status.ok() && !flags.http_listen.empty()) {
-    status = ParseListenAddress(flags.http_listen, &config->http_host,
-                                &config->http_port);
-    if (!status.ok()) {
-      return FlagError("http-listen", flags.http_listen, status.message());
-    }
-  }
   return status;
 }
 
@@ -256,36 +309,45 @@ Status ParseListenAddress(std::string_view text, std::string* host, int* port) {
 Status ParseServerConfig(int argc, const char* const argv[],
                          ServerConfig* config, std::string* help) {
   const ServerConfig defaults;
-  std::string dataset;
+  std::vector<std::string> datasets;
   std::string max_dataset_points;
   std::string reload_dir;
   ServingFlags serving;
   EngineFlags engine;
+  HttpFlags http;
   AccessFlags access;
   po::options_description description("locatord flags");
   description.add_options()(
-      "dataset", po::value(&dataset)->default_value(defaults.dataset),
-      "FILE (CSV/XYZ or .node) | uniform:N[:SEED] | clusters:N:K[:SEED] | "
+      "dataset", po::value(&datasets)->composing(),
+      "[NAME=]SPEC, repeatable: a dataset to serve, named NAME (requests "
+      "name it in their `dataset` field); the first given is the default "
+      "dataset, and a bare SPEC (first only) is named \"default\". SPEC: "
+      "FILE (CSV/XYZ, .node, .poly, .ele, .off, POINTS+CONSTRAINTS.wkt) | "
+      "uniform:N[:SEED] | clusters:N:K[:SEED] | "
       "GIS.gpkg|.shp|.geojson|.fgb[?OPTIONS] | ogr:SOURCE[?OPTIONS] "
-      "(OPTIONS: layer=, z=, where=, breaklines=, domain=, a_srs=, oo=)")(
+      "(OPTIONS: layer=, z=, where=, breaklines=, domain=, a_srs=, oo=). "
+      "Default: uniform:1000000:1")(
       "max-dataset-points",
       po::value(&max_dataset_points)
           ->default_value(std::to_string(defaults.dataset_limits.max_points)),
-      "larger datasets fail before they are triangulated (~200 bytes per "
+      "points all datasets together may hold: a dataset that would take "
+      "the total beyond it fails before it is triangulated (~200 bytes per "
       "point once built)")(
       "reload-dir", po::value(&reload_dir)->default_value(""),
       "a Reload RPC may also load generator specs and the files inside this "
       "directory (resolved; no escape by .. or symlinks); everything else "
-      "but --dataset is PERMISSION_DENIED; empty = only --dataset");
+      "but a dataset's own spec is PERMISSION_DENIED; empty = only those");
   AddServingFlags(defaults.serving, &serving, &description);
   AddEngineFlags(defaults, &engine, &description);
+  AddHttpFlags(defaults, &http, &description);
   AddAccessFlags(&access, &description);
 
   Status status = ParseCommandLine(argc, argv, "locatord", description, help);
   if (!status.ok() || !help->empty()) return status;
-  if (dataset.empty())
-    return FlagError("dataset", dataset, "must not be empty");
-  config->dataset = dataset;
+  if (!datasets.empty()) {
+    status = ParseDatasetFlags(datasets, &config->datasets);
+    if (!status.ok()) return status;
+  }
   std::error_code error;
   if (!reload_dir.empty() &&
       !std::filesystem::is_directory(reload_dir, error)) {
@@ -297,6 +359,7 @@ Status ParseServerConfig(int argc, const char* const argv[],
                         &config->dataset_limits.max_points);
   if (status.ok()) status = ReadServingFlags(serving, &config->serving);
   if (status.ok()) status = ReadEngineFlags(engine, config);
+  if (status.ok()) status = ReadHttpFlags(http, config);
   if (status.ok()) status = ReadAccessFlags(access, &config->access);
   return status;
 }

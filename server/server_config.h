@@ -14,10 +14,12 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <vector>
 
 #include "common/status.h"
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
+#include "server/dataset_flag.h"
 #include "server/security_config.h"
 
 namespace locator {
@@ -43,15 +45,17 @@ struct ServingConfig {
 // locatord's flags.
 struct ServerConfig {
   ServingConfig serving;
-  // --dataset: a file path, generator spec or OGR source (see
-  // LoadServedDataset).
-  std::string dataset = "uniform:1000000:1";
-  // --max-dataset-points: a larger dataset fails before it is triangulated
+  // --dataset [NAME=]SPEC, repeatable, in flag order (the first is the
+  // default dataset; see DatasetConfig): a file path, generator spec or OGR
+  // source each (see LoadServedDataset). Never empty.
+  std::vector<DatasetConfig> datasets = {{.spec = "uniform:1000000:1"}};
+  // --max-dataset-points: the points all datasets together may hold; one
+  // that would take the total beyond it fails before it is triangulated
   // (each point costs ~200 bytes resident once triangulated).
   DatasetLimits dataset_limits{.max_points = 10'000'000};
   // --reload-dir: a Reload RPC may load generator specs and the files inside
-  // this directory besides --dataset (see ReloadPolicy). Empty: only
-  // --dataset.
+  // this directory besides a dataset's own spec (see ReloadPolicy). Empty:
+  // only those.
   std::string reload_dir;
   // --token-file, --admin-token-file, --redact.
   AccessConfig access;
@@ -66,6 +70,11 @@ struct ServerConfig {
   // lets the OS pick. Off (empty host) by default.
   std::string http_host;
   int http_port = 0;
+  // --http-max-body-bytes: larger HTTP request bodies get 413.
+  size_t http_max_body_bytes = size_t{16} << 20;
+  // --http-cors-origin, repeatable: the exact origins (scheme://host[:port])
+  // whose pages may call the HTTP server; empty: CORS is off.
+  std::vector<std::string> http_cors_origins;
 
   bool http_enabled() const { return !http_host.empty(); }
 };

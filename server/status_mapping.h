@@ -1,5 +1,5 @@
 // The one place where a core Status, or the service's refusal of a call,
-// becomes a gRPC status.
+// becomes a gRPC status, and a gRPC status an HTTP one.
 //
 // Every RPC that fails because the core said so goes through ToGrpcStatus, so
 // a client sees the same code for the same cause whichever RPC it used. The
@@ -32,6 +32,14 @@ enum class Refusal {
 
 // The gRPC status for `refusal`, with `message`.
 grpc::Status ToGrpcStatus(Refusal refusal, const std::string& message);
+
+// The HTTP status the HTTP/JSON API answers a call that ended with `code`,
+// as grpc-gateway maps them: OK 200, INVALID_ARGUMENT, FAILED_PRECONDITION
+// and OUT_OF_RANGE 400, UNAUTHENTICATED 401, PERMISSION_DENIED 403,
+// NOT_FOUND 404, ALREADY_EXISTS and ABORTED 409, RESOURCE_EXHAUSTED 429,
+// CANCELLED 499, UNIMPLEMENTED 501, UNAVAILABLE 503, DEADLINE_EXCEEDED 504,
+// the rest 500.
+unsigned HttpStatusFor(grpc::StatusCode code);
 
 }  // namespace locator
 

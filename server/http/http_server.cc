@@ -1,7 +1,9 @@
 #include "server/http/http_server.h"
 
+#include <boost/asio/post.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
+#include <cctype>
 #include <optional>
 #include <utility>
 
@@ -27,10 +29,11 @@ std::string Unbracketed(const std::string& host) {
 
 }  // namespace
 
-// One client connection: reads a request, writes the response, and repeats
-// while the client keeps the connection alive. Owned by the completion
-// handlers in flight (shared_from_this), so it lives exactly as long as it
-// has work queued.
+// One client connection: reads a request, hands it to the handler, writes
+// its reply, and repeats while the client keeps the connection alive. Owned
+// by the completion handlers and the reply function in flight
+// (shared_from_this), so it lives exactly as long as it has work pending.
+// Its members are only touched on the server's thread.
 class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
  public:
   Connection(HttpServer* server, tcp::socket socket)
@@ -42,20 +45,100 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
   void Read() {
     parser_.emplace();
     parser_->header_limit(kMaxHeaderBytes);
-    parser_->body_limit(kMaxBodyBytes);
+    parser_->body_limit(server_->max_body_bytes_);
     stream_.expires_after(kIdleTimeout);
-    http::async_read(
+    http::async_read_header(
         stream_, buffer_, *parser_,
         [self = shared_from_this()](beast::error_code error, size_t) {
-          // Closed, timed out, malformed or over a limit: drop the
-          // connection (the destructor closes the socket).
-          if (!error) self->Write(self->parser_->release());
+          // A Content-Length over the body limit fails here, with the
+          // header read. Closed, timed out, malformed or over the header
+          // limit: drop the connection (the destructor closes the socket).
+          if (error == http::error::body_limit) {
+            self->Dispatch(/*body_too_large=*/true);
+          } else if (!error) {
+            self->ReadBody();
+          }
         });
   }
 
  private:
-  void Write(const http::request<http::string_body>& request) {
-    response_ = Respond(request);
+  void ReadBody() {
+    const auto read = [this] {
+      http::async_read(
+          stream_, buffer_, *parser_,
+          [self = shared_from_this()](beast::error_code error, size_t) {
+            // A chunked body grew over the limit.
+            if (error == http::error::body_limit) {
+              self->Dispatch(/*body_too_large=*/true);
+            } else if (!error) {
+              self->Dispatch(/*body_too_large=*/false);
+            }
+          });
+    };
+    const auto& header = parser_->get();
+    if (beast::iequals(header[http::field::expect], "100-continue")) {
+      auto proceed = std::make_shared<http::response<http::empty_body>>(
+          http::status::continue_, header.version());
+      http::async_write(stream_, *proceed,
+                        [self = shared_from_this(), proceed, read](
+                            beast::error_code error, size_t) {
+                          if (!error) read();
+                        });
+      return;
+    }
+    read();
+  }
+
+  // Hands the request read so far to the handler.
+  void Dispatch(bool body_too_large) {
+    const http::request<http::string_body>& message = parser_->get();
+    HttpRequest request;
+    request.method = message.method() == http::verb::head
+                         ? "GET"
+                         : std::string(message.method_string());
+    const std::string_view target(message.target().data(),
+                                  message.target().size());
+    const size_t question = target.find('?');
+    request.path = std::string(target.substr(0, question));
+    if (question != std::string_view::npos) {
+      request.query = std::string(target.substr(question + 1));
+    }
+    for (const auto& field : message) {
+      std::string name(field.name_string());
+      for (char& c : name) c = static_cast<char>(std::tolower(c));
+      request.headers.emplace_back(std::move(name), std::string(field.value()));
+    }
+    request.body_too_large = body_too_large;
+    if (!body_too_large) request.body = std::move(parser_->get().body());
+    // An unread body leaves the stream mid-message: close after replying.
+    const bool keep_alive = message.keep_alive() && !body_too_large;
+    linger_ = body_too_large;
+    const bool head = message.method() == http::verb::head;
+    const unsigned version = message.version();
+    server_->handler_(
+        std::move(request), [self = shared_from_this(), keep_alive, head,
+                             version](HttpResponse reply) {
+          asio::post(self->stream_.get_executor(),
+                     [self, keep_alive, head, version,
+                      reply = std::move(reply)]() mutable {
+                       self->Write(std::move(reply), version, keep_alive, head);
+                     });
+        });
+  }
+
+  void Write(HttpResponse reply, unsigned version, bool keep_alive, bool head) {
+    response_ = {};
+    response_.version(version);
+    response_.keep_alive(keep_alive);
+    response_.result(reply.status);
+    response_.set(http::field::server, "locatord");
+    response_.set(http::field::cache_control, "no-store");
+    response_.set(http::field::content_type, reply.content_type);
+    for (const auto& [name, value] : reply.headers) response_.set(name, value);
+    response_.body() = std::move(reply.body);
+    response_.prepare_payload();
+    // HEAD: the GET's headers, Content-Length included, and no body.
+    if (head) response_.body().clear();
     stream_.expires_after(kIdleTimeout);
     http::async_write(
         stream_, response_,
@@ -65,38 +148,25 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
             beast::error_code ignored;
             self->stream_.socket().shutdown(tcp::socket::shutdown_send,
                                             ignored);
+            if (self->linger_) self->Linger();
             return;
           }
           self->Read();
         });
   }
 
-  http::response<http::string_body> Respond(
-      const http::request<http::string_body>& request) const {
-    http::response<http::string_body> response;
-    response.version(request.version());
-    response.keep_alive(request.keep_alive());
-    response.set(http::field::server, "locatord");
-    response.set(http::field::cache_control, "no-store");
-    const bool head = request.method() == http::verb::head;
-    if (request.method() == http::verb::get || head) {
-      const std::string_view target(request.target().data(),
-                                    request.target().size());
-      HttpResponse reply =
-          server_->handler_(target.substr(0, target.find('?')));
-      response.result(reply.status);
-      response.set(http::field::content_type, reply.content_type);
-      response.body() = std::move(reply.body);
-    } else {
-      response.result(http::status::method_not_allowed);
-      response.set(http::field::allow, "GET, HEAD");
-      response.set(http::field::content_type, "text/plain; charset=utf-8");
-      response.body() = "method not allowed\n";
-    }
-    response.prepare_payload();
-    // HEAD: the GET's headers, Content-Length included, and no body.
-    if (head) response.body().clear();
-    return response;
+  // Reads and drops what the client still sends of a body that was not
+  // read, until it closes, kMaxLingerBytes or kLingerTimeout: closing with
+  // unread data would reset the connection, and the client could lose the
+  // answer.
+  void Linger() {
+    stream_.expires_after(kLingerTimeout);
+    stream_.async_read_some(
+        asio::buffer(server_->linger_buffer_),
+        [self = shared_from_this()](beast::error_code error, size_t got) {
+          self->lingered_ += got;
+          if (!error && self->lingered_ < kMaxLingerBytes) self->Linger();
+        });
   }
 
   HttpServer* const server_;
@@ -104,16 +174,29 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
   http::response<http::string_body> response_;  // kept alive while written
+  bool linger_ = false;  // the last request's body was not read
+  size_t lingered_ = 0;
 };
 
-HttpServer::HttpServer(HttpHandler handler)
-    : handler_(std::move(handler)),
+std::optional<std::string_view> HttpRequest::Header(
+    std::string_view name) const {
+  for (const auto& [key, value] : headers) {
+    if (key == name) return std::string_view(value);
+  }
+  return std::nullopt;
+}
+
+HttpServer::HttpServer(size_t max_body_bytes, HttpHandler handler)
+    : max_body_bytes_(max_body_bytes),
+      handler_(std::move(handler)),
       acceptor_(io_context_),
       accept_retry_(io_context_) {}
 
-Status HttpServer::Start(const std::string& host, int port, HttpHandler handler,
+Status HttpServer::Start(const std::string& host, int port,
+                         size_t max_body_bytes, HttpHandler handler,
                          std::unique_ptr<HttpServer>* server) {
-  std::unique_ptr<HttpServer> created(new HttpServer(std::move(handler)));
+  std::unique_ptr<HttpServer> created(
+      new HttpServer(max_body_bytes, std::move(handler)));
   if (Status status = created->Listen(host, port); !status.ok()) {
     return status;
   }

@@ -1,21 +1,31 @@
-// HttpServer: a small HTTP/1.1 server (Boost.Beast) for read-only endpoints:
-// GET and HEAD only, one handler maps a path to a response.
+// HttpServer: a small HTTP/1.1 server (Boost.Beast): every request, whatever
+// its method, goes to one asynchronous handler, which answers it through
+// the reply function it is given, from any thread.
 //
 // Owns an io_context, the listening socket, every connection and one thread
 // that runs them all, asynchronously, so it never shares a thread with the
 // gRPC server and a slow client holds nothing but its own connection.
 // Limits: kMaxConnections at once (further ones are closed on accept),
-// kMaxHeaderBytes per request header, kMaxBodyBytes per request body,
-// kIdleTimeout for a connection waiting for (or sending) a message. Other
-// methods get 405 with an Allow header; a malformed or oversized request
-// closes the connection. Keep-alive is honoured.
+// kMaxHeaderBytes per request header, HttpOptions::max_body_bytes per
+// request body, kIdleTimeout for a connection waiting for (or sending) a
+// message. A body over the limit is not read: the handler gets the request
+// with body_too_large set and an empty body, and after its answer the
+// connection reads and drops what the client still sends (up to
+// kMaxLingerBytes, for at most kLingerTimeout, so that the client gets to
+// read the answer) and closes. "Expect: 100-continue" is answered before the
+// body is read. HEAD reaches the handler as GET, and its answer goes out
+// without the body. A malformed request closes the connection. Keep-alive is
+// honoured.
 //
-// Thread-safety: the handler runs on the server's thread, one request at a
-// time; it must be safe to call from there.
+// Thread-safety: the handler is called on the server's thread, one request
+// at a time, and must return quickly; the reply function may be called from
+// any thread, exactly once per request, and before the server is destroyed
+// (it holds the request's connection).
 
 #ifndef LOCATOR_SERVER_HTTP_HTTP_SERVER_H_
 #define LOCATOR_SERVER_HTTP_HTTP_SERVER_H_
 
+#include <array>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -23,34 +33,67 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "common/status.h"
 
 namespace locator {
 
+struct HttpRequest {
+  // As sent ("GET", "POST", "OPTIONS", ...), except that HEAD arrives as GET.
+  std::string method;
+  // The target up to '?', and what follows it (undecoded; "" if none).
+  std::string path;
+  std::string query;
+  // Header fields as sent, names in lower case.
+  std::vector<std::pair<std::string, std::string>> headers;
+  std::string body;
+  // The body was over the limit and was not read.
+  bool body_too_large = false;
+
+  // The value of header `name` (lower case), or nullopt.
+  std::optional<std::string_view> Header(std::string_view name) const;
+};
+
 struct HttpResponse {
   unsigned status = 200;
   std::string content_type = "text/plain; charset=utf-8";
   std::string body;
+  // More header fields (e.g. Allow, Access-Control-*).
+  std::vector<std::pair<std::string, std::string>> headers = {};
 };
 
-// Maps a request path (the target without its query string) to a response.
-using HttpHandler = std::function<HttpResponse(std::string_view path)>;
+// Answers one request; call exactly once, from any thread.
+using HttpReply = std::function<void(HttpResponse response)>;
+// Handles one request (see the thread-safety note above).
+using HttpHandler = std::function<void(HttpRequest request, HttpReply reply)>;
+
+struct HttpOptions {
+  // Larger request bodies are not read (see above).
+  size_t max_body_bytes = size_t{16} << 20;
+  // Origins allowed to call the server from web pages (CORS; see
+  // CorsPolicy); empty: CORS off.
+  std::vector<std::string> cors_origins;
+};
 
 class HttpServer {
  public:
   static constexpr size_t kMaxConnections = 512;
   static constexpr size_t kMaxHeaderBytes = 8 * 1024;
-  static constexpr size_t kMaxBodyBytes = 8 * 1024;
   static constexpr std::chrono::seconds kIdleTimeout{30};
+  static constexpr size_t kMaxLingerBytes = size_t{64} << 20;
+  static constexpr std::chrono::seconds kLingerTimeout{5};
 
   // Listens on host:port (port 0: the OS picks) and starts serving with
-  // `handler`. IOError naming the address if it cannot be bound.
-  static Status Start(const std::string& host, int port, HttpHandler handler,
-                      std::unique_ptr<HttpServer>* server);
+  // `handler`, reading bodies up to `max_body_bytes`. IOError naming the
+  // address if it cannot be bound.
+  static Status Start(const std::string& host, int port, size_t max_body_bytes,
+                      HttpHandler handler, std::unique_ptr<HttpServer>* server);
 
   // Stops accepting, closes every connection and joins the thread.
   ~HttpServer();
@@ -63,10 +106,11 @@ class HttpServer {
  private:
   class Connection;
 
-  explicit HttpServer(HttpHandler handler);
+  HttpServer(size_t max_body_bytes, HttpHandler handler);
   Status Listen(const std::string& host, int port);
   void Accept();
 
+  const size_t max_body_bytes_;
   const HttpHandler handler_;
   // Connections open now; only touched on the server's thread. Declared
   // before io_context_: connections still queued in it decrement it while
@@ -76,6 +120,8 @@ class HttpServer {
   boost::asio::ip::tcp::acceptor acceptor_;
   boost::asio::steady_timer accept_retry_;
   int port_ = 0;
+  // Where lingering connections drop what they read (only on the thread).
+  std::array<char, 16384> linger_buffer_;
   std::thread thread_;
 };
 

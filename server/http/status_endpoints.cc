@@ -3,18 +3,42 @@
 #include <utility>
 
 #include "common/proto_json.h"
+#include "server/http/api_error.h"
+#include "server/http/embedded_files.h"
 #include "server/http/json_writer.h"
-#include "server/http/status_page_files.h"
+#include "server/status_mapping.h"
 
 namespace locator {
 namespace {
 
-constexpr char kJson[] = "application/json";
 constexpr char kMetricsContentType[] =
     "text/plain; version=0.0.4; charset=utf-8";
+constexpr std::string_view kWebPrefix = "/web/";
 
-HttpResponse Loading() {
-  return HttpResponse{503, kJson, R"({"state":"loading"})"};
+// What an /api/ path answers when its source failed: 503
+// {"state":"loading"} while the dataset loads, an ApiError otherwise (an
+// unknown dataset: 404).
+HttpResponse Failed(const Status& status) {
+  if (status.code() == Status::Code::kUnavailable) {
+    return HttpResponse{503, kJsonContentType, R"({"state":"loading"})"};
+  }
+  return ApiError(ToGrpcStatus(status));
+}
+
+// The value of parameter `name` in the query string `query` ("" if absent).
+// Dataset names need no percent-decoding: they are [A-Za-z0-9_.-].
+std::string_view QueryParameter(std::string_view query, std::string_view name) {
+  while (!query.empty()) {
+    const size_t amp = query.find('&');
+    const std::string_view pair = query.substr(0, amp);
+    if (pair.size() > name.size() && pair.starts_with(name) &&
+        pair[name.size()] == '=') {
+      return pair.substr(name.size() + 1);
+    }
+    if (amp == std::string_view::npos) break;
+    query.remove_prefix(amp + 1);
+  }
+  return {};
 }
 
 std::string HistoryJson(const std::vector<StatsSample>& history) {
@@ -59,6 +83,9 @@ HttpResponse NotFound() {
   return HttpResponse{404, "text/plain; charset=utf-8", "not found\n"};
 }
 
+// The file of `files` named `name`, or 404.
+HttpResponse FileOf(std::span<const EmbeddedFile> files, std::string_view name);
+
 // The Content-Type of an embedded file, by its extension.
 std::string ContentTypeOf(std::string_view name) {
   const auto ends_with = [name](std::string_view suffix) {
@@ -71,43 +98,63 @@ std::string ContentTypeOf(std::string_view name) {
   return "application/octet-stream";
 }
 
+HttpResponse FileOf(std::span<const EmbeddedFile> files,
+                    std::string_view name) {
+  for (const EmbeddedFile& file : files) {
+    if (name == file.name) {
+      return HttpResponse{200, ContentTypeOf(file.name),
+                          std::string(file.bytes)};
+    }
+  }
+  return NotFound();
+}
+
 }  // namespace
 
 StatusEndpoints::StatusEndpoints(StatusSources sources)
     : sources_(std::move(sources)) {}
 
-HttpResponse StatusEndpoints::Handle(std::string_view path) const {
+HttpResponse StatusEndpoints::Handle(std::string_view path,
+                                     std::string_view query) const {
   if (path == "/metrics") {
     return HttpResponse{200, kMetricsContentType, sources_.metrics_text()};
   }
-  if (path.starts_with("/api/")) return Api(path);
-  return PageFile(path == "/" ? "/index.html" : path);
+  if (path.starts_with("/api/")) {
+    return Api(path, QueryParameter(query, "dataset"));
+  }
+  if (path == kWebPrefix.substr(0, kWebPrefix.size() - 1)) {
+    // Its files name each other relative to the directory.
+    return HttpResponse{.status = 301,
+                        .body = "see /web/\n",
+                        .headers = {{"Location", std::string(kWebPrefix)}}};
+  }
+  if (path.starts_with(kWebPrefix)) {
+    const std::string_view name = path.substr(kWebPrefix.size());
+    return FileOf(WebExampleFiles(), name.empty() ? "index.html" : name);
+  }
+  if (!path.starts_with('/')) return NotFound();
+  return FileOf(StatusPageFiles(), path == "/" ? "index.html" : path.substr(1));
 }
 
-HttpResponse StatusEndpoints::Api(std::string_view path) const {
+HttpResponse StatusEndpoints::Api(std::string_view path,
+                                  std::string_view dataset) const {
   if (path == "/api/stats") {
     v1::GetStatsResponse stats;
-    if (!sources_.stats(&stats)) return Loading();
-    return HttpResponse{200, kJson, ProtoJson(stats)};
+    const Status status = sources_.stats(dataset, &stats);
+    if (!status.ok()) return Failed(status);
+    return HttpResponse{200, kJsonContentType, ProtoJson(stats)};
   }
   if (path == "/api/history") {
-    return HttpResponse{200, kJson, HistoryJson(sources_.history->Samples())};
+    const StatsHistory* history = nullptr;
+    const Status status = sources_.history(dataset, &history);
+    if (!status.ok()) return Failed(status);
+    return HttpResponse{200, kJsonContentType, HistoryJson(history->Samples())};
   }
   if (path == "/api/edges") {
     MapEdges edges;
-    if (!sources_.edges(&edges)) return Loading();
-    return HttpResponse{200, kJson, EdgesJson(edges)};
-  }
-  return NotFound();
-}
-
-HttpResponse StatusEndpoints::PageFile(std::string_view path) {
-  if (!path.starts_with('/')) return NotFound();
-  for (const EmbeddedFile& file : StatusPageFiles()) {
-    if (path.substr(1) == file.name) {
-      return HttpResponse{200, ContentTypeOf(file.name),
-                          std::string(file.bytes)};
-    }
+    const Status status = sources_.edges(dataset, &edges);
+    if (!status.ok()) return Failed(status);
+    return HttpResponse{200, kJsonContentType, EdgesJson(edges)};
   }
   return NotFound();
 }

@@ -1,15 +1,16 @@
-// StatusEndpoints: what locatord's HTTP server answers, path by path:
+// StatusEndpoints: what locatord's HTTP server answers to GET, path by path
+// (the HTTP/JSON API under /v1/ is JsonApi's):
 //
 //   /metrics      Prometheus text format 0.0.4
-//   /api/stats    the engine's statistics: locator.v1.GetStatsResponse as
+//   /api/stats    a dataset's statistics: locator.v1.GetStatsResponse as
 //                 proto JSON (field names as in the proto, every field
 //                 present; 64-bit integers are strings), exactly what
 //                 `locator --json stats` prints; 503 with
-//                 {"state":"loading"} until an engine serves
-//   /api/history  the recent throughput and cost, oldest first:
+//                 {"state":"loading"} until its engine serves
+//   /api/history  its recent throughput and cost, oldest first:
 //                 {"t": [unix s], "qps": [...], "mean_cost": [...]}, null
 //                 where an interval located no point
-//   /api/edges    what the map draws of the triangulation, each a list of
+//   /api/edges    what the map draws of its triangulation, each a list of
 //                 [x0, y0, x1, y1]: {"segments": a sample of its edges,
 //                 "boundary": the domain's boundary and holes,
 //                 "breaklines": its breaklines}, each at most 3000 long
@@ -18,11 +19,16 @@
 //                 503 while loading
 //   /            the status page (index.html); other embedded page files
 //                by name, e.g. /app.js
+//   /web/        the web example (client/web/: index.html, and its files
+//                by name)
 //   otherwise    404
 //
-// Owns nothing but the functions and pointers it reads from; the statistics
-// are fetched per request, so a swapped engine shows at once. They come
-// already redacted (--redact): this class never sees an Engine.
+// The /api/ paths take ?dataset=NAME (default: the default dataset); an
+// unknown name is 404 with an ApiError body.
+//
+// Owns nothing but the functions it reads from; the statistics are fetched
+// per request, so a swapped engine shows at once. They come already
+// redacted (--redact): this class never sees an Engine.
 // Thread-safety: Handle() may be called from any thread, as far as the
 // sources allow it (they are all thread-safe in locatord).
 
@@ -36,12 +42,18 @@
 #include <vector>
 
 #include "common/geometry.h"
+#include "common/status.h"
 #include "server/http/http_server.h"
 #include "server/http/stats_history.h"
 #include "server/metrics/engine_collector.h"
 
 namespace locator {
 
+// Fills its argument with the statistics of dataset `dataset` ("": the
+// default) as GetStats answers them. NotFound for an unknown dataset,
+// Unavailable while it is loading.
+using StatsSource =
+    std::function<Status(std::string_view dataset, v1::GetStatsResponse*)>;
 // The lines /api/edges serves, as endpoint pairs.
 struct MapEdges {
   // A sample of the triangulation's edges (Engine::EdgeSample).
@@ -51,16 +63,18 @@ struct MapEdges {
   std::vector<std::array<Point2, 2>> breaklines;
 };
 
-// Fills its argument with the serving triangulation's map edges; false
-// while no engine serves.
-using EdgeSource = std::function<bool(MapEdges*)>;
+// The same for the lines the map draws of the dataset's triangulation.
+using EdgeSource =
+    std::function<Status(std::string_view dataset, MapEdges* edges)>;
+// The history of dataset `dataset` ("": the default); NotFound for an
+// unknown one. The history must outlive the endpoints.
+using HistorySource = std::function<Status(std::string_view dataset,
+                                           const StatsHistory** history)>;
 
 struct StatusSources {
-  // The serving engine's statistics, as GetStats answers them.
   StatsSource stats;
   EdgeSource edges;
-  // Must outlive the endpoints.
-  const StatsHistory* history = nullptr;
+  HistorySource history;
   // The /metrics body.
   std::function<std::string()> metrics_text;
 };
@@ -69,14 +83,13 @@ class StatusEndpoints {
  public:
   explicit StatusEndpoints(StatusSources sources);
 
-  // The response for a GET of `path`.
-  HttpResponse Handle(std::string_view path) const;
+  // The response for a GET of `path` with the query string `query`.
+  HttpResponse Handle(std::string_view path, std::string_view query = {}) const;
 
  private:
-  // The response for an engine-backed API path, or 404 for another path.
-  HttpResponse Api(std::string_view path) const;
-  // The embedded page file at `path`, or 404.
-  static HttpResponse PageFile(std::string_view path);
+  // The response for an /api/ path about `dataset`, or 404 for another
+  // path.
+  HttpResponse Api(std::string_view path, std::string_view dataset) const;
 
   const StatusSources sources_;
 };

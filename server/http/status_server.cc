@@ -1,24 +1,65 @@
 #include "server/http/status_server.h"
 
 #include <chrono>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
+#include "server/http/api_error.h"
 #include "server/metrics/metrics_text.h"
 
 namespace locator {
 
-StatusServer::StatusServer(StatsSource stats, EdgeSource edges)
-    : stats_(std::move(stats)),
+StatusServer::StatusServer(LocatorService* service, HttpOptions options)
+    : service_(service),
+      options_(std::move(options)),
       registry_(std::make_shared<prometheus::Registry>()),
       rpc_metrics_(registry_.get()),
-      engine_collector_(std::make_shared<EngineCollector>(stats_)),
-      endpoints_(
-          StatusSources{.stats = stats_,
-                        .edges = std::move(edges),
-                        .history = &history_,
-                        .metrics_text = [this] {
-                          return MetricsText({registry_, engine_collector_});
-                        }}) {}
+      engine_collector_(std::make_shared<EngineCollector>([service] {
+        std::vector<DatasetStatsSample> samples;
+        for (const auto& slot : service->datasets().slots()) {
+          DatasetStatsSample& sample = samples.emplace_back();
+          sample.dataset = slot->name();
+          v1::GetStatsResponse stats;
+          if (service->CurrentStats(slot->name(), &stats).ok()) {
+            sample.stats = std::move(stats);
+          }
+        }
+        return samples;
+      })),
+      endpoints_(StatusSources{
+          .stats =
+              [service](std::string_view dataset, v1::GetStatsResponse* out) {
+                return service->CurrentStats(dataset, out);
+              },
+          .edges =
+              [service](std::string_view dataset, MapEdges* edges) {
+                std::shared_ptr<Engine> engine;
+                const Status status = service->ServingEngine(dataset, &engine);
+                if (!status.ok()) return status;
+                edges->segments = engine->EdgeSample();
+                edges->boundary = engine->domain_outline().boundary;
+                edges->breaklines = engine->domain_outline().breaklines;
+                return Status::OK();
+              },
+          .history =
+              [this](std::string_view dataset, const StatsHistory** history) {
+                return HistoryOf(dataset, history);
+              },
+          .metrics_text =
+              [this] {
+                return MetricsText({registry_, engine_collector_});
+              }}),
+      cors_(options_.cors_origins),
+      api_(service) {
+  for (const auto& slot : service->datasets().slots()) {
+    histories_.try_emplace(slot->name());
+  }
+}
+
+StatusServer::~StatusServer() { api_.Shutdown(); }
 
 std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>
 StatusServer::NewInterceptorFactory() {
@@ -27,16 +68,69 @@ StatusServer::NewInterceptorFactory() {
 
 Status StatusServer::Listen(const std::string& host, int port) {
   return HttpServer::Start(
-      host, port,
-      [this](std::string_view path) { return endpoints_.Handle(path); },
+      host, port, options_.max_body_bytes,
+      [this](HttpRequest request, HttpReply reply) {
+        Route(std::move(request), std::move(reply));
+      },
       &http_);
 }
 
+void StatusServer::Route(HttpRequest request, HttpReply reply) {
+  if (cors_.IsPreflight(request)) {
+    reply(cors_.Preflight(request));
+    return;
+  }
+  // Every answer carries the CORS headers the request's origin gets.
+  std::optional<std::string> origin;
+  if (std::optional<std::string_view> header = request.Header("origin")) {
+    origin = std::string(*header);
+  }
+  reply = [this, origin = std::move(origin),
+           reply = std::move(reply)](HttpResponse response) {
+    cors_.Apply(origin, &response);
+    reply(std::move(response));
+  };
+  if (request.body_too_large) {
+    reply(ApiError(
+        grpc::Status(grpc::StatusCode::RESOURCE_EXHAUSTED,
+                     "the request body is larger than this server's limit "
+                     "of " +
+                         std::to_string(options_.max_body_bytes) +
+                         " bytes (--http-max-body-bytes)"),
+        413));
+    return;
+  }
+  if (request.path.starts_with(JsonApi::kPathPrefix)) {
+    api_.Handle(std::move(request), std::move(reply));
+    return;
+  }
+  if (request.method != "GET") {
+    reply(HttpResponse{.status = 405,
+                       .body = "method not allowed\n",
+                       .headers = {{"Allow", "GET, HEAD"}}});
+    return;
+  }
+  reply(endpoints_.Handle(request.path, request.query));
+}
+
+Status StatusServer::HistoryOf(std::string_view dataset,
+                               const StatsHistory** history) const {
+  DatasetSlot* slot = nullptr;
+  if (Status found = service_->datasets().Find(dataset, &slot); !found.ok()) {
+    return found;
+  }
+  *history = &histories_.find(slot->name())->second;
+  return Status::OK();
+}
+
 void StatusServer::SampleHistory() {
-  v1::GetStatsResponse stats;
-  if (!stats_(&stats)) return;
-  history_.Record(stats.generation(), stats.queries_served(),
-                  stats.total_cost(), std::chrono::system_clock::now());
+  const auto now = std::chrono::system_clock::now();
+  for (auto& [name, history] : histories_) {
+    v1::GetStatsResponse stats;
+    if (!service_->CurrentStats(name, &stats).ok()) continue;
+    history.Record(stats.generation(), stats.queries_served(),
+                   stats.total_cost(), now);
+  }
 }
 
 }  // namespace locator

@@ -1,10 +1,11 @@
-// EngineCollector: Prometheus metrics of the serving engine, read at scrape
-// time from its statistics as GetStats answers them (the one mapping of the
-// engine's statistics, already redacted as configured), so they follow
-// whichever engine the service publishes (a Reload may swap it; counters
-// then restart, which Prometheus treats as a reset).
+// EngineCollector: Prometheus metrics of the datasets' serving engines,
+// read at scrape time from their statistics as GetStats answers them (the
+// one mapping of the engine's statistics, already redacted as configured),
+// so they follow whichever engine each dataset serves (a Reload may swap it;
+// counters then restart, which Prometheus treats as a reset). Every series
+// carries the label dataset="NAME".
 //
-//   locator_engine_loaded                  1 once an engine serves, else 0
+//   locator_engine_loaded                  1 once the dataset serves, else 0
 //   locator_queries_total                  points located
 //   locator_query_cost_total               their summed cost (paper metric)
 //   locator_mean_cost_recent               mean cost, last 1000 queries
@@ -28,26 +29,33 @@
 #include <prometheus/metric_family.h>
 
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "locator/v1/locator.pb.h"
 
 namespace locator {
 
-// Fills its argument with the serving engine's statistics as GetStats answers
-// them; false (nothing filled) while no engine serves.
-using StatsSource = std::function<bool(v1::GetStatsResponse*)>;
+// One dataset's statistics as GetStats answers them; none while it loads.
+struct DatasetStatsSample {
+  std::string dataset;
+  std::optional<v1::GetStatsResponse> stats;
+};
+
+// Every dataset's statistics, in the server's order.
+using AllStatsSource = std::function<std::vector<DatasetStatsSample>()>;
 
 class EngineCollector final : public prometheus::Collectable {
  public:
   // `stats` is called once per Collect().
-  explicit EngineCollector(StatsSource stats);
+  explicit EngineCollector(AllStatsSource stats);
 
   // The series listed above from one call of the stats source.
   std::vector<prometheus::MetricFamily> Collect() const override;
 
  private:
-  const StatsSource stats_;
+  const AllStatsSource stats_;
 };
 
 }  // namespace locator

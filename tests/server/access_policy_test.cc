@@ -80,7 +80,8 @@ TEST(AccessPolicyTest, RefusalsSayWhatIsExpectedWithoutEchoingTheToken) {
   const grpc::Status missing =
       policy.CheckAuthorization(std::nullopt, Scope::kData);
   EXPECT_EQ(missing.error_message(),
-            "expected metadata 'authorization: Bearer <token>'");
+            "expected 'authorization: Bearer <token>' (gRPC metadata or HTTP "
+            "header)");
   const grpc::Status wrong =
       policy.CheckAuthorization("Bearer guess", Scope::kAdmin);
   EXPECT_EQ(wrong.error_message(),

@@ -20,6 +20,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -275,6 +276,39 @@ grpc::Status BatchCancelledMidway(const Env& env) {
   return status;
 }
 
+// What every RPC naming an unknown dataset is told: NOT_FOUND and the names
+// the server has (one, the default, in this table).
+constexpr char kUnknownDataset[] =
+    "unknown dataset 'lava'; this server has: default (default)";
+
+// A stream of a good point for the default dataset, then one for 'lava':
+// the first answer arrives, then the stream ends.
+grpc::Status StreamUnknownDataset(const Env& env) {
+  return StreamOf(env,
+                  {LocateRequestFor({1.25, 2.5}),
+                   LocateRequestFor({3, 4}, "lava"), LocateRequestFor({5, 5})},
+                  1);
+}
+
+// Calls the unary RPC `rpc` with a request whose `dataset` is 'lava' and
+// nothing else (the dataset is resolved before the request is read).
+template <typename Request, typename Response>
+std::function<grpc::Status(const Env&)> NamingLava(grpc::Status (
+    v1::Locator::Stub::*rpc)(grpc::ClientContext*, const Request&, Response*)) {
+  return [rpc](const Env& env) {
+    grpc::ClientContext context;
+    Request request;
+    request.set_dataset("lava");
+    Response response;
+    return (env.stub.*rpc)(&context, request, &response);
+  };
+}
+
+grpc::Status ReloadUnknownName(const Env& env) {
+  v1::ReloadResponse response;
+  return Reload(env.stub, "", &response, "lava");
+}
+
 std::vector<CallRow> CallRows() {
   using std::chrono::milliseconds;
   const double big = 1e308;
@@ -317,6 +351,23 @@ std::vector<CallRow> CallRows() {
       {"MismatchedColumns", "LocateBatch with 6 xs and 5 ys", kLimits,
        MismatchedColumns, Code::INVALID_ARGUMENT,
        "xs has 6 values but ys has 5"},
+      {"LocateUnknownDataset", "Locate with dataset 'lava'", kLimits,
+       NamingLava(&v1::Locator::Stub::Locate), Code::NOT_FOUND,
+       kUnknownDataset},
+      {"BatchUnknownDataset", "LocateBatch with dataset 'lava'", kLimits,
+       NamingLava(&v1::Locator::Stub::LocateBatch), Code::NOT_FOUND,
+       kUnknownDataset},
+      {"StreamUnknownDataset",
+       "LocateStream of a good point, then one with dataset 'lava'", kLimits,
+       StreamUnknownDataset, Code::NOT_FOUND, kUnknownDataset},
+      {"GetStatsUnknownDataset", "GetStats with dataset 'lava'", kLimits,
+       NamingLava(&v1::Locator::Stub::GetStats), Code::NOT_FOUND,
+       kUnknownDataset},
+      {"RetuneUnknownDataset", "Retune with dataset 'lava'", kLimits,
+       NamingLava(&v1::Locator::Stub::Retune), Code::NOT_FOUND,
+       kUnknownDataset},
+      {"ReloadUnknownName", "Reload with name 'lava'", kLimits,
+       ReloadUnknownName, Code::NOT_FOUND, kUnknownDataset},
       {"BatchAtPointLimit", "LocateBatch of 1000 points (the limit)", kLimits,
        BatchCall(Queries(1000)), Code::OK, ""},
       {"BatchOverPointLimit", "LocateBatch of 1001 points (limit 1000)",

@@ -173,44 +173,93 @@ std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server,
                                                     .security = security}));
 }
 
-v1::LocateRequest LocateRequestFor(const Point2& q) {
+v1::LocateRequest LocateRequestFor(const Point2& q,
+                                   const std::string& dataset) {
   v1::LocateRequest request;
   request.mutable_point()->set_x(q.x);
   request.mutable_point()->set_y(q.y);
+  request.set_dataset(dataset);
   return request;
 }
 
 grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
-                       v1::LocateResponse* response) {
+                       v1::LocateResponse* response,
+                       const std::string& dataset) {
   grpc::ClientContext context;
-  return stub.Locate(&context, LocateRequestFor(q), response);
+  return stub.Locate(&context, LocateRequestFor(q, dataset), response);
 }
 
 grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
-                    v1::ReloadResponse* response) {
+                    v1::ReloadResponse* response, const std::string& name) {
   grpc::ClientContext context;
   v1::ReloadRequest request;
   request.set_dataset(dataset);
+  request.set_name(name);
   return stub.Reload(&context, request, response);
 }
 
-v1::GetStatsResponse GetStats(v1::Locator::Stub& stub) {
+v1::GetStatsResponse GetStats(v1::Locator::Stub& stub,
+                              const std::string& dataset) {
   grpc::ClientContext context;
+  v1::GetStatsRequest request;
+  request.set_dataset(dataset);
   v1::GetStatsResponse stats;
-  const grpc::Status status = stub.GetStats(&context, {}, &stats);
+  const grpc::Status status = stub.GetStats(&context, request, &stats);
   EXPECT_TRUE(status.ok()) << status.error_message();
   return stats;
 }
 
 v1::GetStatsResponse WaitForStats(
     v1::Locator::Stub& stub,
-    const std::function<bool(const v1::GetStatsResponse&)>& done) {
+    const std::function<bool(const v1::GetStatsResponse&)>& done,
+    const std::string& dataset) {
   v1::GetStatsResponse stats;
   test::WaitUntil([&] {
-    stats = GetStats(stub);
+    stats = GetStats(stub, dataset);
     return done(stats);
   });
   return stats;
+}
+
+void WriteUniformCsv(const std::string& path, size_t n, uint64_t seed) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out.precision(17);
+    out << "x,y,z\n";
+    for (const Point2& p : GenerateUniform(n, seed).points) {
+      out << p.x << "," << p.y << "," << TestValue(p) << "\n";
+    }
+  }
+  ASSERT_EQ(std::rename(temporary.c_str(), path.c_str()), 0);
+}
+
+void ExpectAnswersAgree(v1::Locator::Stub& stub,
+                        const std::string& dataset_path,
+                        const std::string& dataset) {
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(dataset_path, &reference).ok());
+  std::vector<Point2> queries =
+      GenerateUniform(2000, 77).points;  // inside the hull, mostly
+  for (Point2& q : queries) q = {1.2 * q.x - 0.1, 1.2 * q.y - 0.1};
+  grpc::ClientContext context;
+  v1::LocateBatchRequest request = BatchRequestFor(queries);
+  request.set_dataset(dataset);
+  v1::LocateBatchResponse batch;
+  ASSERT_TRUE(stub.LocateBatch(&context, request, &batch).ok());
+  std::vector<LocateResult> answers;
+  for (size_t row = 0; row < queries.size(); ++row) {
+    answers.push_back(FromBatchRow(batch, row));
+  }
+  EXPECT_EQ(reference->Disagreements(queries, answers, false), "");
+  for (size_t i = 0; i < 100; ++i) {
+    v1::LocateResponse unary;
+    ASSERT_TRUE(LocateOne(stub, queries[i], &unary, dataset).ok());
+    const LocateResult answer = FromLocateResponse(unary);
+    EXPECT_EQ(reference->Disagreements(std::span(&queries[i], 1),
+                                       std::span(&answer, 1), true),
+              "");
+  }
 }
 
 LocateResult FromLocateResponse(const v1::LocateResponse& response) {

@@ -70,22 +70,38 @@ std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server);
 std::unique_ptr<v1::Locator::Stub> NewStub(const test::ServerProcess& server,
                                            const ChannelSecurity& security);
 
-// `q` as a Locate or LocateStream request.
-v1::LocateRequest LocateRequestFor(const Point2& q);
-// Calls Locate for `q`.
+// `q` as a Locate or LocateStream request for dataset `dataset` ("": the
+// default).
+v1::LocateRequest LocateRequestFor(const Point2& q,
+                                   const std::string& dataset = "");
+// Calls Locate for `q` on `dataset`.
 grpc::Status LocateOne(v1::Locator::Stub& stub, const Point2& q,
-                       v1::LocateResponse* response);
-// Calls Reload for `dataset` ("": the configured one).
+                       v1::LocateResponse* response,
+                       const std::string& dataset = "");
+// Calls Reload of the dataset named `name` ("": the default) with the spec
+// `dataset` ("": its configured one).
 grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
-                    v1::ReloadResponse* response);
+                    v1::ReloadResponse* response, const std::string& name = "");
 
-// Calls GetStats; a failed call is a test failure (and an empty answer).
-v1::GetStatsResponse GetStats(v1::Locator::Stub& stub);
-// Polls GetStats until `done` holds or test::kGenerousWait passes; returns
-// the last answer.
+// Calls GetStats for `dataset`; a failed call is a test failure (and an
+// empty answer).
+v1::GetStatsResponse GetStats(v1::Locator::Stub& stub,
+                              const std::string& dataset = "");
+// Polls GetStats for `dataset` until `done` holds or test::kGenerousWait
+// passes; returns the last answer.
 v1::GetStatsResponse WaitForStats(
     v1::Locator::Stub& stub,
-    const std::function<bool(const v1::GetStatsResponse&)>& done);
+    const std::function<bool(const v1::GetStatsResponse&)>& done,
+    const std::string& dataset = "");
+
+// Writes `n` uniform points of the unit square with values TestValue(p) as
+// CSV to `path`, replacing it atomically.
+void WriteUniformCsv(const std::string& path, size_t n, uint64_t seed);
+// Checks unary and batch answers of `dataset` ("": the default) for points
+// in and around the unit square against CGAL on `dataset_path`.
+void ExpectAnswersAgree(v1::Locator::Stub& stub,
+                        const std::string& dataset_path,
+                        const std::string& dataset = "");
 
 // An answer that came over the wire, as the core would have returned it.
 LocateResult FromLocateResponse(const v1::LocateResponse& response);

@@ -48,9 +48,9 @@ class HeldBuild {
  public:
   explicit HeldBuild(std::shared_ptr<Engine> next) : next_(std::move(next)) {}
 
-  std::function<Status(const std::string&, Engine*, std::shared_ptr<Engine>*)>
-  Build() {
-    return [this](const std::string&, Engine*, std::shared_ptr<Engine>* built) {
+  DatasetBuild Build() {
+    return [this](const DatasetSlot&, const std::string&, Engine*,
+                  std::shared_ptr<Engine>* built) {
       started_.set_value();
       released_.get_future().wait();
       *built = next_;
@@ -73,7 +73,8 @@ TEST(LocatorServiceTest, CallsInFlightFinishOnTheEngineTheyStartedWith) {
   LocatorServiceOptions options;
   options.build_engine = held.Build();
   LocatorService service(options);
-  EXPECT_EQ(service.Publish(old_engine), 1u);
+  DatasetSlot& dataset = service.datasets().default_slot();
+  EXPECT_EQ(dataset.Publish(old_engine), 1u);
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
 
@@ -130,7 +131,7 @@ TEST(LocatorServiceTest, CallsInFlightFinishOnTheEngineTheyStartedWith) {
   held.Release();
   const grpc::Status reloaded = reload.get();
   ASSERT_TRUE(reloaded.ok()) << reloaded.error_message();
-  EXPECT_EQ(service.engine(), new_engine);
+  EXPECT_EQ(dataset.serving().engine, new_engine);
 
   // New calls use the new engine; the stream opened before keeps the old.
   {
@@ -158,12 +159,12 @@ TEST(LocatorServiceTest, CallsBeforePublishAreRefusedAsLoading) {
   v1::LocateResponse response;
   const grpc::Status status = test::LocateOne(*stub, {0.5, 0.5}, &response);
   EXPECT_EQ(status.error_code(), Code::UNAVAILABLE);
-  EXPECT_EQ(status.error_message(), "dataset is still loading");
+  EXPECT_EQ(status.error_message(), "dataset 'default' is still loading");
 }
 
 TEST(LocatorServiceTest, DrainRefusesNewCalls) {
   LocatorService service(LocatorServiceOptions{});
-  service.Publish(UniformEngine(500, 3));
+  service.datasets().default_slot().Publish(UniformEngine(500, 3));
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
   service.Drain(std::chrono::system_clock::now());

@@ -54,7 +54,7 @@ TEST(LocatordStartupTest, HealthGoesFromNotServingToServing) {
       probe.ok() && health == HealthStatus::kNotServing;
   const bool saw_loading =
       early.error_code() == grpc::StatusCode::UNAVAILABLE &&
-      early.error_message() == "dataset is still loading";
+      early.error_message() == "dataset 'default' is still loading";
   EXPECT_TRUE(saw_not_serving || saw_loading);
   EXPECT_TRUE(early.ok() || saw_loading) << early.error_message();
 

@@ -29,54 +29,11 @@ using ::testing::HasSubstr;
 // What the in-flight test reloads.
 constexpr char kNextDataset[] = "uniform:20000:5";
 
-// Writes `n` uniform points of the unit square with values TestValue(p) as
-// CSV to `path`, replacing it atomically.
-void WriteCsv(const std::string& path, size_t n, uint64_t seed) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary);
-    out.precision(17);
-    out << "x,y,z\n";
-    for (const Point2& p : GenerateUniform(n, seed).points) {
-      out << p.x << "," << p.y << "," << TestValue(p) << "\n";
-    }
-  }
-  ASSERT_EQ(std::rename(temporary.c_str(), path.c_str()), 0);
-}
-
-// Checks unary and batch answers for points in and around the unit square
-// against CGAL on `dataset_path`.
-void ExpectAnswersAgree(v1::Locator::Stub& stub,
-                        const std::string& dataset_path) {
-  std::unique_ptr<Reference> reference;
-  ASSERT_TRUE(Reference::Build(dataset_path, &reference).ok());
-  std::vector<Point2> queries =
-      GenerateUniform(2000, 77).points;  // inside the hull, mostly
-  for (Point2& q : queries) q = {1.2 * q.x - 0.1, 1.2 * q.y - 0.1};
-  grpc::ClientContext context;
-  v1::LocateBatchResponse batch;
-  ASSERT_TRUE(
-      stub.LocateBatch(&context, BatchRequestFor(queries), &batch).ok());
-  std::vector<LocateResult> answers;
-  for (size_t row = 0; row < queries.size(); ++row) {
-    answers.push_back(FromBatchRow(batch, row));
-  }
-  EXPECT_EQ(reference->Disagreements(queries, answers, false), "");
-  for (size_t i = 0; i < 100; ++i) {
-    v1::LocateResponse unary;
-    ASSERT_TRUE(LocateOne(stub, queries[i], &unary).ok());
-    const LocateResult answer = FromLocateResponse(unary);
-    EXPECT_EQ(reference->Disagreements(std::span(&queries[i], 1),
-                                       std::span(&answer, 1), true),
-              "");
-  }
-}
-
 TEST(LocatordReloadTest, TheNewDatasetIsServedExactly) {
   const TestDatasetFile first;
   ScratchDir dir;
   const std::string second = dir.path() + "/second.csv";
-  WriteCsv(second, 2000, 9);
+  WriteUniformCsv(second, 2000, 9);
   std::unique_ptr<ServerProcess> server;
   ASSERT_TRUE(
       StartLocatord(first.path(), {"--reload-dir", dir.path()}, &server).ok());
@@ -128,13 +85,13 @@ TEST(LocatordReloadTest, ABadFileKeepsTheOldDatasetServing) {
 TEST(LocatordReloadTest, SighupReloadsTheConfiguredDataset) {
   ScratchDir dir;
   const std::string path = dir.path() + "/points.csv";
-  WriteCsv(path, 1500, 3);
+  WriteUniformCsv(path, 1500, 3);
   std::unique_ptr<ServerProcess> server;
   ASSERT_TRUE(StartLocatord(path, {}, &server).ok());
   auto stub = NewStub(*server);
   EXPECT_EQ(GetStats(*stub).dataset().input_points(), 1500u);
 
-  WriteCsv(path, 2500, 4);
+  WriteUniformCsv(path, 2500, 4);
   server->SendSignal(SIGHUP);
   const v1::GetStatsResponse stats = WaitForStats(
       *stub, [](const v1::GetStatsResponse& s) { return s.generation() == 2; });

@@ -32,7 +32,8 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   std::string help;
   ASSERT_TRUE(Parse({}, &config, &help).ok());
   EXPECT_EQ(help, "");
-  EXPECT_EQ(config.dataset, "uniform:1000000:1");
+  EXPECT_EQ(config.datasets,
+            std::vector<DatasetConfig>{{.spec = "uniform:1000000:1"}});
   EXPECT_EQ(config.serving.ListenAddress(), "127.0.0.1:50051");
   EXPECT_EQ(config.serving.max_message_bytes, 64u << 20);
   EXPECT_EQ(config.serving.max_batch_points, 1'000'000u);
@@ -106,7 +107,8 @@ TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
                                "30"},
                               &config);
   ASSERT_TRUE(status.ok()) << status.ToString();
-  EXPECT_EQ(config.dataset, "clusters:5000:4:2");
+  EXPECT_EQ(config.datasets,
+            std::vector<DatasetConfig>{{.spec = "clusters:5000:4:2"}});
   EXPECT_EQ(config.serving.listen_host, "0.0.0.0");
   EXPECT_EQ(config.serving.listen_port, 0);
   EXPECT_EQ(config.engine.strategy, "adaptive-paper");
@@ -134,7 +136,7 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
        {"--tls-cert", "--tls-client-ca", "--token-file", "--admin-token-file",
         "--redact", "--max-concurrent-streams", "--min-ping-interval-ms",
         "--default-deadline-ms", "--max-dataset-points", "--http-listen",
-        "--state-dir"}) {
+        "--state-dir", "--http-max-body-bytes", "--http-cors-origin"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
 }
@@ -164,6 +166,13 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--http-listen", "localhost:65536"},
       {"--strategy", "fastest"},
       {"--dataset", ""},
+      {"--dataset", "terrain="},
+      {"--http-max-body-bytes", "100"},
+      {"--http-max-body-bytes", "8GiB"},
+      {"--http-cors-origin", "example.com"},
+      {"--http-cors-origin", "http://example.com/"},
+      {"--http-cors-origin", "https://*.example.com"},
+      {"--http-cors-origin", "ftp://example.com"},
       {"--max-dataset-points", "2"},
       {"--max-dataset-points", "5000000000"},
       {"--max-concurrent-streams", "0"},
@@ -183,6 +192,79 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << args[0];
     EXPECT_THAT(status.message(), HasSubstr(args[0]));
   }
+}
+
+TEST(ServerConfigTest, RepeatedDatasetFlagsNameDatasetsFirstIsTheDefault) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--dataset", "terrain=uniform:1000:1", "--dataset",
+                     "bedrock=survey.gpkg?layer=pts&z=h", "--dataset",
+                     "b.2-x_=ogr:p.csv?oo=X_POSSIBLE_NAMES=x"},
+                    &config)
+                  .ok());
+  EXPECT_EQ(config.datasets,
+            (std::vector<DatasetConfig>{
+                {"terrain", "uniform:1000:1", true},
+                {"bedrock", "survey.gpkg?layer=pts&z=h", true},
+                {"b.2-x_", "ogr:p.csv?oo=X_POSSIBLE_NAMES=x", true}}));
+  // A bare spec first, then named ones.
+  ASSERT_TRUE(
+      Parse({"--dataset", "pts.csv", "--dataset", "b=uniform:10"}, &config)
+          .ok());
+  EXPECT_EQ(config.datasets,
+            (std::vector<DatasetConfig>{{"default", "pts.csv", false},
+                                        {"b", "uniform:10", true}}));
+}
+
+TEST(ServerConfigTest, ASpecWhoseFirstEqualsFollowsNoNameIsBare) {
+  // '=' after '?' (OGR options), ':' (generators, ogr:) or '/' (paths).
+  for (const char* spec :
+       {"survey.gpkg?layer=a", "ogr:p.csv?oo=X_POSSIBLE_NAMES=x", "./a=b.csv",
+        "/data/a=b.csv", "uniform:1000:1", ".hidden=x.csv", "-x=y.csv"}) {
+    DatasetConfig config;
+    ASSERT_TRUE(ParseDatasetFlag(spec, &config).ok()) << spec;
+    EXPECT_EQ(config, (DatasetConfig{"default", spec, false})) << spec;
+  }
+  DatasetConfig config;
+  ASSERT_TRUE(ParseDatasetFlag("a=b.csv", &config).ok());
+  EXPECT_EQ(config, (DatasetConfig{"a", "b.csv", true}));
+  EXPECT_FALSE(IsValidDatasetName(std::string(kMaxDatasetNameLength + 1, 'a')));
+  EXPECT_TRUE(IsValidDatasetName(std::string(kMaxDatasetNameLength, 'a')));
+}
+
+TEST(ServerConfigTest, BadDatasetListsFailNamingTheProblem) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+      {{"--dataset", "a.csv", "--dataset", "b.csv"},
+       "only the first --dataset may omit NAME="},
+      {{"--dataset", "t=a.csv", "--dataset", "b.csv"},
+       "only the first --dataset may omit NAME="},
+      {{"--dataset", "t=a.csv", "--dataset", "t=b.csv"},
+       "the name 't' is given twice"},
+      {{"--dataset", "a.csv", "--dataset", "default=b.csv"},
+       "the name 'default' is given twice"},
+      {{"--dataset", "t="}, "the dataset spec must not be empty"},
+  };
+  for (const auto& [args, message] : bad) {
+    ServerConfig config;
+    const Status status = Parse(args, &config);
+    EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << message;
+    EXPECT_THAT(status.message(), HasSubstr("--dataset")) << message;
+    EXPECT_THAT(status.message(), HasSubstr(message));
+  }
+}
+
+TEST(ServerConfigTest, HttpFlagsMapToTheConfig) {
+  ServerConfig config;
+  EXPECT_EQ(config.http_max_body_bytes, size_t{16} << 20);
+  ASSERT_TRUE(Parse({"--http-listen", "127.0.0.1:0", "--http-max-body-bytes",
+                     "64KiB", "--http-cors-origin", "https://maps.example.org",
+                     "--http-cors-origin", "http://localhost:8000"},
+                    &config)
+                  .ok());
+  EXPECT_TRUE(config.http_enabled());
+  EXPECT_EQ(config.http_max_body_bytes, 64u << 10);
+  EXPECT_EQ(config.http_cors_origins,
+            (std::vector<std::string>{"https://maps.example.org",
+                                      "http://localhost:8000"}));
 }
 
 TEST(ServerConfigTest, StateDirMustBeADirectoryForSelfTuning) {

@@ -3,7 +3,9 @@
 // map with hot regions, start points and an edge sample, and over the heat
 // map the domain's boundary and holes and the breaklines of a constrained
 // dataset; charts cost and throughput, and records what it rendered in data
-// attributes for scripts and tests.
+// attributes for scripts and tests. With several datasets (/v1/datasets), a
+// select switches the dataset shown (?dataset=NAME on every /api/ path; the
+// page's own ?dataset= picks the first one shown).
 'use strict';
 
 const REFRESH_MS = 1500;
@@ -19,9 +21,11 @@ const COLORS = {
   qps: '#63b3ed',
 };
 
+let dataset = new URLSearchParams(location.search).get('dataset') || '';
 // /api/edges: the edge sample, the domain's boundary and the breaklines.
-let mapEdges = {segments: [], boundary: [], breaklines: []};
-let edgesGeneration = null;  // the serving generation mapEdges are of
+const NO_EDGES = {segments: [], boundary: [], breaklines: []};
+let mapEdges = NO_EDGES;
+let edgesGeneration = null;  // dataset and generation mapEdges are of
 let renderCount = 0;
 
 function setText(id, text) {
@@ -260,6 +264,11 @@ function showState(text, className) {
   state.className = 'state ' + className;
 }
 
+// An /api/ path for the dataset shown.
+function api(path) {
+  return dataset ? `${path}?dataset=${encodeURIComponent(dataset)}` : path;
+}
+
 async function fetchJson(path) {
   const response = await fetch(path, {cache: 'no-store'});
   const body = await response.json();
@@ -269,18 +278,49 @@ async function fetchJson(path) {
 // Fetches the map's edges once per serving generation (they change only
 // when a reload swaps the dataset).
 async function ensureEdges(generation) {
-  if (generation === edgesGeneration) return;
-  const edges = await fetchJson('/api/edges');
+  const key = `${dataset}/${generation}`;
+  if (key === edgesGeneration) return;
+  const edges = await fetchJson(api('/api/edges'));
   if (edges.status !== 200) return;
   mapEdges = edges.body;
-  edgesGeneration = generation;
+  edgesGeneration = key;
+}
+
+// Fills the dataset select from /v1/datasets when the server holds more
+// than one (it stays hidden otherwise, and when the API wants a token).
+async function loadDatasets() {
+  try {
+    const list = await fetchJson('/v1/datasets');
+    const datasets = list.status === 200 ? list.body.datasets || [] : [];
+    if (datasets.length < 2) return;
+    const select = document.getElementById('dataset-select');
+    for (const entry of datasets) {
+      const option = document.createElement('option');
+      option.value = entry.name;
+      option.textContent = entry.is_default ? `${entry.name} (default)` :
+                                              entry.name;
+      option.selected = entry.name === dataset ||
+                        (dataset === '' && entry.is_default);
+      select.appendChild(option);
+    }
+    select.hidden = false;
+    select.addEventListener('change', () => {
+      dataset = select.value;
+      mapEdges = NO_EDGES;
+      const url = new URL(location.href);
+      url.searchParams.set('dataset', dataset);
+      history.replaceState(null, '', url);
+    });
+  } catch (error) {
+    // The page works without the list: it shows the default dataset.
+  }
 }
 
 async function refresh() {
   try {
-    const stats = await fetchJson('/api/stats');
+    const stats = await fetchJson(api('/api/stats'));
     if (stats.status === 200) {
-      const history = await fetchJson('/api/history');
+      const history = await fetchJson(api('/api/history'));
       await ensureEdges(stats.body.generation);
       render(stats.body, history.body);
     } else {
@@ -293,4 +333,4 @@ async function refresh() {
   }
 }
 
-refresh();
+loadDatasets().then(refresh);

@@ -37,8 +37,9 @@ std::string Lower(std::string_view text) {
 
 }  // namespace
 
-Status HttpRequest(int port, std::string_view method, std::string_view target,
-                   HttpReply* reply) {
+Status SendHttp(int port, std::string_view method, std::string_view target,
+                HttpReply* reply, std::string_view body,
+                const HttpHeaders& headers) {
   asio::io_context io;
   beast::tcp_stream stream(io);
   if (Status status = Connect(port, &stream); !status.ok()) return status;
@@ -49,6 +50,11 @@ Status HttpRequest(int port, std::string_view method, std::string_view target,
     request.method_string(beast::string_view(method.data(), method.size()));
   }
   request.set(http::field::host, "127.0.0.1");
+  for (const auto& [name, value] : headers) request.set(name, value);
+  request.body() = std::string(body);
+  if (!body.empty() || request.method() == http::verb::post) {
+    request.prepare_payload();
+  }
   beast::error_code error;
   http::write(stream, request, error);
   if (error) return Status::IOError("write: " + error.message());

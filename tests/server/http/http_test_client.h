@@ -9,6 +9,8 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "common/status.h"
 
@@ -20,14 +22,20 @@ struct HttpReply {
   std::string body;
 };
 
-// Sends `method` `target` to 127.0.0.1:port and reads the reply. IOError if
-// the connection fails or closes before a complete reply.
-Status HttpRequest(int port, std::string_view method, std::string_view target,
-                   HttpReply* reply);
+// Header fields to send, in order.
+using HttpHeaders = std::vector<std::pair<std::string, std::string>>;
+
+// Sends `method` `target` with `headers` and `body` (with its
+// Content-Length; none when empty and the method is not POST) to
+// 127.0.0.1:port and reads the reply. IOError if the connection fails or
+// closes before a complete reply.
+Status SendHttp(int port, std::string_view method, std::string_view target,
+                HttpReply* reply, std::string_view body = {},
+                const HttpHeaders& headers = {});
 
 // GET, the usual case.
 inline Status HttpGet(int port, std::string_view target, HttpReply* reply) {
-  return HttpRequest(port, "GET", target, reply);
+  return SendHttp(port, "GET", target, reply);
 }
 
 // Writes `raw` bytes to a fresh connection and returns everything the

@@ -31,23 +31,27 @@ Status LocatordWithHttp::Start(const std::string& dataset,
   status = started->process_->WaitForListening();
   if (!status.ok()) return status;
   started->http_port_ = started->process_->port();
+  status = started->WaitUntilServes("");
+  if (!status.ok()) return status;
+  *server = std::move(started);
+  return Status::OK();
+}
 
+Status LocatordWithHttp::WaitUntilServes(const std::string& dataset) {
+  const std::string target = "/api/stats?dataset=" + dataset;
   const auto deadline = std::chrono::steady_clock::now() + kServingTimeout;
   for (;;) {
     HttpReply reply;
-    if (HttpGet(started->http_port_, "/api/stats", &reply).ok() &&
-        reply.status == 200) {
-      break;
+    if (HttpGet(http_port_, target, &reply).ok() && reply.status == 200) {
+      return Status::OK();
     }
-    if (started->process_->WaitForExit(std::chrono::milliseconds(0)) ||
+    if (process_->WaitForExit(std::chrono::milliseconds(0)) ||
         std::chrono::steady_clock::now() > deadline) {
-      return Status::Unavailable("locatord did not serve; stderr:\n" +
-                                 started->process_->StderrText());
+      return Status::Unavailable("locatord did not serve '" + dataset +
+                                 "'; stderr:\n" + process_->StderrText());
     }
     std::this_thread::sleep_for(kPollInterval);
   }
-  *server = std::move(started);
-  return Status::OK();
 }
 
 std::unique_ptr<v1::Locator::Stub> LocatordWithHttp::NewStub() const {

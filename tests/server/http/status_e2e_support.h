@@ -32,6 +32,11 @@ class LocatordWithHttp {
                       const std::vector<std::string>& flags,
                       std::unique_ptr<LocatordWithHttp>* server);
 
+  // Waits until dataset `dataset` ("": the default) serves: /api/stats
+  // answers 200 for it. Unavailable, with stderr, if the server exits or
+  // 60 s pass first.
+  Status WaitUntilServes(const std::string& dataset);
+
   ServerProcess& process() { return *process_; }
   int http_port() const { return http_port_; }
   const std::string& grpc_target() const { return grpc_target_; }

@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "server/core/dataset.h"
@@ -28,26 +29,46 @@ using ::testing::HasSubstr;
 
 class StatusEndpointsTest : public ::testing::Test {
  protected:
-  // Endpoints over engine_, wired as locatord wires them (there through
-  // LocatorService::CurrentStats).
+  // Endpoints over engine_, one dataset named "default", wired as locatord
+  // wires them (there through LocatorService::CurrentStats).
   StatusEndpoints Endpoints() {
-    const StatsSource stats = [this](v1::GetStatsResponse* out) {
-      if (engine_ == nullptr) return false;
-      ToGetStatsResponse(engine_->Stats(), out);
-      return true;
+    const auto known = [](std::string_view dataset) {
+      return dataset.empty() || dataset == "default"
+                 ? Status::OK()
+                 : Status::NotFound("unknown dataset '" + std::string(dataset) +
+                                    "'");
     };
-    auto collector = std::make_shared<EngineCollector>(stats);
+    const StatsSource stats = [this, known](std::string_view dataset,
+                                            v1::GetStatsResponse* out) {
+      if (Status status = known(dataset); !status.ok()) return status;
+      if (engine_ == nullptr) return Status::Unavailable("loading");
+      ToGetStatsResponse(engine_->Stats(), out);
+      return Status::OK();
+    };
+    auto collector = std::make_shared<EngineCollector>([stats] {
+      DatasetStatsSample sample;
+      sample.dataset = "default";
+      v1::GetStatsResponse response;
+      if (stats("", &response).ok()) sample.stats = response;
+      return std::vector<DatasetStatsSample>{sample};
+    });
     return StatusEndpoints(
         {.stats = stats,
          .edges =
-             [this](MapEdges* edges) {
-               if (engine_ == nullptr) return false;
+             [this, known](std::string_view dataset, MapEdges* edges) {
+               if (Status status = known(dataset); !status.ok()) return status;
+               if (engine_ == nullptr) return Status::Unavailable("loading");
                edges->segments = engine_->EdgeSample();
                edges->boundary = engine_->domain_outline().boundary;
                edges->breaklines = engine_->domain_outline().breaklines;
-               return true;
+               return Status::OK();
              },
-         .history = &history_,
+         .history =
+             [this, known](std::string_view dataset,
+                           const StatsHistory** history) {
+               *history = &history_;
+               return known(dataset);
+             },
          .metrics_text = [collector] { return MetricsText({collector}); }});
   }
 
@@ -77,7 +98,7 @@ TEST_F(StatusEndpointsTest, WhileLoadingTheApiIs503AndMetricsSayNotLoaded) {
   EXPECT_EQ(metrics.status, 200u);
   PrometheusText text;
   ASSERT_TRUE(ParsePrometheusText(metrics.body, &text).ok()) << metrics.body;
-  EXPECT_EQ(text.Value("locator_engine_loaded"), 0);
+  EXPECT_EQ(text.Value("locator_engine_loaded", {{"dataset", "default"}}), 0);
   EXPECT_EQ(text.Value("locator_queries_total"), std::nullopt);
   EXPECT_EQ(endpoints.Handle("/").status, 200u);
 }
@@ -104,7 +125,7 @@ TEST_F(StatusEndpointsTest, FollowsTheCurrentEngine) {
   PrometheusText text;
   ASSERT_TRUE(
       ParsePrometheusText(endpoints.Handle("/metrics").body, &text).ok());
-  EXPECT_EQ(text.Value("locator_queries_total"), 10);
+  EXPECT_EQ(text.Value("locator_queries_total", {{"dataset", "default"}}), 10);
 
   // A new engine: the same endpoints now describe it.
   Load();
@@ -141,6 +162,42 @@ TEST_F(StatusEndpointsTest, EdgesCarryTheDomainBoundaryAndBreaklines) {
   EXPECT_EQ(breaklines.front().array()[1].number(), a.y);
   EXPECT_EQ(breaklines.front().array()[2].number(), b.x);
   EXPECT_EQ(breaklines.front().array()[3].number(), b.y);
+}
+
+TEST_F(StatusEndpointsTest, TheApiPathsTakeADatasetAndRefuseUnknownOnes) {
+  const StatusEndpoints endpoints = Endpoints();
+  Load();
+  for (const char* path : {"/api/stats", "/api/edges", "/api/history"}) {
+    EXPECT_EQ(endpoints.Handle(path, "dataset=default").status, 200u) << path;
+    EXPECT_EQ(endpoints.Handle(path, "x=1&dataset=default&y=2").body,
+              endpoints.Handle(path).body)
+        << path;
+    const HttpResponse unknown = endpoints.Handle(path, "dataset=nope");
+    EXPECT_EQ(unknown.status, 404u) << path;
+    EXPECT_EQ(unknown.content_type, "application/json");
+    JsonValue error;
+    ASSERT_TRUE(ParseJson(unknown.body, &error).ok()) << unknown.body;
+    EXPECT_EQ(error["code"].number(), 5);  // NOT_FOUND
+    EXPECT_EQ(error["status"].string(), "NOT_FOUND");
+    EXPECT_EQ(error["message"].string(), "unknown dataset 'nope'");
+  }
+}
+
+TEST_F(StatusEndpointsTest, ServesTheWebExampleUnderWeb) {
+  const StatusEndpoints endpoints = Endpoints();
+  const HttpResponse index = endpoints.Handle("/web/");
+  EXPECT_EQ(index.status, 200u);
+  EXPECT_EQ(index.content_type, "text/html; charset=utf-8");
+  EXPECT_EQ(endpoints.Handle("/web/index.html").body, index.body);
+  EXPECT_THAT(endpoints.Handle("/web/app.js").body, HasSubstr(":locate"));
+  EXPECT_EQ(endpoints.Handle("/web/style.css").status, 200u);
+  const HttpResponse bare = endpoints.Handle("/web");
+  EXPECT_EQ(bare.status, 301u);
+  ASSERT_EQ(bare.headers.size(), 1u);
+  EXPECT_EQ(bare.headers[0].second, "/web/");
+  for (const char* path : {"/web/nope", "/web/../index.html", "/web//app.js"}) {
+    EXPECT_EQ(endpoints.Handle(path).status, 404u) << path;
+  }
 }
 
 TEST_F(StatusEndpointsTest, ServesTheEmbeddedPage) {

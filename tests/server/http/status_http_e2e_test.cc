@@ -223,7 +223,7 @@ TEST_F(StatusHttpTest, UnknownPathsAre404AndOtherMethods405) {
   for (const std::string method : {"POST", "PUT", "DELETE"}) {
     HttpReply reply;
     ASSERT_TRUE(
-        HttpRequest(server_->http_port(), method, "/metrics", &reply).ok());
+        SendHttp(server_->http_port(), method, "/metrics", &reply).ok());
     EXPECT_EQ(reply.status, 405u) << method;
     EXPECT_EQ(reply.headers["allow"], "GET, HEAD");
   }
@@ -232,7 +232,7 @@ TEST_F(StatusHttpTest, UnknownPathsAre404AndOtherMethods405) {
 TEST_F(StatusHttpTest, HeadHasTheHeadersOfGetAndNoBody) {
   HttpReply get, head;
   ASSERT_TRUE(HttpGet(server_->http_port(), "/", &get).ok());
-  ASSERT_TRUE(HttpRequest(server_->http_port(), "HEAD", "/", &head).ok());
+  ASSERT_TRUE(SendHttp(server_->http_port(), "HEAD", "/", &head).ok());
   EXPECT_EQ(head.status, 200u);
   EXPECT_EQ(head.headers["content-type"], "text/html; charset=utf-8");
   EXPECT_EQ(head.headers["content-length"], std::to_string(get.body.size()));

@@ -23,6 +23,7 @@
 
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
+#include "tests/server/http/browser.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/status_e2e_support.h"
 #include "tests/testing/wait.h"
@@ -30,7 +31,6 @@
 namespace locator::test {
 namespace {
 
-constexpr char kChromium[] = "/usr/bin/chromium";
 constexpr int kClusteredQueries = 3000;
 constexpr int kQueriesPerBurst = 1000;
 
@@ -42,107 +42,16 @@ double LatestSampleTime(int port) {
   return taken.empty() ? 0 : taken.back().number();
 }
 
-// Runs headless Chromium on `url` with `flags`; returns its stdout. Its
-// stderr goes to a file next to the fresh profile directory.
-std::string RunChromium(const std::string& url,
-                        const std::vector<std::string>& flags) {
-  std::string dir_template = ::testing::TempDir() + "chromium-XXXXXX";
-  EXPECT_NE(mkdtemp(dir_template.data()), nullptr);
-  std::string command = std::string("timeout 120 ") + kChromium +
-                        " --headless --no-sandbox --disable-gpu"
-                        " --disable-quic --no-first-run"
-                        " --disable-background-networking"
-                        " --disable-component-update --disable-sync"
-                        " --virtual-time-budget=6000"
-                        " --user-data-dir=" +
-                        dir_template + "/profile";
-  for (const std::string& flag : flags) command += " " + flag;
-  command += " " + url + " 2>" + dir_template + "/stderr.txt";
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  EXPECT_NE(pipe, nullptr) << command;
-  if (pipe == nullptr) return out;
-  char chunk[4096];
-  size_t got;
-  while ((got = fread(chunk, 1, sizeof(chunk), pipe)) > 0)
-    out.append(chunk, got);
-  const int exit_status = pclose(pipe);
-  std::ifstream stderr_file(dir_template + "/stderr.txt");
-  const std::string stderr_text((std::istreambuf_iterator<char>(stderr_file)),
-                                std::istreambuf_iterator<char>());
-  EXPECT_EQ(exit_status, 0) << command << "\n" << stderr_text;
-  std::filesystem::remove_all(dir_template);
-  return out;
-}
-
-std::string HtmlUnescape(std::string text) {
-  const std::pair<std::string, std::string> entities[] = {{"&quot;", "\""},
-                                                          {"&#39;", "'"},
-                                                          {"&lt;", "<"},
-                                                          {"&gt;", ">"},
-                                                          {"&amp;", "&"}};
-  for (const auto& [entity, plain] : entities) {
-    for (size_t at = text.find(entity); at != std::string::npos;
-         at = text.find(entity, at + plain.size())) {
-      text.replace(at, entity.size(), plain);
-    }
-  }
-  return text;
-}
-
-// The start tag of the element with id `id` in `dom` ("" if none).
-std::string StartTag(const std::string& dom, const std::string& id) {
-  const size_t at = dom.find(" id=\"" + id + "\"");
-  if (at == std::string::npos) return "";
-  const size_t begin = dom.rfind('<', at);
-  return dom.substr(begin, dom.find('>', at) - begin + 1);
-}
-
-// Attribute `name` of a start tag, unescaped ("" if absent).
-std::string Attribute(const std::string& tag, const std::string& name) {
-  const std::string key = " " + name + "=\"";
-  const size_t at = tag.find(key);
-  if (at == std::string::npos) return "";
-  const size_t begin = at + key.size();
-  return HtmlUnescape(tag.substr(begin, tag.find('"', begin) - begin));
-}
-
 // The data-value of the figure with id `id`.
 std::string Figure(const std::string& dom, const std::string& id) {
   return Attribute(StartTag(dom, id), "data-value");
 }
 
-// Width and height from a PNG's IHDR chunk; {0, 0} if it is not a PNG.
-std::pair<uint32_t, uint32_t> PngSize(const std::string& png) {
-  if (png.size() < 24 || png.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 ||
-      png.compare(12, 4, "IHDR") != 0) {
-    return {0, 0};
-  }
-  const auto be32 = [&png](size_t at) {
-    uint32_t v = 0;
-    for (size_t i = 0; i < 4; ++i) {
-      v = (v << 8) | static_cast<unsigned char>(png[at + i]);
-    }
-    return v;
-  };
-  return {be32(16), be32(20)};
-}
-
 // Takes a 1280x900 screenshot of `url` into ARTIFACTS_DIR/`name` and
-// checks that it is a PNG of that size with something drawn in it.
-void ExpectScreenshotDrawn(const std::string& url, const std::string& name) {
-  const std::string artifacts = ARTIFACTS_DIR;
-  std::filesystem::create_directories(artifacts);
-  const std::string png_path = artifacts + "/" + name;
-  std::filesystem::remove(png_path);
-  RunChromium(url, {"--screenshot=" + png_path, "--window-size=1280,900"});
-  std::ifstream file(png_path, std::ios::binary);
-  ASSERT_TRUE(file.good()) << png_path;
-  const std::string png((std::istreambuf_iterator<char>(file)),
-                        std::istreambuf_iterator<char>());
-  EXPECT_EQ(PngSize(png), std::make_pair(1280u, 900u));
-  // A blank 1280x900 page compresses to a few KB; the drawn one does not.
-  EXPECT_GT(png.size(), 30000u);
+// checks that something is drawn in it.
+void ExpectPageDrawn(const std::string& url, const std::string& name) {
+  ExpectScreenshotDrawn(url, std::string(ARTIFACTS_DIR) + "/" + name, 1280,
+                        900, 30000);
 }
 
 TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
@@ -235,7 +144,7 @@ TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
         << "cell " << cell["i"].number() << "," << cell["j"].number();
   }
 
-  ExpectScreenshotDrawn(url, "status_page.png");
+  ExpectPageDrawn(url, "status_page.png");
 }
 
 // A .poly terrain: the square [0, 8]^2 with a bay cut in from the top to
@@ -292,7 +201,7 @@ TEST(StatusPageTest, DomainBoundaryHolesAndBreaklinesAreDrawn) {
   const std::string legend = StartTag(dom, "domain-legend");
   ASSERT_NE(legend, "") << dom;
   EXPECT_EQ(legend.find(" hidden"), std::string::npos) << legend;
-  ExpectScreenshotDrawn(url, "status_page_domain.png");
+  ExpectPageDrawn(url, "status_page_domain.png");
 }
 
 }  // namespace

@@ -1,0 +1,26 @@
+#include "server/http/api_error.h"
+
+#include "common/grpc_code_name.h"
+#include "server/http/json_writer.h"
+#include "server/status_mapping.h"
+
+namespace locator {
+
+HttpResponse ApiError(const grpc::Status& status, unsigned http_status) {
+  JsonWriter json;
+  json.BeginObject()
+      .Key("code")
+      .Integer(static_cast<uint64_t>(status.error_code()))
+      .Key("status")
+      .String(GrpcCodeName(status.error_code()))
+      .Key("message")
+      .String(status.error_message())
+      .EndObject();
+  return HttpResponse{.status = http_status != 0
+                                    ? http_status
+                                    : HttpStatusFor(status.error_code()),
+                      .content_type = kJsonContentType,
+                      .body = json.text()};
+}
+
+}  // namespace locator

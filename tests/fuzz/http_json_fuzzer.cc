@@ -1,0 +1,204 @@
+// Fuzzes the HTTP/JSON API's request path: bytes -> an HTTP request to
+// JsonApi (the first byte picks the route and method, the rest is the
+// body) -> JSON parsing, admission, the service's Locate or LocateBatch on
+// a small fixed dataset -> the JSON answer.
+//
+// Aborts unless every answer is one JSON object: on 200 the route's
+// response message in protobuf's JSON mapping, otherwise an ApiError
+// {"code", "status", "message"} whose HTTP status is the code's
+// (HttpStatusFor; 405 for a wrong method); unless a :locate body that
+// protobuf parses, with a finite point and no other dataset, is answered
+// 200 with the engine's own triangle, and every other :locate body 400
+// INVALID_ARGUMENT; and unless a :locateBatch answer has one entry per
+// point.
+
+#include <google/protobuf/struct.pb.h>
+#include <google/protobuf/util/json_util.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <future>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "locator/v1/locator.pb.h"
+#include "server/core/dataset.h"
+#include "server/core/engine.h"
+#include "server/http/json_api.h"
+#include "server/locator_service.h"
+#include "server/status_mapping.h"
+
+namespace locator {
+namespace {
+
+// What the first input byte selects (modulo the count).
+struct Route {
+  const char* method;
+  const char* path;
+};
+constexpr Route kRoutes[] = {
+    {"POST", "/v1/datasets/default:locate"},
+    {"POST", "/v1/datasets/default:locateBatch"},
+    {"POST", "/v1/datasets/other:locate"},
+    {"GET", "/v1/datasets"},
+    {"GET", "/v1/datasets/default:locate"},
+    {"POST", "/v1/datasets/nope:locate"},
+    {"POST", "/v1/datasets/default:nope"},
+    {"POST", "/v1/elsewhere"},
+};
+
+[[noreturn]] void Fail(const std::string& what, const std::string& body) {
+  std::fprintf(stderr, "http_json_fuzzer: %s\nanswer: %s\n", what.c_str(),
+               body.c_str());
+  std::abort();
+}
+
+struct Fixture {
+  std::shared_ptr<Engine> engine;
+  std::unique_ptr<LocatorService> service;
+  std::unique_ptr<JsonApi> api;
+};
+
+Fixture* MakeFixture() {
+  auto* f = new Fixture;
+  LocatorServiceOptions options;
+  options.max_batch_points = 64;
+  options.datasets = {DatasetConfig{.spec = "fixed"},
+                      DatasetConfig{"other", "fixed", true}};
+  f->service = std::make_unique<LocatorService>(options);
+  std::unique_ptr<Engine> engine;
+  Dataset dataset = GenerateUniform(200, 3);
+  for (const Point2& p : dataset.points) dataset.values.push_back(p.x - p.y);
+  if (!Engine::Create(dataset, EngineOptions(), &engine).ok()) {
+    Fail("cannot build the engine", "");
+  }
+  f->engine = std::move(engine);
+  for (const auto& slot : f->service->datasets().slots()) {
+    slot->Publish(f->engine);
+  }
+  f->api = std::make_unique<JsonApi>(f->service.get());
+  return f;
+}
+
+// Sends `request` and waits for the answer.
+HttpResponse Call(JsonApi& api, HttpRequest request) {
+  std::promise<HttpResponse> answered;
+  api.Handle(std::move(request), [&answered](HttpResponse response) {
+    answered.set_value(std::move(response));
+  });
+  return answered.get_future().get();
+}
+
+template <typename Message>
+Message ParseAnswer(const HttpResponse& response) {
+  Message message;
+  if (!google::protobuf::util::JsonStringToMessage(response.body, &message)
+           .ok()) {
+    Fail("the answer does not parse as " + message.GetTypeName(),
+         response.body);
+  }
+  return message;
+}
+
+// Checks an error answer; returns its gRPC code.
+int CheckError(const HttpResponse& response) {
+  const auto error = ParseAnswer<google::protobuf::Struct>(response);
+  const auto& fields = error.fields();
+  if (fields.size() != 3 || fields.count("code") != 1 ||
+      fields.count("status") != 1 || fields.count("message") != 1) {
+    Fail("an error is not {code, status, message}", response.body);
+  }
+  const int code = static_cast<int>(fields.at("code").number_value());
+  if (response.status != 405 &&
+      response.status != HttpStatusFor(static_cast<grpc::StatusCode>(code))) {
+    Fail("HTTP status " + std::to_string(response.status) + " for code " +
+             std::to_string(code),
+         response.body);
+  }
+  return code;
+}
+
+void CheckLocate(const Fixture& f, std::string_view body,
+                 const HttpResponse& response) {
+  v1::LocateRequest request;
+  const bool parses =
+      google::protobuf::util::JsonStringToMessage(
+          body.empty() ? std::string_view("{}") : body, &request)
+          .ok();
+  const bool valid =
+      parses && request.has_point() && std::isfinite(request.point().x()) &&
+      std::isfinite(request.point().y()) &&
+      (request.dataset().empty() || request.dataset() == "default") &&
+      request.crs().empty();
+  if (!valid) {
+    // A CRS on a dataset without one, like every other fault, is the
+    // caller's.
+    if (response.status != 400 || CheckError(response) != 3) {
+      Fail("a bad :locate body is not 400 INVALID_ARGUMENT", response.body);
+    }
+    return;
+  }
+  if (response.status != 200) {
+    Fail(":locate of a valid body failed", response.body);
+  }
+  const auto answer = ParseAnswer<v1::LocateResponse>(response);
+  LocateResult expected;
+  if (!f.engine->Locate({request.point().x(), request.point().y()}, &expected)
+           .ok()) {
+    Fail("the engine refused a point the API located", response.body);
+  }
+  // On an edge or a vertex either incident triangle is right, and which
+  // one a walk reports depends on where it started.
+  const bool in_a_face = expected.type == LocationType::kFace;
+  if (in_a_face && (answer.type() != v1::LOCATION_TYPE_FACE ||
+                    answer.triangle_id() != expected.triangle_id)) {
+    Fail(":locate answered another triangle than the engine", response.body);
+  }
+}
+
+void FuzzOneInput(const uint8_t* data, size_t size) {
+  static Fixture* fixture = MakeFixture();
+  if (size == 0) return;
+  const size_t route_index = data[0] % std::size(kRoutes);
+  const Route& route = kRoutes[route_index];
+  const std::string body(reinterpret_cast<const char*>(data + 1), size - 1);
+  HttpRequest request;
+  request.method = route.method;
+  request.path = route.path;
+  request.body = body;
+  const HttpResponse response = Call(*fixture->api, request);
+  if (response.content_type != "application/json") {
+    Fail("not JSON: " + response.content_type, response.body);
+  }
+  if (response.status != 200) {
+    CheckError(response);
+  } else if (std::string_view(route.path).ends_with(":locateBatch")) {
+    const auto answer = ParseAnswer<v1::LocateBatchResponse>(response);
+    v1::LocateBatchRequest sent;
+    if (!google::protobuf::util::JsonStringToMessage(
+             body.empty() ? std::string_view("{}") : std::string_view(body),
+             &sent)
+             .ok() ||
+        answer.types_size() != sent.xs_size()) {
+      Fail(":locateBatch answered another number of points", response.body);
+    }
+  } else if (std::string_view(route.path) == "/v1/datasets") {
+    if (ParseAnswer<v1::ListDatasetsResponse>(response).datasets_size() != 2) {
+      Fail("ListDatasets lost a dataset", response.body);
+    }
+  }
+  // POST :locate of the default dataset.
+  if (route_index == 0) CheckLocate(*fixture, body, response);
+}
+
+}  // namespace
+}  // namespace locator
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  locator::FuzzOneInput(data, size);
+  return 0;
+}
