@@ -2,7 +2,9 @@
 // in UTM zone 33N (EPSG:32633) with z, served by the real binary, answers
 // checked against CGAL's own locate() on the same points, the CRS checked in
 // GetStats, GIS specs through the Reload path, and requests in EPSG:4326
-// against the same points projected by cs2cs beforehand.
+// against the same points projected by cs2cs beforehand. The hill is the
+// dataset named "terrain", served beside a default dataset ("bedrock", a
+// generator without a CRS), so every hill request names its dataset.
 
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
@@ -27,6 +29,9 @@ using ::testing::HasSubstr;
 constexpr int kHillSide = 15;  // 225 points, 400 m apart
 // Above the largest batch the tests send (LonLatQueries: 900 points).
 constexpr int kMaxBatchPoints = 1000;
+// The hill's dataset name, and the default dataset served beside it.
+constexpr char kTerrain[] = "terrain";
+constexpr char kBedrockSpec[] = "uniform:3000:7";
 
 class LocatordGisTest : public ::testing::Test {
  protected:
@@ -37,11 +42,11 @@ class LocatordGisTest : public ::testing::Test {
     Dataset points;
     ASSERT_TRUE(gis::LoadOgrDataset(*gpkg_, &points).ok());
     ASSERT_TRUE(Reference::FromDataset(std::move(points), &reference_).ok());
-    const Status started =
-        StartLocatord(*gpkg_,
-                      {"--reload-dir", dir_->path(), "--max-batch-points",
-                       std::to_string(kMaxBatchPoints)},
-                      &server_);
+    const Status started = StartLocatord(
+        std::string("bedrock=") + kBedrockSpec,
+        {"--dataset", std::string(kTerrain) + "=" + *gpkg_, "--reload-dir",
+         dir_->path(), "--max-batch-points", std::to_string(kMaxBatchPoints)},
+        &server_);
     ASSERT_TRUE(started.ok()) << started.ToString();
   }
   static void TearDownTestSuite() {
@@ -80,7 +85,7 @@ std::vector<Point2> LonLatQueries() {
 }
 
 v1::LocateRequest LonLatRequest(const Point2& q, bool vertices_in_lon_lat) {
-  v1::LocateRequest request = LocateRequestFor(q);
+  v1::LocateRequest request = LocateRequestFor(q, kTerrain);
   request.set_crs("EPSG:4326");
   request.set_vertices_in_request_crs(vertices_in_lon_lat);
   return request;
@@ -98,7 +103,7 @@ TEST_F(LocatordGisTest, AnswersAgreeWithCgalAndCarryTheHillsHeights) {
   for (size_t i = 0; i < queries.size(); ++i) {
     const Point2& q = queries[i];
     v1::LocateResponse response;
-    const grpc::Status status = LocateOne(*stub_, q, &response);
+    const grpc::Status status = LocateOne(*stub_, q, &response, kTerrain);
     ASSERT_TRUE(status.ok()) << status.error_message();
     const LocateResult got = FromLocateResponse(response);
     const LocateResult expected = reference_->Locate(q);
@@ -118,7 +123,7 @@ TEST_F(LocatordGisTest, AnswersAgreeWithCgalAndCarryTheHillsHeights) {
 }
 
 TEST_F(LocatordGisTest, GetStatsReportsTheCrs) {
-  const v1::GetStatsResponse stats = GetStats(*stub_);
+  const v1::GetStatsResponse stats = GetStats(*stub_, kTerrain);
   const v1::CrsStats& crs = stats.dataset().crs();
   EXPECT_EQ(crs.name(), "WGS 84 / UTM zone 33N");
   EXPECT_EQ(crs.epsg_code(), 32633u);
@@ -131,7 +136,8 @@ TEST_F(LocatordGisTest, GetStatsReportsTheCrs) {
 
 TEST_F(LocatordGisTest, ReloadTakesGisSpecsAndNamesTheirErrors) {
   v1::ReloadResponse response;
-  grpc::Status status = Reload(*stub_, *gpkg_ + "?layer=nope", &response);
+  grpc::Status status =
+      Reload(*stub_, *gpkg_ + "?layer=nope", &response, kTerrain);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::NOT_FOUND);
   EXPECT_THAT(status.error_message(),
               HasSubstr(*gpkg_ + ": no layer 'nope' (layers: 'hill')"));
@@ -143,12 +149,13 @@ TEST_F(LocatordGisTest, ReloadTakesGisSpecsAndNamesTheirErrors) {
   ASSERT_TRUE(status.ok()) << status.error_message();
   EXPECT_EQ(response.dataset().input_points(), 8u * kHillSide);
   EXPECT_EQ(response.dataset().crs().epsg_code(), 32632u);
-  EXPECT_EQ(GetStats(*stub_).dataset().crs().name(), "WGS 84 / UTM zone 32N");
+  EXPECT_EQ(GetStats(*stub_, kTerrain).dataset().crs().name(),
+            "WGS 84 / UTM zone 32N");
 
   // A generator has no CRS.
-  status = Reload(*stub_, "uniform:1000:3", &response);
+  status = Reload(*stub_, "uniform:1000:3", &response, kTerrain);
   ASSERT_TRUE(status.ok()) << status.error_message();
-  EXPECT_FALSE(GetStats(*stub_).dataset().has_crs());
+  EXPECT_FALSE(GetStats(*stub_, kTerrain).dataset().has_crs());
   v1::LocateResponse located;
   grpc::ClientContext context;
   const grpc::Status no_crs =
@@ -159,7 +166,7 @@ TEST_F(LocatordGisTest, ReloadTakesGisSpecsAndNamesTheirErrors) {
                         "has none"));
 
   // Back to the original for the other tests.
-  ASSERT_TRUE(Reload(*stub_, *gpkg_, &response).ok());
+  ASSERT_TRUE(Reload(*stub_, *gpkg_, &response, kTerrain).ok());
   EXPECT_EQ(response.dataset().crs().epsg_code(), 32633u);
 }
 
@@ -170,6 +177,7 @@ TEST_F(LocatordGisTest, LonLatRequestsMatchPointsProjectedByCs2cs) {
   ASSERT_EQ(utm.size(), lon_lat.size());
   v1::LocateBatchRequest batch = BatchRequestFor(lon_lat);
   batch.set_crs("EPSG:4326");
+  batch.set_dataset(kTerrain);
   v1::LocateBatchResponse batch_response;
   {
     grpc::ClientContext context;
@@ -180,7 +188,7 @@ TEST_F(LocatordGisTest, LonLatRequestsMatchPointsProjectedByCs2cs) {
   size_t inside = 0;
   for (size_t i = 0; i < lon_lat.size(); ++i) {
     v1::LocateResponse in_utm, in_lon_lat;
-    ASSERT_TRUE(LocateOne(*stub_, utm[i], &in_utm).ok());
+    ASSERT_TRUE(LocateOne(*stub_, utm[i], &in_utm, kTerrain).ok());
     grpc::ClientContext context;
     const grpc::Status status =
         stub_->Locate(&context, LonLatRequest(lon_lat[i], false), &in_lon_lat);
@@ -232,7 +240,8 @@ TEST_F(LocatordGisTest, StreamRequestsCarryTheirCrs) {
   const Point2 q{15.001, 49.651};
   ASSERT_TRUE(stream->Write(LonLatRequest(q, false)));
   v1::LocateRequest plain = LocateRequestFor(
-      gis::testing::Cs2cs({q}, "EPSG:4326", "EPSG:32633", dir_->path()).at(0));
+      gis::testing::Cs2cs({q}, "EPSG:4326", "EPSG:32633", dir_->path()).at(0),
+      kTerrain);
   ASSERT_TRUE(stream->Write(plain));
   ASSERT_TRUE(stream->WritesDone());
   v1::LocateResponse first, second;
@@ -264,6 +273,7 @@ TEST_F(LocatordGisTest, BadRequestCrssAreInvalidArgument) {
   v1::LocateBatchRequest batch = BatchRequestFor(
       std::vector<Point2>{{15, 49.65}, {15.01, 49.66}, {-70, 0}});
   batch.set_crs("EPSG:4326");
+  batch.set_dataset(kTerrain);
   v1::LocateBatchResponse batch_response;
   grpc::ClientContext context;
   const grpc::Status status =
@@ -278,11 +288,46 @@ TEST_F(LocatordGisTest, OversizedBatchIsRefusedBeforeItsCrsIsRead) {
   v1::LocateBatchRequest batch = BatchRequestFor(
       std::vector<Point2>(kMaxBatchPoints + 1, Point2{15, 49.65}));
   batch.set_crs("EPSG:999999");
+  batch.set_dataset(kTerrain);
   v1::LocateBatchResponse response;
   grpc::ClientContext context;
   const grpc::Status status = stub_->LocateBatch(&context, batch, &response);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::RESOURCE_EXHAUSTED)
       << status.error_message();
+}
+
+// The hill is served beside a second dataset: both are listed, the default
+// is the other one (no CRS, so a lon/lat request to it is refused), and
+// reloading the hill leaves it untouched.
+TEST_F(LocatordGisTest, IsServedBesideASecondDataset) {
+  v1::ListDatasetsResponse list;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(
+        stub_->ListDatasets(&context, v1::ListDatasetsRequest(), &list).ok());
+  }
+  ASSERT_EQ(list.datasets_size(), 2);
+  EXPECT_EQ(list.datasets(0).name(), "bedrock");
+  EXPECT_TRUE(list.datasets(0).is_default());
+  EXPECT_EQ(list.datasets(0).stats().source(), kBedrockSpec);
+  EXPECT_FALSE(list.datasets(0).stats().has_crs());
+  EXPECT_EQ(list.datasets(1).name(), kTerrain);
+  EXPECT_FALSE(list.datasets(1).is_default());
+  EXPECT_EQ(list.datasets(1).stats().crs().epsg_code(), 32633u);
+
+  v1::LocateRequest to_bedrock = LonLatRequest({15, 49.65}, false);
+  to_bedrock.clear_dataset();
+  v1::LocateResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = stub_->Locate(&context, to_bedrock, &response);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(status.error_message(), HasSubstr("the dataset has none"));
+
+  const uint64_t bedrock_generation = GetStats(*stub_).generation();
+  v1::ReloadResponse reloaded;
+  ASSERT_TRUE(Reload(*stub_, "", &reloaded, kTerrain).ok());
+  EXPECT_EQ(GetStats(*stub_).generation(), bedrock_generation);
+  EXPECT_EQ(GetStats(*stub_).dataset().input_points(), 3000u);
 }
 
 }  // namespace
