@@ -145,7 +145,7 @@ TEST_F(LocatordGisTest, ReloadTakesGisSpecsAndNamesTheirErrors) {
   // The northern half of the hill, assigned UTM zone 32N.
   status = Reload(*stub_,
                   *gpkg_ + "?where=id%20%25%2015%20%3E%3D%207&a_srs=EPSG:32632",
-                  &response);
+                  &response, kTerrain);
   ASSERT_TRUE(status.ok()) << status.error_message();
   EXPECT_EQ(response.dataset().input_points(), 8u * kHillSide);
   EXPECT_EQ(response.dataset().crs().epsg_code(), 32632u);
