@@ -12,6 +12,7 @@
 #include "client/cli_commands.h"
 #include "client/cli_flags.h"
 #include "client/locator_client.h"
+#include "common/grpc_lifetime.h"
 
 namespace locator {
 namespace {
@@ -38,4 +39,8 @@ int Main(int argc, char** argv) {
 }  // namespace
 }  // namespace locator
 
-int main(int argc, char** argv) { return locator::Main(argc, argv); }
+int main(int argc, char** argv) {
+  // Outlives every gRPC object Main() makes (see grpc_lifetime.h).
+  const locator::GrpcLifetime grpc;
+  return locator::Main(argc, argv);
+}

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/grpc_lifetime.h"
 #include "server/core/engine.h"
 #include "server/dataset_builder.h"
 #include "server/dataset_registry.h"
@@ -244,4 +245,8 @@ int Main(int argc, char** argv) {
 }  // namespace
 }  // namespace locator
 
-int main(int argc, char** argv) { return locator::Main(argc, argv); }
+int main(int argc, char** argv) {
+  // Outlives every gRPC object Main() makes (see grpc_lifetime.h).
+  const locator::GrpcLifetime grpc;
+  return locator::Main(argc, argv);
+}

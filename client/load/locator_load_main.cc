@@ -25,6 +25,7 @@
 #include "client/load/run_budget.h"
 #include "client/load/run_recorder.h"
 #include "client/load/stream_runner.h"
+#include "common/grpc_lifetime.h"
 
 namespace locator {
 namespace {
@@ -162,4 +163,8 @@ int Main(int argc, char** argv) {
 }  // namespace
 }  // namespace locator
 
-int main(int argc, char** argv) { return locator::Main(argc, argv); }
+int main(int argc, char** argv) {
+  // Outlives every gRPC object Main() makes (see grpc_lifetime.h).
+  const locator::GrpcLifetime grpc;
+  return locator::Main(argc, argv);
+}
