@@ -1,0 +1,24 @@
+// Barycentric coordinates of a point in a triangle, robust over the whole
+// double range: long double arithmetic, and exact rationals where long
+// double cannot resolve the triangle's area.
+//
+// Thread-safety: a pure function.
+
+#ifndef LOCATOR_CORE_BARYCENTRIC_H_
+#define LOCATOR_CORE_BARYCENTRIC_H_
+
+#include <array>
+
+#include "common/geometry.h"
+
+namespace locator {
+
+// Barycentric coordinates of q in the non-degenerate triangle (a, b, c):
+// q = result[0] a + result[1] b + result[2] c, and they sum to 1 (up to
+// rounding). q may lie outside the triangle (then some are negative).
+std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
+                                  const Point2& c, const Point2& q);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_BARYCENTRIC_H_
