@@ -1,14 +1,17 @@
 #include "server/locator_service.h"
 
+#include <algorithm>
 #include <map>
 #include <type_traits>
 #include <utility>
 
+#include "server/grid_stream.h"
 #include "server/locate_stream_reactor.h"
 #include "server/proto_convert.h"
 #include "server/request_crs.h"
 #include "server/stats_redaction.h"
 #include "server/status_mapping.h"
+#include "server/surface_convert.h"
 
 namespace locator {
 namespace {
@@ -42,6 +45,20 @@ StreamReactor* Refuse(grpc::CallbackServerContext* /*context*/,
   return new RejectedStreamReactor(status);
 }
 
+// Ends a Grid stream at once, before writing anything.
+class RejectedGridReactor final
+    : public grpc::ServerWriteReactor<v1::GridResponse> {
+ public:
+  explicit RejectedGridReactor(const grpc::Status& status) { Finish(status); }
+  void OnDone() override { delete this; }
+};
+
+grpc::ServerWriteReactor<v1::GridResponse>* Refuse(
+    grpc::CallbackServerContext* /*context*/, const grpc::Status& status,
+    std::type_identity<grpc::ServerWriteReactor<v1::GridResponse>>) {
+  return new RejectedGridReactor(status);
+}
+
 // Every handler's prologue: serves the call with `serve(admission)` if
 // service->Admit() lets it in for `dataset` (nullopt: no single dataset),
 // or ends it with the refusal.
@@ -63,10 +80,13 @@ Reactor* AdmitThen(LocatorService* service,
 
 LocatorService::LocatorService(const LocatorServiceOptions& options)
     : default_deadline_(options.default_deadline),
+      max_profile_crossings_(options.max_profile_crossings),
+      max_grid_cells_(options.max_grid_cells),
       redact_(options.access.redact),
       access_(options.access.data_token, options.access.admin_token),
       batch_locator_(options.batch_threads, options.max_batch_points,
                      options.default_deadline),
+      surface_pool_(std::max<size_t>(1, options.batch_threads)),
       registry_(options.datasets, options.reload_dir, options.build_engine) {}
 
 Status LocatorService::Resolve(std::string_view name,
@@ -158,6 +178,12 @@ void LocatorService::RunLocateBatch(Admission call,
   // Points in another CRS are validated first (an oversized batch must not
   // pay for a transform), then transformed once, into a copy that the
   // function holds.
+  Interpolation how;
+  if (Status status = FromInterpolation(request.interpolation(), &how);
+      !status.ok()) {
+    control.finish(ToGrpcStatus(status));
+    return;
+  }
   std::shared_ptr<v1::LocateBatchRequest> in_dataset_crs;
   if (!request.crs().empty()) {
     in_dataset_crs = std::make_shared<v1::LocateBatchRequest>();
@@ -173,10 +199,10 @@ void LocatorService::RunLocateBatch(Admission call,
   // The function (and with it the admission) lives until the batch ends.
   batch_locator_.Run(
       in_dataset_crs ? *in_dataset_crs : request,
-      [call = std::move(call), in_dataset_crs](
+      [call = std::move(call), in_dataset_crs, how](
           std::span<const Point2> points, std::vector<LocateResult>* results,
           const std::function<bool()>& keep_going) {
-        return call.engine->LocateBatch(points, results, keep_going);
+        return call.engine->LocateBatch(points, results, keep_going, how);
       },
       std::move(control), response);
 }
@@ -309,6 +335,41 @@ grpc::ServerUnaryReactor* LocatorService::ListDatasets(
       [&](Admission /*call*/) {
         RunListDatasets(response);
         return FinishNow(context, grpc::Status::OK);
+      });
+}
+
+grpc::ServerUnaryReactor* LocatorService::Profile(
+    grpc::CallbackServerContext* context, const v1::ProfileRequest* request,
+    v1::ProfileResponse* response) {
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      this, context, AccessPolicy::Scope::kData, request->dataset(),
+      [&](Admission call) {
+        grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+        surface_pool_.Submit([this, reactor, request, response,
+                              call = std::move(call)] {
+          reactor->Finish(RunProfile(call, *request, response));
+        });
+        return reactor;
+      });
+}
+
+grpc::ServerWriteReactor<v1::GridResponse>* LocatorService::Grid(
+    grpc::CallbackServerContext* context, const v1::GridRequest* request) {
+  using GridReactor = grpc::ServerWriteReactor<v1::GridResponse>;
+  return AdmitThen<GridReactor>(
+      this, context, AccessPolicy::Scope::kData, request->dataset(),
+      [&](Admission call) -> GridReactor* {
+        RasterSpec spec;
+        if (grpc::Status refused = GridSpec(call, *request, &spec);
+            !refused.ok()) {
+          return new RejectedGridReactor(refused);
+        }
+        std::shared_ptr<const Engine> engine = call.engine;
+        const std::string crs = engine->dataset_info().crs;
+        return new GridStream(context, CallDeadline::For(*context,
+                                                         default_deadline_),
+                              std::move(engine), spec, crs, &surface_pool_,
+                              std::make_shared<Admission>(std::move(call)));
       });
 }
 

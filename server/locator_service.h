@@ -47,10 +47,12 @@
 #include "server/access_policy.h"
 #include "server/batch_locator.h"
 #include "server/core/engine.h"
+#include "server/core/raster.h"
 #include "server/dataset_flag.h"
 #include "server/dataset_registry.h"
 #include "server/drain_gate.h"
 #include "server/security_config.h"
+#include "server/worker_pool.h"
 
 namespace locator {
 
@@ -59,6 +61,11 @@ struct LocatorServiceOptions {
   size_t batch_threads = 1;
   // LocateBatch requests with more points fail with RESOURCE_EXHAUSTED.
   size_t max_batch_points = 1'000'000;
+  // A Profile whose line crosses more triangle edges (in holes too) fails
+  // with RESOURCE_EXHAUSTED.
+  uint64_t max_profile_crossings = 1'000'000;
+  // A Grid of more cells fails with RESOURCE_EXHAUSTED.
+  uint64_t max_grid_cells = uint64_t{1} << 24;
   // The deadline of a LocateBatch or LocateStream whose client set none
   // (zero: none).
   std::chrono::milliseconds default_deadline{0};
@@ -136,6 +143,18 @@ class LocatorService final : public v1::Locator::CallbackService {
                       v1::LocateBatchResponse* response);
   // The work of ListDatasets.
   void RunListDatasets(v1::ListDatasetsResponse* response) const;
+  // The work of Profile on an admitted call.
+  grpc::Status RunProfile(const Admission& call,
+                          const v1::ProfileRequest& request,
+                          v1::ProfileResponse* response) const;
+  // The raster a Grid `request` on an admitted call asks for, checked
+  // against the cell limit and the dataset's interpolation.
+  grpc::Status GridSpec(const Admission& call, const v1::GridRequest& request,
+                        RasterSpec* spec) const;
+  // The whole of a Grid on an admitted call as one message (header and every
+  // row), rendered on the calling thread: the HTTP/JSON form.
+  grpc::Status RunGrid(const Admission& call, const v1::GridRequest& request,
+                       v1::GridResponse* response) const;
   // The deadline a call without one is held to (see BatchLocator).
   CallDeadline DefaultDeadline() const {
     return batch_locator_.DefaultDeadline();
@@ -170,6 +189,15 @@ class LocatorService final : public v1::Locator::CallbackService {
       grpc::CallbackServerContext* context,
       const v1::ListDatasetsRequest* request,
       v1::ListDatasetsResponse* response) override;
+  // Traces the profile on the surface pool, off the callback thread.
+  grpc::ServerUnaryReactor* Profile(grpc::CallbackServerContext* context,
+                                    const v1::ProfileRequest* request,
+                                    v1::ProfileResponse* response) override;
+  // Streams the raster, rendered in blocks on the surface pool (see
+  // GridStream).
+  grpc::ServerWriteReactor<v1::GridResponse>* Grid(
+      grpc::CallbackServerContext* context,
+      const v1::GridRequest* request) override;
 
  private:
   // Sets admission's dataset, engine and generation for `name` ("": the
@@ -183,10 +211,14 @@ class LocatorService final : public v1::Locator::CallbackService {
                  uint64_t generation, v1::GetStatsResponse* response) const;
 
   const std::chrono::milliseconds default_deadline_;
+  const uint64_t max_profile_crossings_;
+  const uint64_t max_grid_cells_;
   const bool redact_;
   const AccessPolicy access_;
   DrainGate drain_gate_;
   BatchLocator batch_locator_;
+  // Profiles and grid blocks run here: max(1, batch_threads) threads.
+  WorkerPool surface_pool_;
   DatasetRegistry registry_;  // last: its reload threads use the rest
 };
 

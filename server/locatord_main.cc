@@ -182,6 +182,8 @@ int Main(int argc, char** argv) {
   LocatorService service(LocatorServiceOptions{
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points,
+      .max_profile_crossings = config.serving.max_profile_crossings,
+      .max_grid_cells = config.serving.max_grid_cells,
       .default_deadline = config.serving.transport.default_deadline,
       .access = config.access,
       .datasets = config.datasets,

@@ -6,6 +6,7 @@
 
 #include "common/gis/crs_transformer.h"
 #include "server/proto_convert.h"
+#include "server/surface_convert.h"
 
 namespace locator {
 namespace {
@@ -32,7 +33,12 @@ Status LocateInRequestCrs(const Engine& engine,
   if (Status status = FromLocateRequest(request, &point); !status.ok()) {
     return status;
   }
-  if (request.crs().empty()) return engine.Locate(point, result);
+  Interpolation how;
+  if (Status status = FromInterpolation(request.interpolation(), &how);
+      !status.ok()) {
+    return status;
+  }
+  if (request.crs().empty()) return engine.Locate(point, result, how);
   gis::CrsTransformer* transformer = nullptr;
   if (Status status = TransformerFor(engine, request.crs(), &transformer);
       !status.ok()) {
@@ -42,11 +48,22 @@ Status LocateInRequestCrs(const Engine& engine,
       !status.ok()) {
     return status;
   }
-  if (Status status = engine.Locate(point, result); !status.ok()) {
+  if (Status status = engine.Locate(point, result, how); !status.ok()) {
     return status;
   }
   if (!request.vertices_in_request_crs()) return Status::OK();
   return transformer->ToRequest(result->vertices);
+}
+
+Status LineInDatasetCrs(const Engine& engine, const std::string& crs,
+                        std::vector<Point2>* line) {
+  if (crs.empty()) return Status::OK();
+  gis::CrsTransformer* transformer = nullptr;
+  if (Status status = TransformerFor(engine, crs, &transformer);
+      !status.ok()) {
+    return status;
+  }
+  return transformer->ToDataset(*line);
 }
 
 Status BatchInDatasetCrs(const Engine& engine,

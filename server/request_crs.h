@@ -13,6 +13,10 @@
 #ifndef LOCATOR_SERVER_REQUEST_CRS_H_
 #define LOCATOR_SERVER_REQUEST_CRS_H_
 
+#include <string>
+#include <vector>
+
+#include "common/geometry.h"
 #include "common/status.h"
 #include "locator/v1/locator.pb.h"
 #include "server/core/engine.h"
@@ -20,12 +24,18 @@
 
 namespace locator {
 
-// Locates request.point on `engine`, transformed from request.crs when it
+// Locates request.point on `engine` (values interpolated as the request
+// says), transformed from request.crs when it
 // is set; with vertices_in_request_crs the result's vertices are returned
 // in request.crs.
 Status LocateInRequestCrs(const Engine& engine,
                           const v1::LocateRequest& request,
                           LocateResult* result);
+
+// Transforms `line` from `crs` to the engine's dataset CRS; nothing when
+// `crs` is empty.
+Status LineInDatasetCrs(const Engine& engine, const std::string& crs,
+                        std::vector<Point2>* line);
 
 // *out = `request` with xs and ys transformed from request.crs (which must
 // be set) to the engine's dataset CRS. Columns of unequal length are copied

@@ -24,6 +24,8 @@ struct ServingFlags {
   std::string max_message_bytes;
   std::string threads;
   std::string max_batch_points;
+  std::string max_profile_crossings;
+  std::string max_grid_cells;
   TransportFlags transport;
 };
 
@@ -63,7 +65,17 @@ void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
       "max-batch-points",
       po::value(&flags->max_batch_points)
           ->default_value(std::to_string(defaults.max_batch_points)),
-      "larger LocateBatch requests fail with RESOURCE_EXHAUSTED");
+      "larger LocateBatch requests fail with RESOURCE_EXHAUSTED")(
+      "max-profile-crossings",
+      po::value(&flags->max_profile_crossings)
+          ->default_value(std::to_string(defaults.max_profile_crossings)),
+      "a Profile whose line crosses more triangle edges (holes included) "
+      "fails with RESOURCE_EXHAUSTED")(
+      "max-grid-cells",
+      po::value(&flags->max_grid_cells)
+          ->default_value(std::to_string(defaults.max_grid_cells)),
+      "a Grid of more cells (width x height) fails with "
+      "RESOURCE_EXHAUSTED");
   AddTransportFlags(defaults.transport, &flags->transport, description);
 }
 
@@ -89,6 +101,19 @@ Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
   if (Status status = ParseCountAs("max-batch-points", flags.max_batch_points,
                                    1, std::numeric_limits<int>::max(),
                                    &config->max_batch_points);
+      !status.ok()) {
+    return status;
+  }
+  if (Status status =
+          ParseCountAs("max-profile-crossings", flags.max_profile_crossings,
+                       1, uint64_t{1} << 40, &config->max_profile_crossings);
+      !status.ok()) {
+    return status;
+  }
+  // An HTTP :grid answers every cell in one protobuf repeated field.
+  if (Status status = ParseCountAs("max-grid-cells", flags.max_grid_cells, 1,
+                                   std::numeric_limits<int>::max(),
+                                   &config->max_grid_cells);
       !status.ok()) {
     return status;
   }

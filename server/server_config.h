@@ -35,6 +35,11 @@ struct ServingConfig {
   size_t threads = std::max(1u, std::thread::hardware_concurrency());
   // --max-batch-points: larger LocateBatch requests get RESOURCE_EXHAUSTED.
   size_t max_batch_points = 1'000'000;
+  // --max-profile-crossings: a Profile whose line crosses more triangle
+  // edges gets RESOURCE_EXHAUSTED.
+  uint64_t max_profile_crossings = 1'000'000;
+  // --max-grid-cells: a Grid of more cells gets RESOURCE_EXHAUSTED.
+  uint64_t max_grid_cells = uint64_t{1} << 24;
   // TLS, connection limits, keepalive and the default deadline.
   TransportConfig transport;
 

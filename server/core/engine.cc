@@ -79,10 +79,13 @@ void Engine::Record(uint64_t queries, uint64_t cost) const {
   }
 }
 
-Status Engine::Locate(const Point2& q, LocateResult* result) const {
+Status Engine::Locate(const Point2& q, LocateResult* result,
+                      Interpolation how) const {
   Status s = CheckFinite(q, "query point");
+  if (s.ok()) s = CheckInterpolation(how);
   if (!s.ok()) return s;
   locator_->Locate(q, result);
+  Reinterpolate(std::span(&q, 1), how, result);
   Record(1, result->cost.total());
   walk_costs_.Add(result->cost.faces_visited);
   return Status::OK();
@@ -90,16 +93,20 @@ Status Engine::Locate(const Point2& q, LocateResult* result) const {
 
 Status Engine::LocateBatch(std::span<const Point2> queries,
                            std::vector<LocateResult>* results,
-                           const std::function<bool()>& keep_going) const {
+                           const std::function<bool()>& keep_going,
+                           Interpolation how) const {
   for (size_t i = 0; i < queries.size(); ++i) {
     if (Status s = CheckBatchPoint(queries[i], i); !s.ok()) return s;
   }
+  if (Status s = CheckInterpolation(how); !s.ok()) return s;
   results->resize(queries.size());
   for (size_t begin = 0; begin < queries.size(); begin += kBatchChunk) {
     if (keep_going && !keep_going()) return Status::Unavailable("cancelled");
     const size_t end = std::min(queries.size(), begin + kBatchChunk);
     locator_->LocateMany(queries.subspan(begin, end - begin),
                          results->data() + begin);
+    Reinterpolate(queries.subspan(begin, end - begin), how,
+                  results->data() + begin);
     uint64_t cost = 0;
     for (size_t i = begin; i < end; ++i) cost += (*results)[i].cost.total();
     Record(end - begin, cost);

@@ -22,8 +22,11 @@
 #include "common/status.h"
 #include "server/core/dataset.h"
 #include "server/core/domain_outline.h"
+#include "server/core/interpolation.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
+#include "server/core/profile.h"
+#include "server/core/raster.h"
 #include "server/core/tuning_options.h"
 #include "server/core/walk_cost_histogram.h"
 
@@ -92,17 +95,41 @@ class Engine {
   Engine(const Engine&) = delete;
   Engine& operator=(const Engine&) = delete;
 
-  // Locates one point. InvalidArgument if a coordinate is NaN or infinite.
-  Status Locate(const Point2& q, LocateResult* result) const;
+  // Locates one point, its value interpolated `how`. InvalidArgument if a
+  // coordinate is NaN or infinite, or as CheckInterpolation(how).
+  Status Locate(const Point2& q, LocateResult* result,
+                Interpolation how = Interpolation::kLinear) const;
 
   // Locates every point of `queries` into `results` (resized), in input
   // order. Validates all points first: the first non-finite one fails the
   // whole call with InvalidArgument naming its index, and nothing is located.
   // `keep_going`, if set, is polled between chunks; returning false stops the
   // batch with Unavailable("cancelled").
+  // Values are interpolated `how` (InvalidArgument as CheckInterpolation).
   Status LocateBatch(std::span<const Point2> queries,
                      std::vector<LocateResult>* results,
-                     const std::function<bool()>& keep_going = nullptr) const;
+                     const std::function<bool()>& keep_going = nullptr,
+                     Interpolation how = Interpolation::kLinear) const;
+
+  // OK if this dataset's values can be interpolated `how`; InvalidArgument
+  // saying why not (natural neighbour needs a dataset without constraints).
+  Status CheckInterpolation(Interpolation how) const;
+
+  // The surface along `line` (see profile.h): its exact breakpoints,
+  // options.samples evenly spaced samples and the gaps outside the hull or
+  // the domain. The walk to line[0] starts where the strategy would start a
+  // locate of it. InvalidArgument for fewer than 2 points, a non-finite one
+  // or an interpolation the dataset refuses; ResourceExhausted when the
+  // line would enter more than options.max_faces triangles.
+  Status TraceProfile(std::span<const Point2> line,
+                      const ProfileOptions& options, Profile* out) const;
+
+  // Renders rows [first_row, first_row + rows) of `spec` (see raster.h)
+  // into `out`, row by row. InvalidArgument if CheckRasterSpec(spec) or
+  // CheckInterpolation fails or the rows are not within spec.height.
+  // Threads may render disjoint rows at once.
+  Status RenderRows(const RasterSpec& spec, uint32_t first_row, uint32_t rows,
+                    double* out) const;
 
   // Re-tunes the strategy now (no-op for fixed strategies).
   void Retune();
@@ -129,6 +156,10 @@ class Engine {
   Engine();
   // Counts `queries` answered at total `cost` in the serving statistics.
   void Record(uint64_t queries, uint64_t cost) const;
+  // Replaces the linear values of `results` (located with the strategy)
+  // with values interpolated `how`.
+  void Reinterpolate(std::span<const Point2> queries, Interpolation how,
+                     LocateResult* results) const;
 
   DatasetInfo info_;
   DomainOutline outline_;

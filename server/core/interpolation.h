@@ -6,19 +6,14 @@
 // interpolation over the Delaunay triangulation: smooth, exact for linear
 // functions, equal to the vertex value at a vertex; it needs a Delaunay
 // triangulation, so a dataset with constraints (breaklines, a domain, a
-// mesh) refuses it. Nearest is the value of the triangle's nearest corner.
-//
-// Thread-safety: pure functions over an immutable Triangulation.
+// mesh) refuses it. Nearest is the value of the triangle's nearest corner
+// (ties to the smaller vertex id). See surface_value.h for the evaluation.
 
 #ifndef LOCATOR_CORE_INTERPOLATION_H_
 #define LOCATOR_CORE_INTERPOLATION_H_
 
 #include <cstdint>
 #include <string_view>
-
-#include "common/geometry.h"
-#include "common/status.h"
-#include "server/core/triangulation.h"
 
 namespace locator {
 
@@ -30,17 +25,6 @@ enum class Interpolation : uint8_t {
 
 // "linear", "natural-neighbor" or "nearest".
 std::string_view InterpolationName(Interpolation how);
-
-// OK if values can be interpolated `how` on t; InvalidArgument saying why
-// not otherwise (natural neighbour on a triangulation with constraints).
-[[nodiscard]] Status CheckInterpolation(const Triangulation& t,
-                                        Interpolation how);
-
-// The value at q, which lies in the closed triangle of the finite in-domain
-// face f, interpolated `how`. Preconditions: t.has_values() and
-// CheckInterpolation(t, how).ok().
-double ValueAt(const Triangulation& t, Triangulation::Face_handle f,
-               const Point2& q, Interpolation how);
 
 }  // namespace locator
 

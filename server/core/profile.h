@@ -14,20 +14,17 @@
 // side: edges between two out-of-domain faces (inside a hole) and the
 // infinite faces outside the hull are walked through silently, as gaps.
 //
-// Thread-safety: pure functions over an immutable Triangulation.
+// The plain types of a profile; profile_trace.h traces one.
 
 #ifndef LOCATOR_CORE_PROFILE_H_
 #define LOCATOR_CORE_PROFILE_H_
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "common/geometry.h"
-#include "common/status.h"
 #include "server/core/interpolation.h"
 #include "server/core/locate_result.h"
-#include "server/core/triangulation.h"
 
 namespace locator {
 
@@ -84,18 +81,6 @@ struct ProfileOptions {
   uint64_t max_faces = 1'000'000;
   Interpolation interpolation = Interpolation::kLinear;
 };
-
-// Traces `line` (at least 2 finite points; consecutive repeats allowed, as
-// zero-length segments) over t into `out`. `start` is any finite face near
-// line[0] (the walk to line[0] starts there). Values are set when
-// t.has_values(): breakpoints and samples take ValueAt() with
-// options.interpolation (the caller has checked CheckInterpolation).
-// ResourceExhausted when the walk would enter more than options.max_faces
-// faces; InvalidArgument for fewer than 2 points or a non-finite one.
-[[nodiscard]] Status TraceProfile(const Triangulation& t,
-                                  Triangulation::Face_handle start,
-                                  std::span<const Point2> line,
-                                  const ProfileOptions& options, Profile* out);
 
 }  // namespace locator
 

@@ -149,6 +149,11 @@ class Triangulation {
   void Describe(Face_handle f, LocationType type, int feature, const Point2& q,
                 LocateResult* out) const;
 
+  // For a point on edge/vertex `feature` (kEdge/kVertex) of the
+  // out-of-domain finite face f, an in-domain face sharing that edge or
+  // vertex (updating f and feature); false if none (or for kFace).
+  bool MoveIntoDomain(Face_handle* f, LocationType type, int* feature) const;
+
   static CgalPoint ToCgal(const Point2& p) { return CgalPoint(p.x, p.y); }
   static Point2 FromCgal(const CgalPoint& p) { return Point2{p.x(), p.y()}; }
 
@@ -174,9 +179,6 @@ class Triangulation {
   // out->type, domain_edge_ids and clears the rest.
   void DescribeOutsideDomain(Face_handle f, const Point2& q,
                              LocateResult* out) const;
-  // For q on edge/vertex `feature` of an out-of-domain face f, an in-domain
-  // face sharing that edge or vertex (updating f and feature); false if none.
-  bool MoveIntoDomain(Face_handle* f, LocationType type, int* feature) const;
 
   Cdt dt_;
   // by_input_[id] is the vertex with that id: input point i became

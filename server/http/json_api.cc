@@ -28,8 +28,8 @@ HttpResponse NoRoute(const HttpRequest& request) {
   return ApiError(
       grpc::Status(grpc::StatusCode::NOT_FOUND,
                    "no API method " + request.method + " " + request.path +
-                       " (GET /v1/datasets, POST /v1/datasets/{name}:locate or "
-                       ":locateBatch)"));
+                       " (GET /v1/datasets, POST /v1/datasets/{name}:locate, "
+                       ":locateBatch, :profile or :grid)"));
 }
 
 HttpResponse MethodNotAllowed(const HttpRequest& request,
@@ -74,12 +74,18 @@ grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
 
 }  // namespace
 
-// One line per API method; :profile and :grid go here once they exist.
+// One line per API method.
 const JsonApi::DatasetRoute JsonApi::kDatasetRoutes[] = {
     {"locate", AccessPolicy::Scope::kData,
      &JsonApi::ServeUnary<v1::LocateRequest, v1::LocateResponse,
                           &LocatorService::RunLocate>},
     {"locateBatch", AccessPolicy::Scope::kData, &JsonApi::ServeLocateBatch},
+    {"profile", AccessPolicy::Scope::kData,
+     &JsonApi::ServeUnary<v1::ProfileRequest, v1::ProfileResponse,
+                          &LocatorService::RunProfile>},
+    {"grid", AccessPolicy::Scope::kData,
+     &JsonApi::ServeUnary<v1::GridRequest, v1::GridResponse,
+                          &LocatorService::RunGrid>},
 };
 
 JsonApi::JsonApi(LocatorService* service)

@@ -6,6 +6,10 @@
 //   POST /v1/datasets/{name}:locate        LocateRequest -> LocateResponse
 //   POST /v1/datasets/{name}:locateBatch   LocateBatchRequest
 //                                          -> LocateBatchResponse
+//   POST /v1/datasets/{name}:profile       ProfileRequest -> ProfileResponse
+//   POST /v1/datasets/{name}:grid          GridRequest -> one GridResponse
+//                                          holding the header and every row
+//                                          (the gRPC call streams them)
 //
 // Bodies are the proto messages in protobuf's JSON mapping (JsonFormat):
 // requests are parsed with JsonStringToMessage (field names as in the proto

@@ -9,9 +9,7 @@
 // dataset; the status API takes ?dataset=.
 
 #include <gmock/gmock.h>
-#include <google/protobuf/util/field_comparator.h>
 #include <google/protobuf/util/json_util.h>
-#include <google/protobuf/util/message_differencer.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
@@ -26,6 +24,7 @@
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 #include "tests/server/http/http_test_client.h"
+#include "tests/server/http/json_api_support.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/prometheus_text.h"
 #include "tests/server/http/status_e2e_support.h"
@@ -40,59 +39,6 @@ constexpr char kAllowedOrigin[] = "http://maps.example.org";
 constexpr int kMaxBatchPoints = 5000;
 constexpr size_t kMaxBodyBytes = 256 * 1024;
 constexpr char kDataToken[] = "data-token-1234";
-
-// `message` as its JSON mapping, as a client would write it.
-std::string ToJson(const google::protobuf::Message& message) {
-  std::string json;
-  EXPECT_TRUE(google::protobuf::util::MessageToJsonString(message, &json).ok());
-  return json;
-}
-
-// Parses a JSON answer into `message`; a failure is a test failure.
-template <typename Message>
-Message FromJson(const std::string& json) {
-  Message message;
-  const auto status =
-      google::protobuf::util::JsonStringToMessage(json, &message);
-  EXPECT_TRUE(status.ok()) << status.ToString() << "\n" << json;
-  return message;
-}
-
-// Whether `a` and `b` are equal field by field (NaN equal to NaN: batch
-// values outside the hull).
-::testing::AssertionResult SameProto(const google::protobuf::Message& a,
-                                     const google::protobuf::Message& b) {
-  google::protobuf::util::DefaultFieldComparator comparator;
-  comparator.set_treat_nan_as_equal(true);
-  google::protobuf::util::MessageDifferencer differencer;
-  differencer.set_field_comparator(&comparator);
-  std::string differences;
-  differencer.ReportDifferencesToString(&differences);
-  if (differencer.Compare(a, b)) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << differences;
-}
-
-// POSTs `body` to `target`.
-HttpReply Post(int port, const std::string& target, const std::string& body,
-               const HttpHeaders& headers = {}) {
-  HttpReply reply;
-  const Status sent = SendHttp(port, "POST", target, &reply, body, headers);
-  EXPECT_TRUE(sent.ok()) << sent.ToString();
-  return reply;
-}
-
-// Checks that `reply` is the API error `code` with HTTP status `http` and
-// a message containing `message`.
-void ExpectError(const HttpReply& reply, unsigned http, Code code,
-                 const std::string& message) {
-  EXPECT_EQ(reply.status, http) << reply.body;
-  EXPECT_EQ(reply.headers.at("content-type"), "application/json");
-  JsonValue error;
-  ASSERT_TRUE(ParseJson(reply.body, &error).ok()) << reply.body;
-  EXPECT_EQ(error["code"].number(), static_cast<int>(code)) << reply.body;
-  EXPECT_EQ(error["status"].string().empty(), false);
-  EXPECT_THAT(error["message"].string(), HasSubstr(message)) << reply.body;
-}
 
 class JsonApiTest : public ::testing::Test {
  protected:

@@ -1,0 +1,136 @@
+#include "server/bench/profile_benchmark.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "server/bench/surface_terrain.h"
+#include "server/core/engine.h"
+
+namespace locator::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+Status BuildTerrain(const SurfaceBenchOptions& options,
+                    std::unique_ptr<Engine>* engine) {
+  EngineOptions engine_options;
+  engine_options.strategy = "jump-and-walk";
+  return Engine::Create(TerrainDataset(options.points, 42), engine_options,
+                        engine);
+}
+
+// A random polyline inside the terrain's box whose segments add up to
+// `length`, each at most 8 km.
+std::vector<Point2> RandomLine(double length, std::mt19937_64& random) {
+  const BoundingBox box = TerrainBox();
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI);
+  std::vector<Point2> line = {
+      {box.min_x + u(random) * box.width(),
+       box.min_y + u(random) * box.height()}};
+  for (double left = length; left > 0;) {
+    const double step = std::min(left, 8000.0);
+    for (;;) {
+      const double a = angle(random);
+      const Point2 next{line.back().x + step * std::cos(a),
+                        line.back().y + step * std::sin(a)};
+      if (box.Inflated(-0.01).Contains(next)) {
+        line.push_back(next);
+        break;
+      }
+    }
+    left -= step;
+  }
+  return line;
+}
+
+}  // namespace
+
+Status RunProfileBenchmark(const SurfaceBenchOptions& options,
+                           std::ostream& out) {
+  std::unique_ptr<Engine> engine;
+  if (Status s = BuildTerrain(options, &engine); !s.ok()) return s;
+  // Mean triangle edges crossed per metre of line, for uniform points.
+  const double per_metre =
+      1.4 * std::sqrt(static_cast<double>(options.points)) / 10000;
+  out << "profile benchmark: " << options.points
+      << " points, single thread\n"
+      << "target crossings | lines | mean crossings | breakpoints/s | "
+         "us per line\n";
+  std::mt19937_64 random(7);
+  ProfileOptions profile_options;
+  profile_options.max_faces = 100'000'000;
+  for (const double target : {1e1, 1e2, 1e3, 1e4, 1e5}) {
+    const int lines = static_cast<int>(std::clamp(2e6 / target, 20.0, 2e4));
+    std::vector<std::vector<Point2>> polylines;
+    for (int i = 0; i < lines; ++i) {
+      polylines.push_back(RandomLine(target / per_metre, random));
+    }
+    uint64_t breakpoints = 0, crossings = 0;
+    Profile profile;
+    const auto start = Clock::now();
+    for (const std::vector<Point2>& line : polylines) {
+      if (Status s = engine->TraceProfile(line, profile_options, &profile);
+          !s.ok()) {
+        return s;
+      }
+      breakpoints += profile.breakpoints.size();
+      crossings += profile.crossings;
+    }
+    const double seconds = SecondsSince(start);
+    out << std::fixed << std::setprecision(0) << std::setw(16) << target
+        << " | " << std::setw(5) << lines << " | " << std::setw(14)
+        << static_cast<double>(crossings) / lines << " | " << std::setw(13)
+        << breakpoints / seconds << " | " << std::setprecision(1)
+        << std::setw(11) << seconds / lines * 1e6 << "\n";
+  }
+  return Status::OK();
+}
+
+Status RunInterpolationBenchmark(const SurfaceBenchOptions& options,
+                                 std::ostream& out) {
+  std::unique_ptr<Engine> engine;
+  if (Status s = BuildTerrain(options, &engine); !s.ok()) return s;
+  std::vector<Point2> queries = TerrainPoints(options.queries, 9);
+  // Keep the queries local, as a raster or a map view sends them.
+  std::sort(queries.begin(), queries.end(),
+            [](const Point2& a, const Point2& b) {
+              return std::make_pair(std::floor(a.y / 100), a.x) <
+                     std::make_pair(std::floor(b.y / 100), b.x);
+            });
+  out << "interpolation benchmark: " << options.points << " points, "
+      << options.queries << " queries, single thread\n"
+      << "method           | ns per point | relative to linear\n";
+  double linear_ns = 0;
+  std::vector<LocateResult> results;
+  for (const Interpolation how :
+       {Interpolation::kLinear, Interpolation::kNearest,
+        Interpolation::kNaturalNeighbor}) {
+    // Two passes; the second is timed (the first warms the tuning).
+    double ns = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      const auto start = Clock::now();
+      if (Status s = engine->LocateBatch(queries, &results, nullptr, how);
+          !s.ok()) {
+        return s;
+      }
+      ns = SecondsSince(start) * 1e9 / queries.size();
+    }
+    if (how == Interpolation::kLinear) linear_ns = ns;
+    out << std::left << std::setw(16) << InterpolationName(how) << std::right
+        << " | " << std::fixed << std::setprecision(0) << std::setw(12) << ns
+        << " | " << std::setprecision(2) << ns / linear_ns << "\n";
+  }
+  return Status::OK();
+}
+
+}  // namespace locator::bench

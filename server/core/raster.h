@@ -1,0 +1,44 @@
+// RasterSpec: a north-up raster over the surface, as GDAL lays one out.
+//
+// Row 0 is the northern edge (box.max_y); cell (col, row) holds the value at
+// its centre, (min_x + (col + 0.5) * cell_width, max_y - (row + 0.5) *
+// cell_height). Cells outside the hull or the domain, and every cell of a
+// dataset without values, hold `nodata`.
+
+#ifndef LOCATOR_CORE_RASTER_H_
+#define LOCATOR_CORE_RASTER_H_
+
+#include <cstdint>
+#include <limits>
+
+#include "common/geometry.h"
+#include "common/status.h"
+#include "server/core/interpolation.h"
+
+namespace locator {
+
+struct RasterSpec {
+  BoundingBox box;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  double nodata = std::numeric_limits<double>::quiet_NaN();
+  Interpolation interpolation = Interpolation::kLinear;
+
+  double cell_width() const { return box.width() / width; }
+  double cell_height() const { return box.height() / height; }
+  uint64_t cells() const { return uint64_t{width} * height; }
+  // The centre of cell (col, row).
+  Point2 CellCentre(uint32_t col, uint32_t row) const {
+    return Point2{box.min_x + (col + 0.5) * cell_width(),
+                  box.max_y - (row + 0.5) * cell_height()};
+  }
+};
+
+// OK if `spec` describes a raster: a finite box with min < max on both
+// axes, width and height >= 1, and finite cell sizes; InvalidArgument
+// naming the problem otherwise.
+[[nodiscard]] Status CheckRasterSpec(const RasterSpec& spec);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_RASTER_H_

@@ -1,0 +1,71 @@
+#include "server/core/raster_render.h"
+
+#include <cmath>
+#include <string>
+
+#include "server/core/surface_value.h"
+#include "server/core/walk.h"
+
+namespace locator {
+
+Status CheckRasterSpec(const RasterSpec& spec) {
+  const BoundingBox& b = spec.box;
+  if (!IsFinite(Point2{b.min_x, b.min_y}) ||
+      !IsFinite(Point2{b.max_x, b.max_y})) {
+    return Status::InvalidArgument("the raster's box must be finite");
+  }
+  if (!(b.min_x < b.max_x) || !(b.min_y < b.max_y)) {
+    return Status::InvalidArgument(
+        "the raster's box must have min_x < max_x and min_y < max_y");
+  }
+  if (spec.width == 0 || spec.height == 0) {
+    return Status::InvalidArgument("the raster needs width and height >= 1");
+  }
+  if (!std::isfinite(b.width()) || !std::isfinite(b.height()) ||
+      !(spec.cell_width() > 0) || !(spec.cell_height() > 0)) {
+    return Status::InvalidArgument(
+        "the raster's cells are not representable: box " +
+        std::to_string(b.width()) + " x " + std::to_string(b.height()) +
+        " over " + std::to_string(spec.width) + " x " +
+        std::to_string(spec.height) + " cells");
+  }
+  return Status::OK();
+}
+
+namespace {
+
+// The value at the cell centre q that the walk `w` located, or nodata
+// outside the hull or the domain (a centre on the domain's boundary edge or
+// vertex takes the in-domain side).
+double CellValue(const Triangulation& t, const RasterSpec& spec,
+                 const WalkOutcome& w, const Point2& q) {
+  if (w.type == LocationType::kOutsideConvexHull || !t.has_values()) {
+    return spec.nodata;
+  }
+  Triangulation::Face_handle f = w.face;
+  if (!t.InDomain(f)) {
+    int feature = w.feature;
+    if (!t.MoveIntoDomain(&f, w.type, &feature)) return spec.nodata;
+  }
+  return ValueAt(t, f, q, spec.interpolation);
+}
+
+}  // namespace
+
+void RenderRows(const Triangulation& t, Triangulation::Face_handle hint,
+                const RasterSpec& spec, uint32_t first_row, uint32_t rows,
+                double* out) {
+  Triangulation::Face_handle row_start = hint;
+  for (uint32_t r = 0; r < rows; ++r) {
+    Triangulation::Face_handle face = row_start;
+    for (uint32_t col = 0; col < spec.width; ++col) {
+      const Point2 q = spec.CellCentre(col, first_row + r);
+      const WalkOutcome w = Walk(t, face, q);
+      face = w.face;
+      if (col == 0) row_start = face;
+      *out++ = CellValue(t, spec, w, q);
+    }
+  }
+}
+
+}  // namespace locator
