@@ -124,15 +124,23 @@ void ExpectConsistent(const Triangulation& t, const Profile& profile,
   }
 }
 
+// A finite in-domain face on either side of the edge (f, i); null if none.
+Face_handle BesideInDomain(const Triangulation& t, Face_handle f, int i) {
+  for (Face_handle g : {f, f->neighbor(i)}) {
+    if (!t.IsInfinite(g) && t.InDomain(g)) return g;
+  }
+  return Face_handle();
+}
+
 struct Crossed {
   double t;
   Face_handle face;
   int edge;
 };
 
-// Every finite edge whose interior the interior of p->q crosses, counted
-// exactly, in order along the segment; *vertices_passed counts the mesh
-// vertices strictly between p and q.
+// Every finite edge with the surface on a side whose interior the interior of
+// p->q crosses, counted exactly, in order along the segment; *vertices_passed
+// counts the mesh vertices strictly between p and q.
 std::vector<Crossed> BruteForceCrossings(const Triangulation& t,
                                          const Point2& p, const Point2& q,
                                          size_t* vertices_passed) {
@@ -147,6 +155,7 @@ std::vector<Crossed> BruteForceCrossings(const Triangulation& t,
   }
   std::vector<Crossed> crossed;
   for (const auto& [f, i] : t.cgal().finite_edges()) {
+    if (BesideInDomain(t, f, i) == Face_handle()) continue;
     const auto& a = f->vertex(Triangulation::Cdt::ccw(i))->point();
     const auto& b = f->vertex(Triangulation::Cdt::cw(i))->point();
     if (CGAL::orientation(cp, cq, a) * CGAL::orientation(cp, cq, b) < 0 &&
@@ -189,8 +198,8 @@ void ExpectCrossingsMatchBruteForce(const Triangulation& t, const Point2& p,
         std::sqrt(static_cast<double>(SegmentDistance2(a, b, got[k].point))),
         1e-9);
     ASSERT_TRUE(got[k].has_value);
-    const Face_handle beside = t.IsInfinite(f) ? f->neighbor(i) : f;
-    EXPECT_NEAR(got[k].value, LinearValueIn(beside, got[k].point), 1e-9);
+    EXPECT_NEAR(got[k].value,
+                LinearValueIn(BesideInDomain(t, f, i), got[k].point), 1e-9);
   }
 }
 
@@ -211,6 +220,27 @@ TEST(ProfileTest, CrossingsMatchBruteForceOnRandomDelaunay) {
       EXPECT_EQ(profile.gaps[0].from_distance, 0);
       EXPECT_EQ(profile.gaps[0].reason, LocationType::kOutsideConvexHull);
     }
+  }
+}
+
+TEST(ProfileTest, CrossingsMatchBruteForceWithConstraints) {
+  // A concave outer ring, a hole and two crossing breaklines: crossings
+  // between two faces outside the domain are not reported.
+  Dataset d = WithRandomValues(GenerateUniform(300, 15), 16);
+  d.constraints.rings = {
+      Polyline{
+          {{0.05, 0.05}, {0.95, 0.05}, {0.95, 0.95}, {0.5, 0.7}, {0.05, 0.95}},
+          std::vector<double>(5, 0.5)},
+      ValuedSquare(0.3, 0.45)};
+  d.constraints.breaklines = {Polyline{{{0.1, 0.2}, {0.9, 0.3}}, {0, 1}},
+                              Polyline{{{0.2, 0.1}, {0.25, 0.6}}, {1, 0}}};
+  const auto t = test::BuildTriangulation(d);
+  ASSERT_NE(t, nullptr);
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> u(-0.1, 1.1);
+  for (int i = 0; i < 200; ++i) {
+    ExpectCrossingsMatchBruteForce(*t, {u(random), u(random)},
+                                   {u(random), u(random)});
   }
 }
 
