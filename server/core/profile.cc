@@ -1,0 +1,244 @@
+#include "server/core/profile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/str_cat.h"
+#include "server/core/profile_walk.h"
+#include "server/core/walk.h"
+
+namespace locator {
+
+namespace {
+
+using Face_handle = Triangulation::Face_handle;
+
+// A point of the trace, reported or not.
+struct Stop {
+  ProfilePoint point;
+  // For a line vertex, an in-domain face whose closed triangle holds it.
+  Face_handle own_face;
+};
+
+// Traces the line into stops and the stretches between them
+// (stretches_[i] runs from stops_[i] to stops_[i + 1]), then derives the
+// profile from them.
+class ProfileBuilder {
+ public:
+  ProfileBuilder(const Triangulation& t, std::span<const Point2> line,
+                 const ProfileOptions& options)
+      : t_(t), line_(line), options_(options) {}
+
+  Status Trace(Face_handle start) {
+    Face_handle hint = start;
+    double offset = 0;
+    for (size_t s = 0; s + 1 < line_.size(); ++s) {
+      const Point2& p = line_[s];
+      const Point2& q = line_[s + 1];
+      const double length = std::hypot(q.x - p.x, q.y - p.y);
+      segment_start_.push_back(offset);
+      segment_length_.push_back(length);
+      WalkOutcome at;
+      Status status = WalkTo(hint, p, s, offset, &at);
+      if (!status.ok()) return status;
+      if (p.x == q.x && p.y == q.y) {
+        stretches_.push_back(RegionAt(at));
+        hint = at.face;
+        continue;
+      }
+      SegmentTrace trace;
+      status = WalkSegment(t_, at, p, q, options_.max_faces, &faces_, &trace);
+      if (!status.ok()) return status;
+      for (const SegmentStop& stop : trace.stops) {
+        stretches_.push_back(stop.before);
+        AddStop(stop.kind, stop.point, offset + stop.t * length, s,
+                Face_handle());
+      }
+      stretches_.push_back(trace.last);
+      offset += length;
+      hint = trace.end_face;
+    }
+    WalkOutcome at;
+    return WalkTo(hint, line_.back(), line_.size() - 2, offset, &at);
+  }
+
+  void Finish(Profile* out) {
+    out->length = stops_.back().point.distance;
+    for (size_t j = 0; j < stops_.size(); ++j) {
+      const Face_handle none;
+      const Face_handle before = j > 0 ? stretches_[j - 1].face : none;
+      const Face_handle after =
+          j < stretches_.size() ? stretches_[j].face : none;
+      ProfilePoint& point = stops_[j].point;
+      // Crossings inside a gap are walked through silently.
+      if (before == none && after == none &&
+          point.kind != ProfilePointKind::kLineVertex) {
+        continue;
+      }
+      const Face_handle face = before != none  ? before
+                               : after != none ? after
+                                               : stops_[j].own_face;
+      if (face != none) {
+        if (t_.has_values()) {
+          point.has_value = true;
+          point.value = ValueAt(t_, face, point.point, options_.interpolation);
+        }
+        // The last point has no stretch after it: the face it ends in.
+        point.triangle_id = j < stretches_.size()
+                                ? (after == none ? -1 : after->info())
+                                : face->info();
+      }
+      out->breakpoints.push_back(point);
+      if (point.kind != ProfilePointKind::kLineVertex) ++out->crossings;
+    }
+    AddGaps(out);
+    AddSamples(out);
+  }
+
+ private:
+  // Walks to the line vertex `v` of segment `s` and records it.
+  Status WalkTo(Face_handle hint, const Point2& v, size_t s, double distance,
+                WalkOutcome* at) {
+    *at = Walk(t_, hint, v);
+    faces_ += at->faces_visited;
+    if (faces_ > options_.max_faces) return TooManyFaces(options_.max_faces);
+    AddStop(ProfilePointKind::kLineVertex, v, distance, s,
+            ClosedDomainFace(t_, *at));
+    return Status::OK();
+  }
+
+  void AddStop(ProfilePointKind kind, const Point2& point, double distance,
+               size_t segment, Face_handle own_face) {
+    Stop stop;
+    stop.point.kind = kind;
+    stop.point.point = point;
+    stop.point.distance =
+        stops_.empty() ? distance
+                       : std::max(distance, stops_.back().point.distance);
+    stop.point.segment = static_cast<uint32_t>(segment);
+    stop.own_face = own_face;
+    stops_.push_back(stop);
+  }
+
+  // The zero-length stretch of a repeated line vertex.
+  ProfileRegion RegionAt(const WalkOutcome& at) const {
+    const Face_handle face = ClosedDomainFace(t_, at);
+    if (face != Face_handle()) return {face, LocationType::kFace};
+    return {face, at.type == LocationType::kOutsideConvexHull
+                      ? LocationType::kOutsideConvexHull
+                      : LocationType::kOutsideDomain};
+  }
+
+  void AddGaps(Profile* out) const {
+    for (size_t j = 0; j < stretches_.size(); ++j) {
+      const ProfileRegion& r = stretches_[j];
+      if (r.face != Face_handle()) continue;
+      const double from = stops_[j].point.distance;
+      const double to = stops_[j + 1].point.distance;
+      if (!out->gaps.empty() && out->gaps.back().reason == r.type &&
+          out->gaps.back().to_distance >= from) {
+        out->gaps.back().to_distance = to;
+      } else {
+        out->gaps.push_back({from, to, r.type});
+      }
+    }
+  }
+
+  // The point at `distance` along the line, and the segment it belongs to.
+  Point2 PointAt(double distance, uint32_t* segment) const {
+    const size_t s = std::upper_bound(segment_start_.begin(),
+                                      segment_start_.end(), distance) -
+                     segment_start_.begin() - 1;
+    *segment = static_cast<uint32_t>(s);
+    const Point2& p = line_[s];
+    const Point2& q = line_[s + 1];
+    const double f =
+        segment_length_[s] > 0
+            ? std::clamp((distance - segment_start_[s]) / segment_length_[s],
+                         0.0, 1.0)
+            : 0.0;
+    return {p.x + f * (q.x - p.x), p.y + f * (q.y - p.y)};
+  }
+
+  void AddSamples(Profile* out) const {
+    const uint32_t n = options_.samples;
+    size_t j = 0;  // the stretch the previous sample was in
+    for (uint32_t i = 0; i < n; ++i) {
+      ProfilePoint sample;
+      sample.kind = ProfilePointKind::kSample;
+      sample.distance = i == 0       ? 0
+                        : i == n - 1 ? out->length
+                                     : out->length * i / (n - 1);
+      sample.point = PointAt(sample.distance, &sample.segment);
+      if (n > 1 && i == n - 1) sample.point = line_.back();
+      while (j + 1 < stretches_.size() &&
+             stops_[j + 1].point.distance < sample.distance) {
+        ++j;
+      }
+      // At a stop between a gap and a defined stretch, the defined one.
+      size_t k = j;
+      while (stretches_[k].face == Face_handle() && k + 1 < stretches_.size() &&
+             stops_[k + 1].point.distance <= sample.distance) {
+        ++k;
+      }
+      const Face_handle face = stretches_[k].face;
+      if (face != Face_handle()) {
+        sample.triangle_id = face->info();
+        if (t_.has_values()) {
+          sample.has_value = true;
+          sample.value =
+              options_.interpolation == Interpolation::kLinear
+                  ? Lerp(stops_[k].point, stops_[k + 1].point, sample.distance)
+                  : ValueAt(t_, face, sample.point, options_.interpolation);
+        }
+      }
+      out->samples.push_back(sample);
+    }
+  }
+
+  // The linear value at `distance` between two stops with values.
+  static double Lerp(const ProfilePoint& a, const ProfilePoint& b,
+                     double distance) {
+    const double span = b.distance - a.distance;
+    if (span <= 0) return a.value;
+    const double f = std::clamp((distance - a.distance) / span, 0.0, 1.0);
+    return a.value + f * (b.value - a.value);
+  }
+
+  const Triangulation& t_;
+  const std::span<const Point2> line_;
+  const ProfileOptions& options_;
+  uint64_t faces_ = 0;
+  std::vector<Stop> stops_;
+  std::vector<ProfileRegion> stretches_;
+  // Per segment: the distance where it starts, and its length.
+  std::vector<double> segment_start_;
+  std::vector<double> segment_length_;
+};
+
+}  // namespace
+
+Status TraceProfile(const Triangulation& t, Face_handle start,
+                    std::span<const Point2> line, const ProfileOptions& options,
+                    Profile* out) {
+  *out = Profile();
+  if (line.size() < 2) {
+    return Status::InvalidArgument(
+        StrCat({"profile: the line has ", std::to_string(line.size()),
+                " points; it needs at least 2"}));
+  }
+  for (size_t i = 0; i < line.size(); ++i) {
+    if (!IsFinite(line[i])) {
+      return Status::InvalidArgument(StrCat(
+          {"profile: line point ", std::to_string(i), " is not finite"}));
+    }
+  }
+  ProfileBuilder builder(t, line, options);
+  const Status status = builder.Trace(start);
+  if (!status.ok()) return status;
+  builder.Finish(out);
+  return Status::OK();
+}
+
+}  // namespace locator
