@@ -120,7 +120,8 @@ class Engine {
   // the domain. The walk to line[0] starts where the strategy would start a
   // locate of it. InvalidArgument for fewer than 2 points, a non-finite one
   // or an interpolation the dataset refuses; ResourceExhausted when the
-  // line would enter more than options.max_faces triangles.
+  // line would enter more than options.max_faces triangles (see
+  // TraceProfile in profile_trace.h).
   Status TraceProfile(std::span<const Point2> line,
                       const ProfileOptions& options, Profile* out) const;
 

@@ -62,22 +62,13 @@ void Engine::Reinterpolate(std::span<const Point2> queries, Interpolation how,
 Status Engine::TraceProfile(std::span<const Point2> line,
                             const ProfileOptions& options,
                             Profile* out) const {
-  if (line.size() < 2) {
-    return Status::InvalidArgument("a profile line needs at least 2 points, "
-                                   "got " + std::to_string(line.size()));
-  }
-  for (size_t i = 0; i < line.size(); ++i) {
-    if (!IsFinite(line[i])) {
-      return Status::InvalidArgument(
-          "line point " + std::to_string(i) +
-          " has a non-finite coordinate (x=" + std::to_string(line[i].x) +
-          ", y=" + std::to_string(line[i].y) + ")");
-    }
-  }
   if (Status s = CheckInterpolation(options.interpolation); !s.ok()) return s;
   const Triangulation& t = *triangulation_;
-  return ::locator::TraceProfile(t, StartNear(t, *locator_, line[0]), line,
-                                 options, out);
+  // The trace checks the line itself; the strategy only sees a good point.
+  const Face_handle start = !line.empty() && IsFinite(line[0])
+                                ? StartNear(t, *locator_, line[0])
+                                : t.DefaultStart();
+  return ::locator::TraceProfile(t, start, line, options, out);
 }
 
 Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,

@@ -3,7 +3,7 @@
 // edges), gaps outside the hull and in a hole, samples against
 // ReferenceLocate, limits and bad input.
 
-#include "server/core/profile.h"
+#include "server/core/profile_trace.h"
 
 #include <gtest/gtest.h>
 

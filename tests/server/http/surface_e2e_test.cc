@@ -334,9 +334,9 @@ std::vector<Refusal> Refusals() {
                     ToJson(request), code, std::move(message)});
   };
   add("ProfileOfOnePoint", profile, ProfileRequestFor({{1, 1}}, 0), "profile",
-      Code::INVALID_ARGUMENT, "at least 2 points");
+      Code::INVALID_ARGUMENT, "it needs at least 2");
   add("ProfileWithNaN", profile, ProfileRequestFor({{1, 1}, {nan, 2}}, 0),
-      "profile", Code::INVALID_ARGUMENT, "line point 1 has a non-finite");
+      "profile", Code::INVALID_ARGUMENT, "line point 1 is not finite");
   add("ProfileOverCrossingLimit", profile,
       ProfileRequestFor({{0.5, 0.5}, {58.5, 58.7}, {0.5, 58.5}, {58, 0.2}}, 0),
       "profile", Code::RESOURCE_EXHAUSTED, std::to_string(kMaxCrossings));

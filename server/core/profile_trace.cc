@@ -1,4 +1,4 @@
-#include "server/core/profile.h"
+#include "server/core/profile_trace.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +6,7 @@
 
 #include "common/str_cat.h"
 #include "server/core/profile_walk.h"
+#include "server/core/surface_value.h"
 #include "server/core/walk.h"
 
 namespace locator {
