@@ -218,6 +218,15 @@ TEST(NaturalNeighborTest, HullEdgesAreLinearAndOutsideIsRefused) {
       EXPECT_LE(MaxDifference(ByPoint(neighbors), expected), 1e-15)
           << q.x << " " << q.y;
       ExpectSibsonProperties(neighbors, q, 1, 6, 1e-15);
+      // 1e-12 inside (the sides run counter-clockwise: inward is left),
+      // Sibson's coordinates are near this limit (they converge linearly;
+      // ~4e-10 off here), although the circumcentre of the side and the
+      // point lies ~1e11 away.
+      const Point2 in{q.x - 1e-12 * (to.y - from.y),
+                      q.y + 1e-12 * (to.x - from.x)};
+      ASSERT_TRUE(Sibson(*t, in, &neighbors)) << in.x << " " << in.y;
+      EXPECT_LE(MaxDifference(ByPoint(neighbors), expected), 1e-8)
+          << in.x << " " << in.y;
     }
   }
   for (const Point2 q : {Point2{0.5, -1e-300},
