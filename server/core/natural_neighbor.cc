@@ -64,9 +64,11 @@ void ConflictBoundary(const Triangulation& t, Face_handle start,
 }
 
 // Maps dataset points into a frame centred on q and scaled by a power of
-// two (exactly) so that the conflict zone spans about 1: the weights do not
-// change, and the circumcentres and areas below neither overflow nor
-// underflow whatever the dataset's scale.
+// two (exactly) so that the conflict zone spans about 1 (every corner of
+// its faces is a boundary vertex): the weights do not change, and the
+// circumcentres and areas below keep their precision at any scale of the
+// dataset, where in dataset units they would overflow beyond ~1e154 and
+// underflow below ~1e-154.
 class LocalFrame {
  public:
   LocalFrame(const Point2& q, const std::vector<BoundaryEdge>& boundary)
