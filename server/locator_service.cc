@@ -345,10 +345,10 @@ grpc::ServerUnaryReactor* LocatorService::Profile(
       this, context, AccessPolicy::Scope::kData, request->dataset(),
       [&](Admission call) {
         grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-        surface_pool_.Submit([this, reactor, request, response,
-                              call = std::move(call)] {
-          reactor->Finish(RunProfile(call, *request, response));
-        });
+        surface_pool_.Submit(
+            [this, reactor, request, response, call = std::move(call)] {
+              reactor->Finish(RunProfile(call, *request, response));
+            });
         return reactor;
       });
 }
@@ -366,8 +366,8 @@ grpc::ServerWriteReactor<v1::GridResponse>* LocatorService::Grid(
         }
         std::shared_ptr<const Engine> engine = call.engine;
         const std::string crs = engine->dataset_info().crs;
-        return new GridStream(context, CallDeadline::For(*context,
-                                                         default_deadline_),
+        return new GridStream(context,
+                              CallDeadline::For(*context, default_deadline_),
                               std::move(engine), spec, crs, &surface_pool_,
                               std::make_shared<Admission>(std::move(call)));
       });

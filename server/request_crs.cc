@@ -59,8 +59,7 @@ Status LineInDatasetCrs(const Engine& engine, const std::string& crs,
                         std::vector<Point2>* line) {
   if (crs.empty()) return Status::OK();
   gis::CrsTransformer* transformer = nullptr;
-  if (Status status = TransformerFor(engine, crs, &transformer);
-      !status.ok()) {
+  if (Status status = TransformerFor(engine, crs, &transformer); !status.ok()) {
     return status;
   }
   return transformer->ToDataset(*line);

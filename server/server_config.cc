@@ -105,8 +105,8 @@ Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
     return status;
   }
   if (Status status =
-          ParseCountAs("max-profile-crossings", flags.max_profile_crossings,
-                       1, uint64_t{1} << 40, &config->max_profile_crossings);
+          ParseCountAs("max-profile-crossings", flags.max_profile_crossings, 1,
+                       uint64_t{1} << 40, &config->max_profile_crossings);
       !status.ok()) {
     return status;
   }

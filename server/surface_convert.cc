@@ -128,8 +128,8 @@ Status FromGridRequest(const v1::GridRequest& request, uint64_t max_cells,
   spec->nodata = request.has_nodata()
                      ? request.nodata()
                      : std::numeric_limits<double>::quiet_NaN();
-  if (Status s = FromInterpolation(request.interpolation(),
-                                   &spec->interpolation);
+  if (Status s =
+          FromInterpolation(request.interpolation(), &spec->interpolation);
       !s.ok()) {
     return s;
   }

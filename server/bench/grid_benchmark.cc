@@ -11,8 +11,8 @@
 #include <fstream>
 #include <iomanip>
 #include <memory>
-#include <sstream>
 #include <span>
+#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -67,8 +67,8 @@ RasterSpec SpecFor(const GridBenchOptions& options) {
 }
 
 // Renders every row of `spec` on `threads` threads into `cells`.
-Status RenderAll(const Engine& engine, const RasterSpec& spec,
-                 unsigned threads, std::vector<double>* cells) {
+Status RenderAll(const Engine& engine, const RasterSpec& spec, unsigned threads,
+                 std::vector<double>* cells) {
   cells->assign(spec.cells(), 0);
   std::vector<Status> results(threads);
   std::vector<std::thread> workers;
@@ -101,8 +101,8 @@ Status WriteGeoTiff(const RasterSpec& spec, const std::vector<double>& cells,
                                .cell_width = spec.cell_width(),
                                .cell_height = spec.cell_height(),
                                .nodata = spec.nodata};
-  if (Status s = gis::RasterWriter::Open(path, shape, {.driver = "GTiff"},
-                                         &writer);
+  if (Status s =
+          gis::RasterWriter::Open(path, shape, {.driver = "GTiff"}, &writer);
       !s.ok()) {
     return s;
   }
@@ -133,10 +133,11 @@ Status RunGdalGrid(const GridBenchOptions& options, const std::string& vrt,
                    const std::string& tif) {
   const BoundingBox box = TerrainBox();
   std::ostringstream command;
-  command << std::setprecision(17) << "gdal_grid -q -a linear:radius=0:nodata="
-          << kNodata << " -l points -txe " << box.min_x << ' ' << box.max_x
-          << " -tye " << box.max_y << ' ' << box.min_y << " -outsize "
-          << options.size << ' ' << options.size
+  command << std::setprecision(17)
+          << "gdal_grid -q -a linear:radius=0:nodata=" << kNodata
+          << " -l points -txe " << box.min_x << ' ' << box.max_x << " -tye "
+          << box.max_y << ' ' << box.min_y << " -outsize " << options.size
+          << ' ' << options.size
           << " -ot Float64 -of GTiff -co TILED=YES --config GDAL_NUM_THREADS "
           << options.threads << " '" << vrt << "' '" << tif << "'";
   std::filesystem::remove(tif);
@@ -233,11 +234,10 @@ Status RunGridBenchmark(const GridBenchOptions& options, std::ostream& out) {
       << spec.cells() / render_s / 1e6 << " M cells/s\n";
   Comparison c;
   if (Status s = Compare(spec, cells, theirs, &c); !s.ok()) return s;
-  out << std::scientific << std::setprecision(3)
-      << "rasters: " << c.both << " cells valued in both; max |difference| "
-      << c.max_abs_difference << " (" << c.max_abs_difference / z_range
-      << " of the z range " << z_range << "); " << c.only_locator
-      << " valued by locator only, " << c.only_gdal
+  out << std::scientific << std::setprecision(3) << "rasters: " << c.both
+      << " cells valued in both; max |difference| " << c.max_abs_difference
+      << " (" << c.max_abs_difference / z_range << " of the z range " << z_range
+      << "); " << c.only_locator << " valued by locator only, " << c.only_gdal
       << " by gdal_grid only\n";
   return Status::OK();
 }

@@ -34,9 +34,8 @@ std::vector<Point2> RandomLine(double length, std::mt19937_64& random) {
   const BoundingBox box = TerrainBox();
   std::uniform_real_distribution<double> u(0.05, 0.95);
   std::uniform_real_distribution<double> angle(0, 2 * M_PI);
-  std::vector<Point2> line = {
-      {box.min_x + u(random) * box.width(),
-       box.min_y + u(random) * box.height()}};
+  std::vector<Point2> line = {{box.min_x + u(random) * box.width(),
+                               box.min_y + u(random) * box.height()}};
   for (double left = length; left > 0;) {
     const double step = std::min(left, 8000.0);
     for (;;) {
@@ -62,8 +61,7 @@ Status RunProfileBenchmark(const SurfaceBenchOptions& options,
   // Mean triangle edges crossed per metre of line, for uniform points.
   const double per_metre =
       1.4 * std::sqrt(static_cast<double>(options.points)) / 10000;
-  out << "profile benchmark: " << options.points
-      << " points, single thread\n"
+  out << "profile benchmark: " << options.points << " points, single thread\n"
       << "target crossings | lines | mean crossings | breakpoints/s | "
          "us per line\n";
   std::mt19937_64 random(7);

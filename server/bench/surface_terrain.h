@@ -20,8 +20,7 @@ inline BoundingBox TerrainBox() { return BoundingBox{0, 0, 10000, 10000}; }
 
 // The height at p, in metres.
 inline double TerrainHeight(const Point2& p) {
-  return 300 + 200 * std::sin(p.x / 1500) * std::cos(p.y / 1100) +
-         0.02 * p.x;
+  return 300 + 200 * std::sin(p.x / 1500) * std::cos(p.y / 1100) + 0.02 * p.x;
 }
 
 // `n` uniform points of TerrainBox().

@@ -20,11 +20,10 @@ using Face_handle = Triangulation::Face_handle;
 Face_handle FaceOf(const Triangulation& t, const LocateResult& r) {
   const std::array<int64_t, 3>& ids = r.vertex_ids;
   Face_handle face;
-  if (ids[0] >= 0 &&
-      t.FaceWithCorners({static_cast<uint32_t>(ids[0]),
-                         static_cast<uint32_t>(ids[1]),
-                         static_cast<uint32_t>(ids[2])},
-                        &face)) {
+  if (ids[0] >= 0 && t.FaceWithCorners({static_cast<uint32_t>(ids[0]),
+                                        static_cast<uint32_t>(ids[1]),
+                                        static_cast<uint32_t>(ids[2])},
+                                       &face)) {
     return face;
   }
   if (r.domain_edge_ids[0] >= 0) {
@@ -54,14 +53,13 @@ void Engine::Reinterpolate(std::span<const Point2> queries, Interpolation how,
   for (size_t i = 0; i < queries.size(); ++i) {
     LocateResult& r = results[i];
     if (!r.has_value) continue;
-    r.value = ValueAt(*triangulation_, FaceOf(*triangulation_, r), queries[i],
-                      how);
+    r.value =
+        ValueAt(*triangulation_, FaceOf(*triangulation_, r), queries[i], how);
   }
 }
 
 Status Engine::TraceProfile(std::span<const Point2> line,
-                            const ProfileOptions& options,
-                            Profile* out) const {
+                            const ProfileOptions& options, Profile* out) const {
   if (Status s = CheckInterpolation(options.interpolation); !s.ok()) return s;
   const Triangulation& t = *triangulation_;
   // The trace checks the line itself; the strategy only sees a good point.
@@ -83,9 +81,9 @@ Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,
   }
   if (rows == 0) return Status::OK();
   const Triangulation& t = *triangulation_;
-  ::locator::RenderRows(
-      t, StartNear(t, *locator_, spec.CellCentre(0, first_row)), spec,
-      first_row, rows, out);
+  ::locator::RenderRows(t,
+                        StartNear(t, *locator_, spec.CellCentre(0, first_row)),
+                        spec, first_row, rows, out);
   return Status::OK();
 }
 

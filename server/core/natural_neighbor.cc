@@ -57,8 +57,7 @@ void ConflictBoundary(const Triangulation& t, Face_handle start,
     // A constrained edge stops the search as in CGAL's constrained
     // Delaunay triangulation: callers serve no constraints, and this keeps
     // the search finite even if one did.
-    if (t.IsInfinite(next) || face->is_constrained(i) ||
-        !InConflict(next, q)) {
+    if (t.IsInfinite(next) || face->is_constrained(i) || !InConflict(next, q)) {
       boundary->push_back({next, j});
     } else {
       stack.emplace_back(next, Cw(j));

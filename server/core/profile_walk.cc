@@ -308,8 +308,7 @@ Status WalkSegment(const Triangulation& t, const WalkOutcome& at,
 
 Status TooManyFaces(uint64_t max_faces) {
   return Status::ResourceExhausted(
-      StrCat({"profile: the line crosses more than ",
-              std::to_string(max_faces),
+      StrCat({"profile: the line crosses more than ", std::to_string(max_faces),
               " triangle edges, the limit per request"}));
 }
 

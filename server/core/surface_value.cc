@@ -29,8 +29,8 @@ double NearestValue(Triangulation::Face_handle f, const Point2& q) {
     const double d =
         SquaredDistance(Triangulation::FromCgal(f->vertex(i)->point()), q);
     const bool nearer = best_distance < 0 || d < best_distance ||
-                        (d == best_distance && f->vertex(i)->info().id <
-                                                   f->vertex(best)->info().id);
+                        (d == best_distance &&
+                         f->vertex(i)->info().id < f->vertex(best)->info().id);
     if (nearer) {
       best = i;
       best_distance = d;

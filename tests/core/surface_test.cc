@@ -11,6 +11,7 @@
 #include <random>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "server/core/engine.h"
@@ -21,6 +22,13 @@ namespace locator {
 namespace {
 
 constexpr double kNodata = -9999;
+
+// A constraint through `points` with the values of test::Plane there.
+Polyline OnThePlane(std::vector<Point2> points) {
+  Polyline line{std::move(points), {}};
+  for (const Point2& p : line.points) line.values.push_back(test::Plane(p));
+  return line;
+}
 
 std::unique_ptr<Engine> EngineFor(Dataset dataset,
                                   const std::string& strategy = "self-tuning") {
@@ -56,8 +64,8 @@ void ExpectCellsMatchReference(const Engine& engine, const Dataset& dataset,
       if (!want.has_value) {
         if (got != kNodata && ++mismatches < 10) {
           ADD_FAILURE() << "cell (" << col << ", " << row << ") at (" << q.x
-                        << ", " << q.y << ") is "
-                        << LocationTypeName(want.type) << " but holds " << got;
+                        << ", " << q.y << ") is " << LocationTypeName(want.type)
+                        << " but holds " << got;
         }
       } else if (!(std::abs(got - want.value) <= tolerance) &&
                  ++mismatches < 10) {
@@ -108,9 +116,9 @@ TEST(RasterTest, CentresOnVerticesAndEdgesOfAnIntegerGrid) {
 TEST(RasterTest, HolesAndTheOutsideOfTheBoundaryAreNodata) {
   Dataset dataset = test::PlaneDataset(4000, 11);
   dataset.constraints.rings.push_back(
-      Polyline{{{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}}, {}});
+      OnThePlane({{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}}));
   dataset.constraints.rings.push_back(
-      Polyline{{{0.4, 0.4}, {0.6, 0.4}, {0.6, 0.6}, {0.4, 0.6}}, {}});
+      OnThePlane({{0.4, 0.4}, {0.6, 0.4}, {0.6, 0.6}, {0.4, 0.6}}));
   const auto engine = EngineFor(dataset);
   ASSERT_NE(engine, nullptr);
   // Columns at x = 0.1, 0.4, 0.6 and 0.9 run along the rings.
@@ -154,10 +162,10 @@ TEST(RasterTest, BadSpecsAreInvalidArgument) {
     EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
     return s.message();
   };
-  EXPECT_NE(error({.box = BoundingBox{1, 0, 0, 1}, .width = 2, .height = 2},
-                  0, 1)
-                .find("min_x < max_x"),
-            std::string::npos);
+  EXPECT_NE(
+      error({.box = BoundingBox{1, 0, 0, 1}, .width = 2, .height = 2}, 0, 1)
+          .find("min_x < max_x"),
+      std::string::npos);
   EXPECT_NE(
       error({.box = BoundingBox{0, 0, NAN, 1}, .width = 2, .height = 2}, 0, 1)
           .find("finite"),
@@ -175,10 +183,9 @@ TEST(InterpolationTest, NearestIsTheNearestCornersValue) {
   const std::vector<Point2> queries =
       test::UniformQueries(BoundingBox{0, 0, 1, 1}, 2000, 4);
   std::vector<LocateResult> batch;
-  ASSERT_TRUE(engine
-                  ->LocateBatch(queries, &batch, nullptr,
-                                Interpolation::kNearest)
-                  .ok());
+  ASSERT_TRUE(
+      engine->LocateBatch(queries, &batch, nullptr, Interpolation::kNearest)
+          .ok());
   for (size_t i = 0; i < queries.size(); ++i) {
     LocateResult r;
     ASSERT_TRUE(engine->Locate(queries[i], &r, Interpolation::kNearest).ok());
@@ -218,7 +225,7 @@ TEST(InterpolationTest, NaturalNeighborReproducesThePlane) {
 TEST(InterpolationTest, NaturalNeighborOnAConstrainedDatasetIsRefused) {
   Dataset dataset = test::PlaneDataset(500, 2);
   dataset.constraints.breaklines.push_back(
-      Polyline{{{0.2, 0.2}, {0.8, 0.7}}, {}});
+      OnThePlane({{0.2, 0.2}, {0.8, 0.7}}));
   const auto engine = EngineFor(dataset);
   ASSERT_NE(engine, nullptr);
   LocateResult r;
@@ -229,14 +236,13 @@ TEST(InterpolationTest, NaturalNeighborOnAConstrainedDatasetIsRefused) {
   EXPECT_TRUE(engine->Locate({0.5, 0.5}, &r, Interpolation::kNearest).ok());
   std::vector<double> cell(1);
   EXPECT_EQ(engine
-                  ->RenderRows({.box = BoundingBox{0, 0, 1, 1},
-                                .width = 1,
-                                .height = 1,
-                                .interpolation =
-                                    Interpolation::kNaturalNeighbor},
-                               0, 1, cell.data())
-                  .code(),
-              Status::Code::kInvalidArgument);
+                ->RenderRows({.box = BoundingBox{0, 0, 1, 1},
+                              .width = 1,
+                              .height = 1,
+                              .interpolation = Interpolation::kNaturalNeighbor},
+                             0, 1, cell.data())
+                .code(),
+            Status::Code::kInvalidArgument);
 }
 
 }  // namespace

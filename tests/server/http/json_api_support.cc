@@ -36,14 +36,16 @@ HttpReply Post(int port, const std::string& target, const std::string& body,
 
 void ExpectError(const HttpReply& reply, unsigned http, grpc::StatusCode code,
                  const std::string& message) {
-  EXPECT_EQ(reply.status, http) << reply.body;
+  const std::string shown = reply.body.substr(0, 300);
+  EXPECT_EQ(reply.status, http) << shown;
   EXPECT_EQ(reply.headers.at("content-type"), "application/json");
   JsonValue error;
-  ASSERT_TRUE(ParseJson(reply.body, &error).ok()) << reply.body;
-  EXPECT_EQ(error["code"].number(), static_cast<int>(code)) << reply.body;
+  ASSERT_TRUE(ParseJson(reply.body, &error).ok()) << shown;
+  if (reply.status == 200) return;  // not an error: nothing more to check
+  EXPECT_EQ(error["code"].number(), static_cast<int>(code)) << shown;
   EXPECT_EQ(error["status"].string().empty(), false);
   EXPECT_THAT(error["message"].string(), ::testing::HasSubstr(message))
-      << reply.body;
+      << shown;
 }
 
 }  // namespace locator::test

@@ -16,6 +16,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -69,8 +70,7 @@ v1::GridRequest GridRequestFor(const BoundingBox& box, uint32_t width,
 
 // The whole stream of a Grid call as one message (the HTTP form): the
 // header and every row in order. Each row must come exactly once.
-grpc::Status StreamGrid(v1::Locator::Stub& stub,
-                        const v1::GridRequest& request,
+grpc::Status StreamGrid(v1::Locator::Stub& stub, const v1::GridRequest& request,
                         v1::GridResponse* whole, int* messages = nullptr) {
   grpc::ClientContext context;
   context.set_deadline(std::chrono::system_clock::now() +
@@ -232,8 +232,8 @@ TEST_F(SurfaceTest, GridStreamsEveryRowAndAgreesWithCgal) {
     const LocateResult want = reference_->Locate(q);
     if (want.has_value) {
       ++valued;
-      EXPECT_NEAR(grid.values(i), want.value, kValueTolerance) << col << ","
-                                                               << row;
+      EXPECT_NEAR(grid.values(i), want.value, kValueTolerance)
+          << col << "," << row;
     } else {
       EXPECT_EQ(grid.values(i), -1) << col << "," << row;
     }
@@ -309,6 +309,8 @@ struct Refusal {
   std::string message;
 };
 
+void PrintTo(const Refusal& row, std::ostream* out) { *out << row.name; }
+
 std::vector<Refusal> Refusals() {
   const auto profile = [](v1::ProfileRequest request) {
     return [request](v1::Locator::Stub& stub) {
@@ -337,14 +339,19 @@ std::vector<Refusal> Refusals() {
       Code::INVALID_ARGUMENT, "it needs at least 2");
   add("ProfileWithNaN", profile, ProfileRequestFor({{1, 1}, {nan, 2}}, 0),
       "profile", Code::INVALID_ARGUMENT, "line point 1 is not finite");
-  add("ProfileOverCrossingLimit", profile,
-      ProfileRequestFor({{0.5, 0.5}, {58.5, 58.7}, {0.5, 58.5}, {58, 0.2}}, 0),
-      "profile", Code::RESOURCE_EXHAUSTED, std::to_string(kMaxCrossings));
+  // A zigzag across the grid, about 120 crossings a leg.
+  std::vector<Point2> zigzag;
+  for (int leg = 0; leg < 58; ++leg) {
+    zigzag.push_back({leg % 2 == 0 ? 0.5 : 58.5, leg + 0.25});
+  }
+  add("ProfileOverCrossingLimit", profile, ProfileRequestFor(zigzag, 0),
+      "profile", Code::RESOURCE_EXHAUSTED,
+      "crosses more than " + std::to_string(kMaxCrossings) + " triangle edges");
   add("ProfileOfUnknownDataset", profile,
       ProfileRequestFor({{1, 1}, {2, 2}}, 0, "lava"), "profile",
       Code::NOT_FOUND, "lava");
-  v1::ProfileRequest natural = ProfileRequestFor({{0.2, 0.2}, {0.8, 0.3}}, 0,
-                                                 "lake");
+  v1::ProfileRequest natural =
+      ProfileRequestFor({{0.2, 0.2}, {0.8, 0.3}}, 0, "lake");
   natural.set_interpolation(v1::INTERPOLATION_NATURAL_NEIGHBOR);
   add("ProfileNaturalNeighborOnConstraints", profile, natural, "profile",
       Code::INVALID_ARGUMENT, "needs a Delaunay triangulation");
