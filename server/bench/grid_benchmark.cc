@@ -116,6 +116,8 @@ Status LocatorEndToEnd(const GridBenchOptions& options, const std::string& csv,
                        std::vector<double>* cells) {
   Dataset dataset;
   if (Status s = LoadDataset(csv, &dataset); !s.ok()) return s;
+  // A one-shot job needs no learned start table: Jump&Walk starts each
+  // block's first walk, scanline coherence every other.
   EngineOptions engine_options;
   engine_options.strategy = "jump-and-walk";
   if (Status s = Engine::Create(std::move(dataset), engine_options, engine);

@@ -4,8 +4,9 @@
 // It writes N uniform points of a smooth terrain as CSV (and the OGR VRT
 // gdal_grid reads them through), then times, each --repeats times,
 // alternating:
-//   locator   end to end in this process: parse the CSV, triangulate,
-//             render every cell (rows split over the threads), write a tiled
+//   locator   end to end in this process: parse the CSV, triangulate (the
+//             jump-and-walk strategy: a one-shot job learns nothing), render
+//             every cell (rows split over the threads), write a tiled
 //             GeoTIFF with RasterWriter;
 //   gdal_grid the whole gdal_grid process run on the VRT, writing its
 //             GeoTIFF;
