@@ -1,7 +1,7 @@
 // Fuzzes the HTTP/JSON API's request path: bytes -> an HTTP request to
 // JsonApi (the first byte picks the route and method, the rest is the
-// body) -> JSON parsing, admission, the service's Locate or LocateBatch on
-// a small fixed dataset -> the JSON answer.
+// body) -> JSON parsing, admission, the service's Locate, LocateBatch,
+// Profile or Grid on a small fixed dataset -> the JSON answer.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
@@ -10,7 +10,8 @@
 // protobuf parses, with a finite point and no other dataset, is answered
 // 200 with the engine's own triangle, and every other :locate body 400
 // INVALID_ARGUMENT; and unless a :locateBatch answer has one entry per
-// point.
+// point, a :profile answer's breakpoints come in order with its crossings
+// counted, and a :grid answer holds every cell its header announces.
 
 #include <google/protobuf/struct.pb.h>
 #include <google/protobuf/util/json_util.h>
@@ -49,6 +50,8 @@ constexpr Route kRoutes[] = {
     {"POST", "/v1/datasets/nope:locate"},
     {"POST", "/v1/datasets/default:nope"},
     {"POST", "/v1/elsewhere"},
+    {"POST", "/v1/datasets/default:profile"},
+    {"POST", "/v1/datasets/default:grid"},
 };
 
 [[noreturn]] void Fail(const std::string& what, const std::string& body) {
@@ -67,6 +70,8 @@ Fixture* MakeFixture() {
   auto* f = new Fixture;
   LocatorServiceOptions options;
   options.max_batch_points = 64;
+  options.max_profile_crossings = 20000;
+  options.max_grid_cells = 4096;
   options.datasets = {DatasetConfig{.spec = "fixed"},
                       DatasetConfig{"other", "fixed", true}};
   f->service = std::make_unique<LocatorService>(options);
@@ -160,6 +165,22 @@ void CheckLocate(const Fixture& f, std::string_view body,
   }
 }
 
+// A profile's breakpoints in order along the line, its crossings counted.
+void CheckProfile(const v1::ProfileResponse& profile) {
+  double last = 0;
+  uint64_t crossings = 0;
+  for (const v1::ProfilePoint& p : profile.breakpoints()) {
+    if (p.distance() < last || p.distance() > profile.length()) {
+      Fail(":profile breakpoints out of order", p.ShortDebugString());
+    }
+    last = p.distance();
+    crossings += p.kind() != v1::PROFILE_POINT_KIND_LINE_VERTEX;
+  }
+  if (crossings != profile.crossings()) {
+    Fail(":profile miscounted its crossings", profile.ShortDebugString());
+  }
+}
+
 void FuzzOneInput(const uint8_t* data, size_t size) {
   static Fixture* fixture = MakeFixture();
   if (size == 0) return;
@@ -185,6 +206,16 @@ void FuzzOneInput(const uint8_t* data, size_t size) {
              .ok() ||
         answer.types_size() != sent.xs_size()) {
       Fail(":locateBatch answered another number of points", response.body);
+    }
+  } else if (std::string_view(route.path).ends_with(":profile")) {
+    CheckProfile(ParseAnswer<v1::ProfileResponse>(response));
+  } else if (std::string_view(route.path).ends_with(":grid")) {
+    const auto answer = ParseAnswer<v1::GridResponse>(response);
+    const v1::GridHeader& header = answer.header();
+    if (answer.rows() != header.height() ||
+        answer.values_size() !=
+            int64_t{header.width()} * int64_t{header.height()}) {
+      Fail(":grid answered another number of cells", response.body);
     }
   } else if (std::string_view(route.path) == "/v1/datasets") {
     if (ParseAnswer<v1::ListDatasetsResponse>(response).datasets_size() != 2) {

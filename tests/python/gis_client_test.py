@@ -108,6 +108,45 @@ class GisClientTest(unittest.TestCase):
             self.assertEqual(raised.exception.code, "INVALID_ARGUMENT")
             self.assertIn("EPSG:999999", raised.exception.details)
 
+    def test_profile_in_lon_lat_and_grid_against_the_live_server(self):
+        from locator_client import LocatorClient
+        with LocatorClient(self.server.target) as client:
+            line = [(14.9985, 49.6495), (15.0015, 49.6555)]
+            (x0, y0), (x1, y1) = project(line)
+            lon_lat = client.profile(line, samples=7, crs="EPSG:4326")
+            projected = client.profile([(x0, y0), (x1, y1)], samples=7)
+            # The same line, so the same breakpoints, up to the projection.
+            self.assertEqual(lon_lat.crossings, projected.crossings)
+            self.assertGreater(lon_lat.crossings, 5)
+            self.assertAlmostEqual(lon_lat.length, math.hypot(x1 - x0, y1 - y0),
+                                   delta=1e-6)
+            for a, b in zip(lon_lat.breakpoints, projected.breakpoints):
+                self.assertAlmostEqual(a.value, b.value, delta=1e-6)
+                self.assertEqual(a.triangle_id, b.triangle_id)
+            self.assertEqual(len(lon_lat.samples), 7)
+            self.assertEqual(lon_lat.gaps, ())
+            # Every breakpoint's value is the surface's there.
+            for point in projected.breakpoints:
+                self.assertAlmostEqual(
+                    point.value, client.locate(point.x, point.y).value,
+                    delta=1e-9)
+
+            values, header = client.grid((499500, 5499500, 500500, 5500500),
+                                         width=20, height=10, nodata=-1)
+            self.assertEqual(values.shape, (10, 20))
+            self.assertIn("UTM zone 33N", header.crs_wkt)
+            for row in range(10):
+                for col in range(20):
+                    x = header.box[0] + (col + 0.5) * header.cell_width
+                    y = header.box[3] - (row + 0.5) * header.cell_height
+                    expected = client.locate(x, y).value
+                    self.assertAlmostEqual(values[row, col], expected,
+                                           delta=1e-9)
+            natural, _ = client.grid((499500, 5499500, 500500, 5500500),
+                                     width=20, height=10,
+                                     interpolation="natural-neighbor")
+            self.assertTrue(((natural > 400) & (natural < 451)).all())
+
 
 def main():
     global LOCATORD, PYTHON_DIR, OGR2OGR, CS2CS
