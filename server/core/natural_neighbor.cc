@@ -14,9 +14,6 @@ using Face_handle = Triangulation::Face_handle;
 using Vertex_handle = Triangulation::Vertex_handle;
 using CgalPoint = Triangulation::CgalPoint;
 
-int Ccw(int i) { return i == 2 ? 0 : i + 1; }
-int Cw(int i) { return i == 0 ? 2 : i - 1; }
-
 // An edge of the conflict zone's boundary as CGAL represents it: the face
 // outside the zone (possibly infinite) and the index, in that face, of the
 // corner opposite the edge. Seen from inside the zone the edge runs from

@@ -14,9 +14,6 @@ using Face_handle = Triangulation::Face_handle;
 using Vertex_handle = Triangulation::Vertex_handle;
 using CgalPoint = Triangulation::CgalPoint;
 
-int Ccw(int i) { return i == 2 ? 0 : i + 1; }
-int Cw(int i) { return i == 0 ? 2 : i - 1; }
-
 double Cross(const Point2& o, const Point2& u, const Point2& v) {
   return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
 }

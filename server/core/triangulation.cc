@@ -17,10 +17,6 @@ namespace locator {
 
 namespace {
 
-// Index of corner `i + 1` / `i + 2`, as CGAL's ccw()/cw().
-int Ccw(int i) { return i == 2 ? 0 : i + 1; }
-int Cw(int i) { return i == 0 ? 2 : i - 1; }
-
 bool Contains(const std::array<int64_t, 3>& ids, int64_t id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }

@@ -58,6 +58,10 @@
 
 namespace locator {
 
+// Index of corner i + 1 / i + 2 of a face (0..2), as CGAL's ccw()/cw().
+inline int Ccw(int i) { return i == 2 ? 0 : i + 1; }
+inline int Cw(int i) { return i == 0 ? 2 : i - 1; }
+
 class Triangulation {
  public:
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;

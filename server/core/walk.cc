@@ -13,9 +13,6 @@ namespace {
 
 using Face_handle = Triangulation::Face_handle;
 
-int Ccw(int i) { return i == 2 ? 0 : i + 1; }
-int Cw(int i) { return i == 0 ? 2 : i - 1; }
-
 CGAL::Orientation SideOf(Face_handle f, int i,
                          const Triangulation::CgalPoint& q) {
   return CGAL::orientation(f->vertex(Ccw(i))->point(),

@@ -12,9 +12,6 @@ namespace {
 // Failures AllAgree() describes in full; the rest are only counted.
 constexpr int kReportedFailures = 5;
 
-int Ccw(int i) { return (i + 1) % 3; }
-int Cw(int i) { return (i + 2) % 3; }
-
 CGAL::Orientation Side(const Point2& a, const Point2& b, const Point2& q) {
   return CGAL::orientation(Triangulation::ToCgal(a), Triangulation::ToCgal(b),
                            Triangulation::ToCgal(q));
