@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -155,6 +156,86 @@ TEST_F(LocatordTest, LargeBatchSplitAcrossThreadsMatchesReference) {
   EXPECT_EQ(reference_->Disagreements(points, answers,
                                       /*hull_edge_known=*/false),
             "");
+}
+
+// Grids (streamed in blocks rendered on the server's pool) and profiles,
+// both linear and natural neighbour, while other calls locate: every value
+// is the plane the dataset's values lie on (both interpolations reproduce
+// it), nodata exactly where CGAL finds no value. Under ThreadSanitizer in CI.
+TEST_F(LocatordTest, GridsAndProfilesServeWhileOthersLocate) {
+  constexpr double kTolerance = 1e-9 * 500;
+  auto grids = [this] {
+    auto stub = NewStub(*server_);
+    for (const v1::Interpolation how :
+         {v1::INTERPOLATION_NATURAL_NEIGHBOR, v1::INTERPOLATION_LINEAR}) {
+      v1::GridRequest request;
+      request.mutable_box()->set_min_x(-3);
+      request.mutable_box()->set_min_y(-2);
+      request.mutable_box()->set_max_x(155);
+      request.mutable_box()->set_max_y(62);
+      request.set_width(4096);
+      request.set_height(97);  // 4 blocks of 32 rows
+      request.set_nodata(-1);
+      request.set_interpolation(how);
+      grpc::ClientContext context;
+      auto reader = stub->Grid(&context, request);
+      v1::GridResponse message;
+      v1::GridHeader header;
+      int rows = 0;
+      while (reader->Read(&message)) {
+        if (message.has_header()) header = message.header();
+        rows += message.rows();
+        for (int i = 0; i < message.values_size(); i += 11) {
+          const Point2 q{-3 + (i % 4096 + 0.5) * header.cell_width(),
+                         62 - (message.first_row() + i / 4096 + 0.5) *
+                                  header.cell_height()};
+          const LocateResult want = reference_->Locate(q);
+          EXPECT_NEAR(message.values(i), want.has_value ? TestValue(q) : -1,
+                      kTolerance)
+              << q.x << ", " << q.y;
+        }
+      }
+      EXPECT_TRUE(reader->Finish().ok());
+      EXPECT_EQ(rows, 97);
+    }
+  };
+  auto profiles = [this] {
+    auto stub = NewStub(*server_);
+    for (int i = 0; i < 20; ++i) {
+      v1::ProfileRequest request;
+      for (const Point2& p : {Point2{0.5 + i, 3.25}, Point2{140.5, 55.0 - i}}) {
+        v1::Point* vertex = request.add_vertices();
+        vertex->set_x(p.x);
+        vertex->set_y(p.y);
+      }
+      request.set_samples(9);
+      request.set_interpolation(i % 2 ? v1::INTERPOLATION_NATURAL_NEIGHBOR
+                                      : v1::INTERPOLATION_LINEAR);
+      grpc::ClientContext context;
+      v1::ProfileResponse response;
+      ASSERT_TRUE(stub->Profile(&context, request, &response).ok());
+      EXPECT_GT(response.crossings(), 100u);
+      for (const v1::ProfilePoint& p : response.breakpoints()) {
+        if (!p.has_value()) continue;
+        EXPECT_NEAR(p.value(), TestValue({p.point().x(), p.point().y()}),
+                    kTolerance);
+      }
+    }
+  };
+  std::thread grid_thread(grids);
+  std::thread profile_thread(profiles);
+  const v1::LocateBatchRequest request = BatchRequestFor(*queries_);
+  v1::LocateBatchResponse response;
+  ASSERT_TRUE(LocateBatch(request, &response).ok());
+  std::vector<LocateResult> answers;
+  for (size_t row = 0; row < queries_->size(); ++row) {
+    answers.push_back(FromBatchRow(response, row));
+  }
+  EXPECT_EQ(reference_->Disagreements(*queries_, answers,
+                                      /*hull_edge_known=*/false),
+            "");
+  grid_thread.join();
+  profile_thread.join();
 }
 
 TEST_F(LocatordTest, StreamAnswersMatchReferenceInOrder) {
