@@ -3,7 +3,6 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +17,7 @@
 
 #include "common/gis/gdal_support.h"
 #include "common/gis/raster_writer.h"
+#include "server/bench/stopwatch.h"
 #include "server/bench/surface_terrain.h"
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
@@ -26,12 +26,6 @@ namespace locator::bench {
 namespace {
 
 constexpr double kNodata = -9999;
-
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Writes the CSV and the VRT; *z_range is the range of the heights.
 Status WriteInputs(const GridBenchOptions& options, const std::string& csv,
@@ -100,7 +94,8 @@ Status WriteGeoTiff(const RasterSpec& spec, const std::vector<double>& cells,
                                .box = spec.box,
                                .cell_width = spec.cell_width(),
                                .cell_height = spec.cell_height(),
-                               .nodata = spec.nodata};
+                               .nodata = spec.nodata,
+                               .crs_wkt = ""};
   if (Status s =
           gis::RasterWriter::Open(path, shape, {.driver = "GTiff"}, &writer);
       !s.ok()) {
@@ -210,16 +205,16 @@ Status RunGridBenchmark(const GridBenchOptions& options, std::ostream& out) {
   std::vector<double> cells;
   std::vector<double> locator_s, gdal_s;
   for (int i = 0; i < options.repeats; ++i) {
-    auto start = Clock::now();
+    Stopwatch watch;
     engine.reset();
     if (Status s = LocatorEndToEnd(options, csv, ours, &engine, &cells);
         !s.ok()) {
       return s;
     }
-    locator_s.push_back(SecondsSince(start));
-    start = Clock::now();
+    locator_s.push_back(watch.Seconds());
+    watch.Restart();
     if (Status s = RunGdalGrid(options, vrt, theirs); !s.ok()) return s;
-    gdal_s.push_back(SecondsSince(start));
+    gdal_s.push_back(watch.Seconds());
     out << "run " << i + 1 << ": locator end to end " << locator_s.back()
         << " s (build " << engine->dataset_info().build_seconds
         << " s), gdal_grid -a linear " << gdal_s.back() << " s, ratio "
@@ -227,11 +222,11 @@ Status RunGridBenchmark(const GridBenchOptions& options, std::ostream& out) {
   }
   const RasterSpec spec = SpecFor(options);
   std::vector<double> again;
-  const auto start = Clock::now();
+  const Stopwatch render_watch;
   if (Status s = RenderAll(*engine, spec, options.threads, &again); !s.ok()) {
     return s;
   }
-  const double render_s = SecondsSince(start);
+  const double render_s = render_watch.Seconds();
   out << "locator render only (engine built): " << render_s << " s, "
       << spec.cells() / render_s / 1e6 << " M cells/s\n";
   Comparison c;

@@ -1,24 +1,18 @@
 #include "server/bench/profile_benchmark.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <memory>
 #include <random>
 #include <vector>
 
+#include "server/bench/stopwatch.h"
 #include "server/bench/surface_terrain.h"
 #include "server/core/engine.h"
 
 namespace locator::bench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 Status BuildTerrain(const SurfaceBenchOptions& options,
                     std::unique_ptr<Engine>* engine) {
@@ -75,7 +69,7 @@ Status RunProfileBenchmark(const SurfaceBenchOptions& options,
     }
     uint64_t breakpoints = 0, crossings = 0;
     Profile profile;
-    const auto start = Clock::now();
+    const Stopwatch watch;
     for (const std::vector<Point2>& line : polylines) {
       if (Status s = engine->TraceProfile(line, profile_options, &profile);
           !s.ok()) {
@@ -84,7 +78,7 @@ Status RunProfileBenchmark(const SurfaceBenchOptions& options,
       breakpoints += profile.breakpoints.size();
       crossings += profile.crossings;
     }
-    const double seconds = SecondsSince(start);
+    const double seconds = watch.Seconds();
     out << std::fixed << std::setprecision(0) << std::setw(16) << target
         << " | " << std::setw(5) << lines << " | " << std::setw(14)
         << static_cast<double>(crossings) / lines << " | " << std::setw(13)
@@ -116,21 +110,21 @@ Status RunInterpolationBenchmark(const SurfaceBenchOptions& options,
     // Two passes; the second is timed (the first warms the tuning).
     double point_ns = 0;
     for (int pass = 0; pass < 2; ++pass) {
-      const auto start = Clock::now();
+      const Stopwatch watch;
       if (Status s = engine->LocateBatch(queries, &results, nullptr, how);
           !s.ok()) {
         return s;
       }
-      point_ns = SecondsSince(start) * 1e9 / queries.size();
+      point_ns = watch.Seconds() * 1e9 / queries.size();
     }
     RasterSpec spec = raster;
     spec.interpolation = how;
-    const auto start = Clock::now();
+    const Stopwatch watch;
     if (Status s = engine->RenderRows(spec, 0, spec.height, cells.data());
         !s.ok()) {
       return s;
     }
-    const double cell_ns = SecondsSince(start) * 1e9 / spec.cells();
+    const double cell_ns = watch.Seconds() * 1e9 / spec.cells();
     if (how == Interpolation::kLinear) {
       linear_point_ns = point_ns;
       linear_cell_ns = cell_ns;
