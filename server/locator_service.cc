@@ -175,15 +175,15 @@ void LocatorService::RunLocateBatch(Admission call,
                                     const v1::LocateBatchRequest& request,
                                     BatchLocator::CallControl control,
                                     v1::LocateBatchResponse* response) {
-  // Points in another CRS are validated first (an oversized batch must not
-  // pay for a transform), then transformed once, into a copy that the
-  // function holds.
   Interpolation how;
   if (Status status = FromInterpolation(request.interpolation(), &how);
       !status.ok()) {
     control.finish(ToGrpcStatus(status));
     return;
   }
+  // Points in another CRS are validated first (an oversized batch must not
+  // pay for a transform), then transformed once, into a copy that the
+  // function holds.
   std::shared_ptr<v1::LocateBatchRequest> in_dataset_crs;
   if (!request.crs().empty()) {
     in_dataset_crs = std::make_shared<v1::LocateBatchRequest>();
