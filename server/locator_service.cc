@@ -196,13 +196,19 @@ void LocatorService::RunLocateBatch(Admission call,
       return;
     }
   }
+  // Barycentrics and values are computed only when asked for.
+  const Detail detail =
+      request.include_barycentric() || request.include_values()
+          ? Detail::kFull
+          : Detail::kLocation;
   // The function (and with it the admission) lives until the batch ends.
   batch_locator_.Run(
       in_dataset_crs ? *in_dataset_crs : request,
-      [call = std::move(call), in_dataset_crs, how](
+      [call = std::move(call), in_dataset_crs, how, detail](
           std::span<const Point2> points, std::vector<LocateResult>* results,
           const std::function<bool()>& keep_going) {
-        return call.engine->LocateBatch(points, results, keep_going, how);
+        return call.engine->LocateBatch(points, results, keep_going, how,
+                                        detail);
       },
       std::move(control), response);
 }

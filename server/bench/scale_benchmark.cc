@@ -78,7 +78,7 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
       for (const std::string& strategy : StrategyNames()) {
         start = std::chrono::steady_clock::now();
         std::unique_ptr<PointLocator> locator;
-        s = MakePointLocator(strategy, *t, o.tuning, &locator);
+        s = MakePointLocator(strategy, t->mesh(), o.tuning, &locator);
         if (!s.ok()) return s;
         const double build_ns = NanosSince(start);
         LocateAll(*locator, warm, nullptr);

@@ -6,13 +6,11 @@
 #include <unordered_set>
 
 #include "server/core/hot_regions.h"
-#include "server/core/walk.h"
+#include "server/core/mesh_walk.h"
 
 namespace locator {
 
 namespace {
-
-using Face_handle = Triangulation::Face_handle;
 
 // "Slightly fatter": each side grows by this fraction of the rectangle.
 constexpr double kFatten = 0.1;
@@ -22,21 +20,20 @@ bool Intersects(const BoundingBox& a, const BoundingBox& b) {
          b.min_y <= a.max_y;
 }
 
-BoundingBox FaceBox(Face_handle f) {
+BoundingBox FaceBox(const ServingMesh& mesh, uint32_t f) {
   BoundingBox b;
-  for (int i = 0; i < 3; ++i)
-    b.Extend(Triangulation::FromCgal(f->vertex(i)->point()));
+  for (int i = 0; i < 3; ++i) b.Extend(mesh.CornerPoint(f, i));
   return b;
 }
 
 }  // namespace
 
-AdaptivePaperLocator::AdaptivePaperLocator(const Triangulation& t,
+AdaptivePaperLocator::AdaptivePaperLocator(const ServingMesh& mesh,
                                            const TuningOptions& options)
-    : t_(t),
+    : mesh_(mesh),
       options_(options),
-      fallback_(t),
-      histogram_(GridGeometry(t.bounding_box(), options.grid_size)) {}
+      fallback_(mesh),
+      histogram_(GridGeometry(mesh.bounding_box(), options.grid_size)) {}
 
 void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
   const Samples* s = samples_.Get();
@@ -66,7 +63,7 @@ void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
     }
   }
   result->cost = LocateCost();
-  WalkAndDescribe(t_, s->faces[best], q, result);
+  WalkAndDescribe(mesh_, s->faces[best], q, result);
   result->cost.comparisons = static_cast<uint32_t>(s->points.size());
 }
 
@@ -96,36 +93,34 @@ void AdaptivePaperLocator::SampleRegion(const BoundingBox& fat,
   // samples uniformly without replacement. Same distribution as the paper's
   // rejection sampling, with a bounded running time.
   const Point2 centre{(fat.min_x + fat.max_x) / 2, (fat.min_y + fat.max_y) / 2};
-  const Face_handle seed = FaceNear(t_, t_.DefaultStart(), centre);
-  std::vector<std::pair<Point2, Face_handle>> edges;
-  std::unordered_set<const void*> seen{&*seed};
-  std::queue<Face_handle> frontier;
+  const uint32_t seed = FaceNear(mesh_, mesh_.DefaultStart(), centre);
+  std::vector<std::pair<Point2, uint32_t>> edges;
+  std::unordered_set<uint32_t> seen{seed};
+  std::queue<uint32_t> frontier;
   frontier.push(seed);
   while (!frontier.empty()) {
-    const Face_handle f = frontier.front();
+    const uint32_t f = frontier.front();
     frontier.pop();
     for (int i = 0; i < 3; ++i) {
-      const Face_handle n = f->neighbor(i);
-      const bool infinite = t_.IsInfinite(n);
-      // Each edge once: from the face with the smaller id, or the hull side.
-      if (infinite || f->info() < n->info()) {
-        const Point2 a =
-            Triangulation::FromCgal(f->vertex((i + 1) % 3)->point());
-        const Point2 b =
-            Triangulation::FromCgal(f->vertex((i + 2) % 3)->point());
+      const uint32_t n = mesh_.Neighbor(f, i);
+      const bool hull = ServingMesh::IsHull(n);
+      // Each edge once: from the face with the smaller index, or the hull
+      // side.
+      if (hull || f < n) {
+        const Point2& a = mesh_.CornerPoint(f, Ccw(i));
+        const Point2& b = mesh_.CornerPoint(f, Cw(i));
         const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
         if (fat.Contains(mid)) edges.emplace_back(mid, f);
       }
-      if (!infinite && !seen.count(&*n) && Intersects(FaceBox(n), fat)) {
-        seen.insert(&*n);
+      if (!hull && !seen.count(n) && Intersects(FaceBox(mesh_, n), fat)) {
+        seen.insert(n);
         frontier.push(n);
       }
     }
   }
   if (edges.empty()) {
     // The rectangle lies outside the hull: start from the nearest hull face.
-    const Point2 a = Triangulation::FromCgal(seed->vertex(0)->point());
-    edges.emplace_back(a, seed);
+    edges.emplace_back(mesh_.CornerPoint(seed, 0), seed);
   }
   std::mt19937_64 rng(options_.seed + out->points.size());
   const size_t k = std::min<size_t>(edges.size(), options_.samples_per_region);
@@ -151,7 +146,7 @@ TuningSummary AdaptivePaperLocator::Summary() const {
   sum.start_point_count = s->points.size();
   sum.memory_bytes =
       histogram_.MemoryBytes() + s->points.capacity() * sizeof(Point2) +
-      s->faces.capacity() * sizeof(Face_handle) +
+      s->faces.capacity() * sizeof(uint32_t) +
       (s->regions.capacity() + s->fat.capacity()) * sizeof(BoundingBox);
   return sum;
 }

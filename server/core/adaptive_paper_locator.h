@@ -24,16 +24,16 @@
 #include "server/core/jump_and_walk_locator.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
+#include "server/core/serving_mesh.h"
 #include "server/core/snapshot_slot.h"
-#include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 
 namespace locator {
 
 class AdaptivePaperLocator : public PointLocator {
  public:
-  // `t` must outlive the locator.
-  AdaptivePaperLocator(const Triangulation& t, const TuningOptions& options);
+  // `mesh` must outlive the locator.
+  AdaptivePaperLocator(const ServingMesh& mesh, const TuningOptions& options);
 
   void Locate(const Point2& q, LocateResult* result) const override;
   std::string_view name() const override { return "adaptive-paper"; }
@@ -47,14 +47,14 @@ class AdaptivePaperLocator : public PointLocator {
     std::vector<BoundingBox> regions;  // hot rectangles
     std::vector<BoundingBox> fat;      // the fatter copies sampled from
     std::vector<Point2> points;        // sample edge midpoints
-    std::vector<Triangulation::Face_handle> faces;  // parallel to points
+    std::vector<uint32_t> faces;       // parallel to points
   };
 
   // Builds and publishes samples from the histogram counted so far.
   void Tune() const EXCLUDES(tune_mu_);
   void SampleRegion(const BoundingBox& fat, Samples* out) const;
 
-  const Triangulation& t_;
+  const ServingMesh& mesh_;
   const TuningOptions options_;
   JumpAndWalkLocator fallback_;
   mutable QueryHistogram histogram_;

@@ -67,4 +67,16 @@ std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
   return result;
 }
 
+std::array<double, 3> EdgeBarycentric(const std::array<Point2, 3>& corners,
+                                      int edge, const Point2& q) {
+  auto b = Barycentric(corners[0], corners[1], corners[2], q);
+  const int next = edge == 2 ? 0 : edge + 1;
+  const int prev = edge == 0 ? 2 : edge - 1;
+  b[edge] = 0;
+  const double sum = b[next] + b[prev];
+  b[next] /= sum;
+  b[prev] /= sum;
+  return b;
+}
+
 }  // namespace locator

@@ -19,6 +19,12 @@ namespace locator {
 std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
                                   const Point2& c, const Point2& q);
 
+// Barycentric coordinates of q on edge `edge` (opposite that corner) of the
+// triangle `corners`: 0 for the opposite corner, the other two renormalised
+// to sum to 1.
+std::array<double, 3> EdgeBarycentric(const std::array<Point2, 3>& corners,
+                                      int edge, const Point2& q);
+
 }  // namespace locator
 
 #endif  // LOCATOR_CORE_BARYCENTRIC_H_

@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "server/core/hilbert.h"
 #include "server/core/locator_factory.h"
 #include "server/core/triangulation.h"
 
@@ -41,7 +42,8 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   if (!s.ok()) return s;
   const Triangulation& t = *e->triangulation_;
   e->outline_ = OutlineOf(t, kOutlineSize);
-  s = MakePointLocator(options.strategy, t, options.tuning, &e->locator_);
+  s = MakePointLocator(options.strategy, t.mesh(), options.tuning,
+                       &e->locator_);
   if (!s.ok()) return s;
   DatasetInfo& info = e->info_;
   info.source = std::move(dataset.source);
@@ -55,7 +57,7 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   info.bounding_box = t.bounding_box();
   info.has_values = t.has_values();
   info.crs = std::move(dataset.crs);
-  info.triangulation_bytes = t.MemoryBytes();
+  info.triangulation_bytes = t.MemoryBytes() + t.mesh().MemoryBytes();
   info.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -94,23 +96,29 @@ Status Engine::Locate(const Point2& q, LocateResult* result,
 Status Engine::LocateBatch(std::span<const Point2> queries,
                            std::vector<LocateResult>* results,
                            const std::function<bool()>& keep_going,
-                           Interpolation how) const {
+                           Interpolation how, Detail detail) const {
   for (size_t i = 0; i < queries.size(); ++i) {
     if (Status s = CheckBatchPoint(queries[i], i); !s.ok()) return s;
   }
   if (Status s = CheckInterpolation(how); !s.ok()) return s;
   results->resize(queries.size());
+  const std::vector<uint32_t> order = HilbertOrder(queries, info_.bounding_box);
+  Point2 sorted[kBatchChunk];
+  std::vector<LocateResult> located(kBatchChunk);
   for (size_t begin = 0; begin < queries.size(); begin += kBatchChunk) {
     if (keep_going && !keep_going()) return Status::Unavailable("cancelled");
-    const size_t end = std::min(queries.size(), begin + kBatchChunk);
-    locator_->LocateMany(queries.subspan(begin, end - begin),
-                         results->data() + begin);
-    Reinterpolate(queries.subspan(begin, end - begin), how,
-                  results->data() + begin);
+    const size_t count = std::min(queries.size() - begin, kBatchChunk);
+    for (size_t i = 0; i < count; ++i) sorted[i] = queries[order[begin + i]];
+    const std::span<const Point2> chunk(sorted, count);
+    locator_->LocateMany(chunk, located.data(), detail);
+    Reinterpolate(chunk, how, located.data());
     uint64_t cost = 0;
-    for (size_t i = begin; i < end; ++i) cost += (*results)[i].cost.total();
-    Record(end - begin, cost);
-    walk_costs_.AddAll(std::span(*results).subspan(begin, end - begin));
+    for (size_t i = 0; i < count; ++i) cost += located[i].cost.total();
+    Record(count, cost);
+    walk_costs_.AddAll(std::span(located).first(count));
+    for (size_t i = 0; i < count; ++i) {
+      (*results)[order[begin + i]] = located[i];
+    }
   }
   return Status::OK();
 }

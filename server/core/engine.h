@@ -1,6 +1,7 @@
-// Engine: a dataset's triangulation plus the locator strategy answering on
-// it, with query validation and serving statistics. This is the one entry
-// point the service and tools use; it exposes plain types only (no CGAL).
+// Engine: a dataset's triangulation (CGAL's, and the serving mesh derived
+// from it) plus the locator strategy answering on the mesh, with query
+// validation and serving statistics. This is the one entry point the service
+// and tools use; it exposes plain types only (no CGAL).
 //
 // Thread-safety: all const methods and Retune() may be called concurrently.
 // Invariant: the triangulation is immutable once Create() returns.
@@ -105,11 +106,15 @@ class Engine {
   // whole call with InvalidArgument naming its index, and nothing is located.
   // `keep_going`, if set, is polled between chunks; returning false stops the
   // batch with Unavailable("cancelled").
-  // Values are interpolated `how` (InvalidArgument as CheckInterpolation).
+  // Values are interpolated `how` (InvalidArgument as CheckInterpolation);
+  // with Detail::kLocation no barycentric or value is computed. Points are
+  // located along a Hilbert curve, each walk starting near the previous
+  // answer; at most 2^32 - 1 points.
   Status LocateBatch(std::span<const Point2> queries,
                      std::vector<LocateResult>* results,
                      const std::function<bool()>& keep_going = nullptr,
-                     Interpolation how = Interpolation::kLinear) const;
+                     Interpolation how = Interpolation::kLinear,
+                     Detail detail = Detail::kFull) const;
 
   // OK if this dataset's values can be interpolated `how`; InvalidArgument
   // saying why not (natural neighbour needs a dataset without constraints).

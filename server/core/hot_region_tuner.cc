@@ -16,16 +16,17 @@ constexpr double kMaxCrossingRatio = 1e4;
 
 }  // namespace
 
-HotRegionTuner::HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
+HotRegionTuner::HotRegionTuner(const ServingMesh& mesh,
+                               const GridGeometry& grid,
                                const TuningOptions& options, size_t fixed_bytes)
-    : t_(t),
+    : mesh_(mesh),
       grid_(grid),
       options_(options),
       counts_(grid.cells(), 0.0),
       points_(grid.cells(), 0.0),
       crossing_ratio_(grid.cells(), 1.0),
       planned_share_(grid.cells(), 1.0 / grid.cells()) {
-  budget_ = Budget(t, options);
+  budget_ = Budget(mesh, options);
   // The owner's histogram, our per-cell arrays, the snapshot's histogram
   // copy and hot flags, and the coarse table are paid first; what is left
   // buys sub-grid starts.
@@ -34,11 +35,7 @@ HotRegionTuner::HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
                        grid.cells() * StartTable::kBytesPerCell;
   leaf_budget_ =
       budget_ > fixed ? (budget_ - fixed) / StartTable::kBytesPerStart : 0;
-  const auto& dt = t.cgal();
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end();
-       ++v) {
-    points_[grid.CellOf(Triangulation::FromCgal(v->point()))] += 1;
-  }
+  for (const Point2& p : mesh.arrays().points) points_[grid.CellOf(p)] += 1;
   MeasureCrossingRatios();
 }
 
@@ -48,17 +45,19 @@ void HotRegionTuner::MeasureCrossingRatios() {
   const size_t cells = grid_.cells();
   std::vector<double> sum_dx(cells, 0.0), sum_dy(cells, 0.0);
   double all_dx = 0, all_dy = 0;
-  const auto& dt = t_.cgal();
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const Point2 a =
-        Triangulation::FromCgal(e->first->vertex(dt.cw(e->second))->point());
-    const Point2 b =
-        Triangulation::FromCgal(e->first->vertex(dt.ccw(e->second))->point());
-    const size_t c = grid_.CellOf({(a.x + b.x) / 2, (a.y + b.y) / 2});
-    sum_dx[c] += std::abs(a.x - b.x);
-    sum_dy[c] += std::abs(a.y - b.y);
-    all_dx += std::abs(a.x - b.x);
-    all_dy += std::abs(a.y - b.y);
+  // Each edge once: from the face with the smaller index, or the hull side.
+  for (uint32_t f = 0; f < mesh_.num_faces(); ++f) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t n = mesh_.Neighbor(f, i);
+      if (!ServingMesh::IsHull(n) && n < f) continue;
+      const Point2& a = mesh_.CornerPoint(f, Ccw(i));
+      const Point2& b = mesh_.CornerPoint(f, Cw(i));
+      const size_t c = grid_.CellOf({(a.x + b.x) / 2, (a.y + b.y) / 2});
+      sum_dx[c] += std::abs(a.x - b.x);
+      sum_dy[c] += std::abs(a.y - b.y);
+      all_dx += std::abs(a.x - b.x);
+      all_dy += std::abs(a.y - b.y);
+    }
   }
   const double aspect = grid_.cell_width() / grid_.cell_height();
   for (size_t c = 0; c < cells; ++c) {
@@ -92,12 +91,12 @@ std::vector<SubGrid> HotRegionTuner::Shapes(
   return shapes;
 }
 
-size_t HotRegionTuner::Budget(const Triangulation& t,
+size_t HotRegionTuner::Budget(const ServingMesh& mesh,
                               const TuningOptions& options) {
   return options.budget_bytes > 0
              ? options.budget_bytes
              : static_cast<size_t>(options.budget_fraction *
-                                   static_cast<double>(t.MemoryBytes()));
+                                   static_cast<double>(mesh.MemoryBytes()));
 }
 
 int HotRegionTuner::CoarseGridSize(size_t budget, int max_grid) {
@@ -264,7 +263,7 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
   }
   if (!keep) {
     table_ =
-        std::make_shared<StartTable>(t_, grid_, Shapes(plan), table_.get());
+        std::make_shared<StartTable>(mesh_, grid_, Shapes(plan), table_.get());
     levels_ = plan;
     planned_share_ = share;
   }
@@ -273,8 +272,8 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
 
 TuningFingerprint HotRegionTuner::Fingerprint(std::string_view strategy) const {
   TuningFingerprint fingerprint;
-  fingerprint.dataset_digest = t_.VertexDigest();
-  fingerprint.input_points = t_.input_points();
+  fingerprint.dataset_digest = mesh_.digest();
+  fingerprint.input_points = mesh_.input_points();
   fingerprint.strategy = std::string(strategy);
   fingerprint.grid_size = static_cast<uint32_t>(grid_.size());
   fingerprint.grid_box = grid_.box();
@@ -287,10 +286,10 @@ void HotRegionTuner::ExportState(TuningState* state) const {
   state->histogram = counts_;
   state->planned_share = planned_share_;
   state->levels = levels_;
-  const std::vector<StartTable::Face_handle> faces = table_->Starts();
+  const std::vector<StartTable::Face> faces = table_->Starts();
   state->starts.resize(faces.size());
   for (size_t i = 0; i < faces.size(); ++i) {
-    state->starts[i] = t_.CornerIds(faces[i]);
+    state->starts[i] = mesh_.CornerIds(faces[i]);
   }
 }
 
@@ -318,10 +317,11 @@ Status HotRegionTuner::Restore(
         "tuning state has " + std::to_string(state.starts.size()) +
         " starts, its levels need " + std::to_string(implied));
   }
-  std::vector<StartTable::Face_handle> faces(state.starts.size());
+  const std::vector<StartTable::Face> faces =
+      mesh_.FacesWithCorners(state.starts);
   for (size_t i = 0; i < faces.size(); ++i) {
-    const auto& ids = state.starts[i];
-    if (!t_.FaceWithCorners(ids, &faces[i])) {
+    if (faces[i] == ServingMesh::kNoFace) {
+      const auto& ids = state.starts[i];
       return Status::InvalidArgument(
           "tuning state start " + std::to_string(i) + ": vertices " +
           std::to_string(ids[0]) + ", " + std::to_string(ids[1]) + ", " +

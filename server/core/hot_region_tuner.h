@@ -42,8 +42,8 @@
 #include <vector>
 
 #include "server/core/query_histogram.h"
+#include "server/core/serving_mesh.h"
 #include "server/core/start_table.h"
-#include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 #include "server/core/tuning_state.h"
 
@@ -75,15 +75,15 @@ class HotRegionTuner {
       QueryHistogram::kShards * sizeof(uint32_t) + 3 * sizeof(double) + 1 +
       StartTable::kBytesPerCell;
 
-  // The memory budget for `t` under `options`, in bytes.
-  static size_t Budget(const Triangulation& t, const TuningOptions& options);
+  // The memory budget for `mesh` under `options`, in bytes.
+  static size_t Budget(const ServingMesh& mesh, const TuningOptions& options);
   // The largest coarse grid <= max_grid whose bookkeeping takes at most a
   // quarter of `budget` (at least 4): a tiny budget buys starts, not cells.
   static int CoarseGridSize(size_t budget, int max_grid);
 
-  // `t` must outlive the tuner. `fixed_bytes` is the memory the owner spends
+  // `mesh` must outlive the tuner. `fixed_bytes` is the memory the owner spends
   // outside the snapshot's table (counted against the budget).
-  HotRegionTuner(const Triangulation& t, const GridGeometry& grid,
+  HotRegionTuner(const ServingMesh& mesh, const GridGeometry& grid,
                  const TuningOptions& options, size_t fixed_bytes);
 
   // Folds the counts since the last call into the decayed histogram.
@@ -131,7 +131,7 @@ class HotRegionTuner {
   // Fills crossing_ratio_ from the triangulation's edges.
   void MeasureCrossingRatios();
 
-  const Triangulation& t_;
+  const ServingMesh& mesh_;
   const GridGeometry grid_;
   const TuningOptions options_;
   size_t budget_;

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "server/core/fast_random.h"
-#include "server/core/walk.h"
+#include "server/core/mesh_walk.h"
 
 namespace locator {
 
@@ -17,23 +17,23 @@ uint32_t CubeRootCeil(size_t n) {
 
 }  // namespace
 
-JumpAndWalkLocator::JumpAndWalkLocator(const Triangulation& t)
-    : t_(t), m_(CubeRootCeil(t.num_vertices())) {}
+JumpAndWalkLocator::JumpAndWalkLocator(const ServingMesh& mesh)
+    : mesh_(mesh), m_(CubeRootCeil(mesh.num_vertices())) {}
 
 void JumpAndWalkLocator::Locate(const Point2& q, LocateResult* result) const {
-  const size_t n = t_.input_points();
-  Triangulation::Vertex_handle best = t_.VertexOfInput(ThreadRandom() % n);
-  double best_d2 = SquaredDistance(Triangulation::FromCgal(best->point()), q);
+  const size_t n = mesh_.num_faces();
+  auto best = static_cast<uint32_t>(ThreadRandom() % n);
+  double best_d2 = SquaredDistance(mesh_.CornerPoint(best, 0), q);
   for (uint32_t k = 1; k < m_; ++k) {
-    const auto v = t_.VertexOfInput(ThreadRandom() % n);
-    const double d2 = SquaredDistance(Triangulation::FromCgal(v->point()), q);
+    const auto f = static_cast<uint32_t>(ThreadRandom() % n);
+    const double d2 = SquaredDistance(mesh_.CornerPoint(f, 0), q);
     if (d2 < best_d2) {
       best_d2 = d2;
-      best = v;
+      best = f;
     }
   }
   result->cost = LocateCost();
-  WalkAndDescribe(t_, t_.FiniteFaceAt(best), q, result);
+  WalkAndDescribe(mesh_, best, q, result);
   result->cost.comparisons = m_;
 }
 

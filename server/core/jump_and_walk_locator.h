@@ -1,6 +1,9 @@
 // Strategy "jump-and-walk" (Mücke, Saias & Zhu): per query, sample
-// m = ceil(n^(1/3)) vertices at random, and walk from the one closest to the
-// query. No preprocessing; expected O(n^(1/3)) cost on uniform data.
+// m = ceil(n^(1/3)) points at random, and walk from the one closest to the
+// query. No preprocessing; expected O(n^(1/3)) cost on uniform data. The
+// samples are the first corners of m random triangles: the mesh keeps no
+// vertex-to-triangle index, and triangles are spread like the points (about
+// two per point), so the samples are too.
 //
 // Thread-safety: stateless apart from thread-local random bits.
 
@@ -10,24 +13,24 @@
 #include <cstdint>
 
 #include "server/core/point_locator.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
 class JumpAndWalkLocator : public PointLocator {
  public:
-  // `t` must outlive the locator.
-  explicit JumpAndWalkLocator(const Triangulation& t);
+  // `mesh` must outlive the locator.
+  explicit JumpAndWalkLocator(const ServingMesh& mesh);
 
   void Locate(const Point2& q, LocateResult* result) const override;
   std::string_view name() const override { return "jump-and-walk"; }
   TuningSummary Summary() const override { return TuningSummary(); }
 
-  // Number of vertices sampled per query.
+  // Number of points sampled per query.
   uint32_t sample_size() const { return m_; }
 
  private:
-  const Triangulation& t_;
+  const ServingMesh& mesh_;
   const uint32_t m_;
 };
 

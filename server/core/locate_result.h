@@ -35,6 +35,12 @@ enum class LocationType : uint8_t {
 
 std::string_view LocationTypeName(LocationType type);
 
+// How much of a LocateResult a locate fills.
+enum class Detail : uint8_t {
+  kFull,      // everything
+  kLocation,  // all but barycentric and value (zeros, has_value false)
+};
+
 // Cost of one query in the paper's metric: faces visited by the walk plus
 // distance comparisons made to pick a start, plus one per O(1) table lookup.
 struct LocateCost {

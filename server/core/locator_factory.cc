@@ -7,20 +7,20 @@
 
 namespace locator {
 
-Status MakePointLocator(std::string_view name, const Triangulation& t,
+Status MakePointLocator(std::string_view name, const ServingMesh& mesh,
                         const TuningOptions& options,
                         std::unique_ptr<PointLocator>* out) {
   Status s = ValidateStrategy(name);
   if (s.ok()) s = ValidateTuningOptions(options);
   if (!s.ok()) return s;
   if (name == "walk") {
-    *out = std::make_unique<WalkLocator>(t);
+    *out = std::make_unique<WalkLocator>(mesh);
   } else if (name == "jump-and-walk") {
-    *out = std::make_unique<JumpAndWalkLocator>(t);
+    *out = std::make_unique<JumpAndWalkLocator>(mesh);
   } else if (name == "adaptive-paper") {
-    *out = std::make_unique<AdaptivePaperLocator>(t, options);
+    *out = std::make_unique<AdaptivePaperLocator>(mesh, options);
   } else {
-    *out = std::make_unique<SelfTuningLocator>(t, options);
+    *out = std::make_unique<SelfTuningLocator>(mesh, options);
   }
   return Status::OK();
 }

@@ -10,15 +10,15 @@
 
 #include "common/status.h"
 #include "server/core/point_locator.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 #include "server/core/tuning_options.h"
 
 namespace locator {
 
-// Builds the strategy `name` (see StrategyNames()) over `t`, which must
+// Builds the strategy `name` (see StrategyNames()) over `mesh`, which must
 // outlive it. InvalidArgument naming the valid strategies for an unknown
 // name, or for tuning options out of range.
-Status MakePointLocator(std::string_view name, const Triangulation& t,
+Status MakePointLocator(std::string_view name, const ServingMesh& mesh,
                         const TuningOptions& options,
                         std::unique_ptr<PointLocator>* out);
 

@@ -73,9 +73,12 @@ class PointLocator {
   virtual void Locate(const Point2& q, LocateResult* result) const = 0;
 
   // Locates queries[i] into results[i] for every i; same preconditions.
-  // Strategies override it to amortise per-call work over the batch.
+  // Strategies override it to amortise per-call work over the batch, to
+  // fill only `detail`, and to start each walk from the previous answer
+  // when that is nearer (callers sort batches along a space-filling curve).
   virtual void LocateMany(std::span<const Point2> queries,
-                          LocateResult* results) const {
+                          LocateResult* results,
+                          Detail /*detail*/ = Detail::kFull) const {
     for (size_t i = 0; i < queries.size(); ++i) Locate(queries[i], &results[i]);
   }
 

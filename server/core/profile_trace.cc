@@ -87,8 +87,8 @@ class ProfileBuilder {
         }
         // The last point has no stretch after it: the face it ends in.
         point.triangle_id = j < stretches_.size()
-                                ? (after == none ? -1 : after->info())
-                                : face->info();
+                                ? (after == none ? -1 : t_.TriangleId(after))
+                                : t_.TriangleId(face);
       }
       out->breakpoints.push_back(point);
       if (point.kind != ProfilePointKind::kLineVertex) ++out->crossings;
@@ -185,7 +185,7 @@ class ProfileBuilder {
       }
       const Face_handle face = stretches_[k].face;
       if (face != Face_handle()) {
-        sample.triangle_id = face->info();
+        sample.triangle_id = t_.TriangleId(face);
         if (t_.has_values()) {
           sample.has_value = true;
           sample.value =

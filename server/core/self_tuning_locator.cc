@@ -1,7 +1,7 @@
 #include "server/core/self_tuning_locator.h"
 
 #include "server/core/hot_regions.h"
-#include "server/core/walk.h"
+#include "server/core/mesh_walk.h"
 
 namespace locator {
 
@@ -18,15 +18,15 @@ constexpr size_t kSummaryStartPoints = 2000;
 
 }  // namespace
 
-SelfTuningLocator::SelfTuningLocator(const Triangulation& t,
+SelfTuningLocator::SelfTuningLocator(const ServingMesh& mesh,
                                      const TuningOptions& options)
-    : t_(t),
+    : mesh_(mesh),
       options_(options),
       histogram_(GridGeometry(
-          t.bounding_box(),
-          HotRegionTuner::CoarseGridSize(HotRegionTuner::Budget(t, options),
+          mesh.bounding_box(),
+          HotRegionTuner::CoarseGridSize(HotRegionTuner::Budget(mesh, options),
                                          options.grid_size))),
-      tuner_(t, histogram_.grid(), options, histogram_.MemoryBytes()) {
+      tuner_(mesh, histogram_.grid(), options, histogram_.MemoryBytes()) {
   if (!options_.state_dir.empty()) {
     store_ = std::make_unique<const TuningStateStore>(
         options_.state_dir, tuner_.Fingerprint(name()));
@@ -48,13 +48,20 @@ SelfTuningLocator::~SelfTuningLocator() {
 }
 
 bool SelfTuningLocator::LocateIn(const TuningSnapshot& snap, const Point2& q,
-                                 LocateResult* result) const {
+                                 LocateResult* result, Detail detail,
+                                 Chain* chain) const {
   const size_t cell = histogram_.grid().CellOf(q);
   histogram_.AddToCell(cell);
   result->cost = LocateCost();
   uint32_t lookups = 0;
-  const auto start = snap.table->Start(q, &lookups);
-  WalkAndDescribe(t_, start, q, result);
+  uint32_t start = snap.table->Start(q, &lookups);
+  if (chain && chain->valid &&
+      SquaredDistance(chain->query, q) <
+          SquaredDistance(mesh_.CornerPoint(start, 0), q)) {
+    start = chain->face;
+  }
+  const uint32_t end = WalkAndDescribe(mesh_, start, q, result, detail);
+  if (chain) *chain = Chain{true, q, end};
   result->cost.table_lookups = lookups;
   return !snap.hot[cell];
 }
@@ -91,11 +98,12 @@ void SelfTuningLocator::Locate(const Point2& q, LocateResult* result) const {
 }
 
 void SelfTuningLocator::LocateMany(std::span<const Point2> queries,
-                                   LocateResult* results) const {
+                                   LocateResult* results, Detail detail) const {
   const TuningSnapshot& snap = *snapshot_.Get();
   uint64_t cold = 0;
+  Chain chain;
   for (size_t i = 0; i < queries.size(); ++i) {
-    cold += LocateIn(snap, queries[i], &results[i]);
+    cold += LocateIn(snap, queries[i], &results[i], detail, &chain);
   }
   Account(queries.size(), cold);
 }

@@ -38,8 +38,8 @@
 #include "server/core/hot_region_tuner.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
+#include "server/core/serving_mesh.h"
 #include "server/core/snapshot_slot.h"
-#include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 #include "server/core/tuning_state_store.h"
 
@@ -47,15 +47,17 @@ namespace locator {
 
 class SelfTuningLocator : public PointLocator {
  public:
-  // `t` must outlive the locator. Publishes an initial snapshot tuned for
+  // `mesh` must outlive the locator. Publishes an initial snapshot tuned for
   // uniform traffic before returning.
-  SelfTuningLocator(const Triangulation& t, const TuningOptions& options);
+  SelfTuningLocator(const ServingMesh& mesh, const TuningOptions& options);
   ~SelfTuningLocator() override;
 
   void Locate(const Point2& q, LocateResult* result) const override;
-  // One snapshot load and one update of the shared counters per call.
-  void LocateMany(std::span<const Point2> queries,
-                  LocateResult* results) const override;
+  // One snapshot load and one update of the shared counters per call;
+  // each walk starts from the previous answer when the previous query is
+  // nearer than the table's start.
+  void LocateMany(std::span<const Point2> queries, LocateResult* results,
+                  Detail detail = Detail::kFull) const override;
   std::string_view name() const override { return "self-tuning"; }
   TuningSummary Summary() const override EXCLUDES(persistence_mu_);
   void Retune() override EXCLUDES(tune_mu_);
@@ -69,10 +71,18 @@ class SelfTuningLocator : public PointLocator {
   bool RestoreState() EXCLUDES(tune_mu_, persistence_mu_);
   // Saves unless the published snapshot is the one last saved.
   Status SaveLocked() REQUIRES(tune_mu_) EXCLUDES(persistence_mu_);
+  // The previous answer of a batch, to chain walks from.
+  struct Chain {
+    bool valid = false;
+    Point2 query;
+    uint32_t face = 0;
+  };
   // Locates q with `snap` and counts it in the histogram; true if q fell in
-  // a cold cell.
+  // a cold cell. With `chain`, starts from chain->face when chain->query is
+  // nearer q than the table's start, and records q's answer there.
   bool LocateIn(const TuningSnapshot& snap, const Point2& q,
-                LocateResult* result) const;
+                LocateResult* result, Detail detail = Detail::kFull,
+                Chain* chain = nullptr) const;
   // Counts `queries` located (`cold` of them in cold cells) since the last
   // re-tune, and asks for one when due.
   void Account(uint64_t queries, uint64_t cold) const;
@@ -82,7 +92,7 @@ class SelfTuningLocator : public PointLocator {
   void RetuneLocked() const REQUIRES(tune_mu_);
   void TunerLoop() EXCLUDES(tune_mu_);
 
-  const Triangulation& t_;
+  const ServingMesh& mesh_;
   const TuningOptions options_;
   mutable QueryHistogram histogram_;
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "server/core/walk.h"
+#include "server/core/mesh_walk.h"
 
 namespace locator {
 
@@ -16,13 +16,13 @@ Point2 SubCellCentre(const BoundingBox& cell, const SubGrid& sub_grid,
 
 }  // namespace
 
-StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
+StartTable::StartTable(const ServingMesh& mesh, const GridGeometry& grid,
                        const std::vector<SubGrid>& sub_grids,
                        const StartTable* previous)
     : grid_(grid), cells_(grid.cells()) {
   // Visit cells and sub-cells in serpentine order so that each centre is
   // located by a short walk from the previous one.
-  Face_handle hint = t.DefaultStart();
+  Face hint = mesh.DefaultStart();
   const int g = grid_.size();
   for (int row = 0; row < g; ++row) {
     for (int k = 0; k < g; ++k) {
@@ -39,14 +39,14 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
       }
       cell.sub_grid = sub;
       if (sub.cells() == 1) {
-        hint = cell.face = FaceNear(t, hint, SubCellCentre(box, sub, 0, 0));
+        hint = cell.face = FaceNear(mesh, hint, SubCellCentre(box, sub, 0, 0));
         continue;
       }
-      auto leaves = std::make_shared_for_overwrite<Face_handle[]>(sub.cells());
+      auto leaves = std::make_shared_for_overwrite<Face[]>(sub.cells());
       for (uint32_t sy = 0; sy < sub.rows; ++sy) {
         for (uint32_t j = 0; j < sub.columns; ++j) {
           const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
-          hint = FaceNear(t, hint, SubCellCentre(box, sub, sx, sy));
+          hint = FaceNear(mesh, hint, SubCellCentre(box, sub, sx, sy));
           leaves[size_t{sy} * sub.columns + sx] = hint;
         }
       }
@@ -57,7 +57,7 @@ StartTable::StartTable(const Triangulation& t, const GridGeometry& grid,
 
 StartTable::StartTable(const GridGeometry& grid,
                        const std::vector<SubGrid>& sub_grids,
-                       std::span<const Face_handle> starts)
+                       std::span<const Face> starts)
     : grid_(grid), cells_(grid.cells()) {
   size_t next = 0;
   for (size_t index = 0; index < cells_.size(); ++index) {
@@ -68,7 +68,7 @@ StartTable::StartTable(const GridGeometry& grid,
       cell.face = starts[next++];
       continue;
     }
-    auto leaves = std::make_shared_for_overwrite<Face_handle[]>(n);
+    auto leaves = std::make_shared_for_overwrite<Face[]>(n);
     std::copy_n(starts.begin() + next, n, leaves.get());
     next += n;
     leaf_count_ += n;
@@ -76,8 +76,8 @@ StartTable::StartTable(const GridGeometry& grid,
   }
 }
 
-std::vector<StartTable::Face_handle> StartTable::Starts() const {
-  std::vector<Face_handle> starts;
+std::vector<StartTable::Face> StartTable::Starts() const {
+  std::vector<Face> starts;
   starts.reserve(start_count());
   for (const Cell& cell : cells_) {
     if (cell.leaves) {

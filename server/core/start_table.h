@@ -12,8 +12,8 @@
 // sub-grid did not change: a re-tune copies pointers, not starts.
 //
 // Thread-safety: immutable after construction; Start() from any thread.
-// Invariant: every stored face is a finite face of the triangulation it was
-// built on, which must outlive the table.
+// Invariant: every stored face is a face of the serving mesh it was built
+// on, which must outlive the table.
 
 #ifndef LOCATOR_CORE_START_TABLE_H_
 #define LOCATOR_CORE_START_TABLE_H_
@@ -26,7 +26,7 @@
 
 #include "common/geometry.h"
 #include "server/core/query_histogram.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
@@ -41,17 +41,18 @@ struct SubGrid {
 
 class StartTable {
  public:
-  using Face_handle = Triangulation::Face_handle;
+  // A face of the serving mesh.
+  using Face = uint32_t;
 
   // Bytes per stored start and per coarse cell (the cell, and the chunk's
   // control block and allocation header when refined), for budgeting.
-  static constexpr size_t kBytesPerStart = sizeof(Face_handle);
+  static constexpr size_t kBytesPerStart = sizeof(Face);
   static constexpr size_t kBytesPerCell = 64;
 
   // sub_grids[c] is the sub-grid of coarse cell c. Cells whose sub-grid
   // equals that in `previous` (if given, same grid) copy its starts instead
   // of walking for them: a re-tune pays only for what moved.
-  StartTable(const Triangulation& t, const GridGeometry& grid,
+  StartTable(const ServingMesh& mesh, const GridGeometry& grid,
              const std::vector<SubGrid>& sub_grids,
              const StartTable* previous = nullptr);
 
@@ -59,16 +60,16 @@ class StartTable {
   // cell in row-major order, a refined cell's sub-cells row-major (as
   // Starts() lists them). Precondition: starts.size() is the sum of the
   // sub-grids' cells, and every face is a finite face of the triangulation
-  // the table will be used with.
+  // the mesh the table will be used with.
   StartTable(const GridGeometry& grid, const std::vector<SubGrid>& sub_grids,
-             std::span<const Face_handle> starts);
+             std::span<const Face> starts);
 
   const SubGrid& sub_grid(size_t cell) const { return cells_[cell].sub_grid; }
   // Every stored start, in the order the constructor above takes them.
-  std::vector<Face_handle> Starts() const;
+  std::vector<Face> Starts() const;
 
   // The start face for q; adds the table reads made to *lookups.
-  Face_handle Start(const Point2& q, uint32_t* lookups) const {
+  Face Start(const Point2& q, uint32_t* lookups) const {
     const double gx = grid_.GridX(q.x);
     const double gy = grid_.GridY(q.y);
     const int cx = static_cast<int>(gx);
@@ -97,9 +98,9 @@ class StartTable {
 
  private:
   struct Cell {
-    Face_handle face;  // the start when the sub-grid is 1 x 1
+    Face face = 0;  // the start when the sub-grid is 1 x 1
     // columns x rows starts, row-major, when the sub-grid is larger.
-    std::shared_ptr<const Face_handle[]> leaves;
+    std::shared_ptr<const Face[]> leaves;
     SubGrid sub_grid;
   };
 

@@ -154,135 +154,44 @@ bool Triangulation::MoveIntoDomain(Face_handle* f, LocationType type,
   return false;
 }
 
-void Triangulation::DescribeOutsideDomain(Face_handle f, const Point2& q,
-                                          LocateResult* out) const {
-  *out = LocateResult();
-  out->type = LocationType::kOutsideDomain;
-  // Best-first over the out-of-domain faces by their distance to q: the
-  // segment from q to the nearest boundary point stays outside the domain,
-  // so the search stops once no face is nearer than the best edge found.
-  // Ties go to the edge with the smaller vertex ids.
-  using Key = std::pair<long double, std::pair<int64_t, int64_t>>;
-  Key best{std::numeric_limits<long double>::infinity(), {-1, -1}};
-  const auto edge_distance = [&](Face_handle g, int i) {
-    return SegmentDistance2(FromCgal(g->vertex(Ccw(i))->point()),
-                            FromCgal(g->vertex(Cw(i))->point()), q);
-  };
-  using Entry = std::pair<long double, Face_handle>;
-  const auto farther = [](const Entry& a, const Entry& b) {
-    return a.first > b.first;
-  };
-  std::priority_queue<Entry, std::vector<Entry>, decltype(farther)> frontier(
-      farther);
-  std::unordered_set<const void*> seen{&*f};
-  frontier.emplace(0.0L, f);
-  while (!frontier.empty() && frontier.top().first <= best.first) {
-    const Face_handle g = frontier.top().second;
-    frontier.pop();
-    for (int i = 0; i < 3; ++i) {
-      const Face_handle n = g->neighbor(i);
-      if (dt_.is_infinite(n)) continue;
-      if (InDomain(n)) {
-        const Key key{edge_distance(g, i),
-                      std::minmax(g->vertex(Ccw(i))->info().id,
-                                  g->vertex(Cw(i))->info().id)};
-        best = std::min(best, key);
-      } else if (seen.insert(&*n).second) {
-        const int j = dt_.mirror_index(g, i);
-        long double d = edge_distance(g, i);
-        d = std::min({d, edge_distance(n, Ccw(j)), edge_distance(n, Cw(j))});
-        frontier.emplace(d, n);
-      }
-    }
-  }
-  out->domain_edge_ids = {best.second.first, best.second.second};
-}
-
-void Triangulation::Describe(Face_handle f, LocationType type, int feature,
-                             const Point2& q, LocateResult* out) const {
-  if (type != LocationType::kOutsideConvexHull && !InDomain(f) &&
-      !MoveIntoDomain(&f, type, &feature)) {
-    DescribeOutsideDomain(f, q, out);
-    return;
-  }
-  out->type = type;
-  out->triangle_id = f->info();
-  for (int i = 0; i < 3; ++i) {
-    out->vertex_ids[i] = f->vertex(i)->info().id;
-    out->vertices[i] = FromCgal(f->vertex(i)->point());
-  }
-  out->feature_index =
-      static_cast<int8_t>(type == LocationType::kFace ? -1 : feature);
-  out->hull_edge_ids = {-1, -1};
-  out->domain_edge_ids = {-1, -1};
-  out->has_value = false;
-  out->value = 0;
-  switch (type) {
-    case LocationType::kOutsideConvexHull:
-      out->barycentric = {0, 0, 0};
-      out->hull_edge_ids = {out->vertex_ids[Ccw(feature)],
-                            out->vertex_ids[Cw(feature)]};
-      return;
-    case LocationType::kOutsideDomain:
-      return;  // handled above
-    case LocationType::kVertex:
-      out->barycentric = {0, 0, 0};
-      out->barycentric[feature] = 1;
-      break;
-    case LocationType::kEdge: {
-      auto b =
-          Barycentric(out->vertices[0], out->vertices[1], out->vertices[2], q);
-      b[feature] = 0;
-      const double sum = b[Ccw(feature)] + b[Cw(feature)];
-      b[Ccw(feature)] /= sum;
-      b[Cw(feature)] /= sum;
-      out->barycentric = b;
-      break;
-    }
-    case LocationType::kFace:
-      out->barycentric =
-          Barycentric(out->vertices[0], out->vertices[1], out->vertices[2], q);
-      break;
-  }
-  if (has_values_) {
-    out->has_value = true;
-    out->value = 0;
-    for (int i = 0; i < 3; ++i) {
-      out->value += out->barycentric[i] * f->vertex(i)->info().value;
-    }
-  }
-}
-
 LocateResult Triangulation::ReferenceLocate(const Point2& q) const {
   Cdt::Locate_type lt;
   int li = -1;
   Face_handle f = dt_.locate(ToCgal(q), lt, li);
-  LocateResult r;
+  LocationType type = LocationType::kOutsideConvexHull;
   switch (lt) {
     case Cdt::FACE:
-      Describe(f, LocationType::kFace, -1, q, &r);
+      type = LocationType::kFace;
       break;
     case Cdt::EDGE:
+      type = LocationType::kEdge;
       if (dt_.is_infinite(f)) {
         const int mirror = dt_.mirror_index(f, li);
         f = f->neighbor(li);
         li = mirror;
       }
-      Describe(f, LocationType::kEdge, li, q, &r);
       break;
     case Cdt::VERTEX: {
+      type = LocationType::kVertex;
       const Vertex_handle v = f->vertex(li);
       f = FiniteFaceAt(v);
-      Describe(f, LocationType::kVertex, f->index(v), q, &r);
+      li = f->index(v);
       break;
     }
     default: {  // OUTSIDE_CONVEX_HULL; dimension 2 excludes the affine case.
       const int k = f->index(dt_.infinite_vertex());
-      const int mirror = dt_.mirror_index(f, k);
-      Describe(f->neighbor(k), LocationType::kOutsideConvexHull, mirror, q, &r);
+      li = dt_.mirror_index(f, k);
+      f = f->neighbor(k);
       break;
     }
   }
+  // CGAL's face, described by the serving mesh (the same triangle there).
+  uint32_t face = MeshFace(f);
+  if (type == LocationType::kOutsideConvexHull) {
+    mesh_->NearestVisibleHullEdge(&face, &li, q);
+  }
+  LocateResult r;
+  mesh_->Describe(face, type, li, q, &r);
   return r;
 }
 

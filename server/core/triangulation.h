@@ -7,11 +7,12 @@
 // (exact predicates, inexact constructions, Exact_predicates_tag: the tag that
 // lets constraints cross with this kernel). Without constraints it is the
 // Delaunay triangulation of the points, with the same ids as before. Vertex
-// info holds the stable id and the value z; face info holds the stable
-// triangle id 0..T-1 over the in-domain triangles, in CGAL's finite-face
-// iteration order (so the same input always yields the same ids), or -1 for
-// a face outside the domain and for infinite faces. An index maps ids to
-// vertices for O(1) random sampling.
+// info holds the stable id and the value z. The last build step derives the
+// serving mesh (serving_mesh.h), on which every locate runs; face info holds
+// the finite face's index k in that mesh: k itself for an in-domain face
+// (its stable triangle id 0..T-1, in the mesh's Hilbert order, so the same
+// input always yields the same ids), -2 - k for a face outside the domain,
+// and -1 for infinite faces. An index maps ids to vertices.
 //
 // Vertex ids: input point i has id i (repeats merged into the first). A
 // constraint point that is not an input point gets the next id after the
@@ -28,7 +29,7 @@
 // is in.
 //
 // Invariants after Build(): at least one in-domain triangle exists; no
-// triangle crosses a constrained edge.
+// triangle crosses a constrained edge; mesh() is the same triangulation.
 //
 // Thread-safety: immutable after Build(); every const method may be called
 // from any number of threads.
@@ -55,12 +56,9 @@
 #include "common/status.h"
 #include "server/core/dataset.h"
 #include "server/core/locate_result.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
-
-// Index of corner i + 1 / i + 2 of a face (0..2), as CGAL's ccw()/cw().
-inline int Ccw(int i) { return i == 2 ? 0 : i + 1; }
-inline int Cw(int i) { return i == 0 ? 2 : i - 1; }
 
 class Triangulation {
  public:
@@ -109,13 +107,25 @@ class Triangulation {
   size_t num_holes() const { return num_holes_; }
   // Whether the finite face f is in the domain.
   bool InDomain(Face_handle f) const { return f->info() >= 0; }
+  // The stable triangle id of the finite face f, or -1 outside the domain.
+  int64_t TriangleId(Face_handle f) const {
+    return f->info() >= 0 ? f->info() : -1;
+  }
+  // The index of the finite face f in mesh().
+  uint32_t MeshFace(Face_handle f) const {
+    return static_cast<uint32_t>(f->info() >= 0 ? f->info() : -2 - f->info());
+  }
+  // The serving mesh derived from this triangulation; it may outlive it.
+  const ServingMesh& mesh() const { return *mesh_; }
+  std::shared_ptr<const ServingMesh> shared_mesh() const { return mesh_; }
   // Whether the finite edge (f, i) lies along a breakline or a .poly
   // segment; false for an edge only rings or mesh triangles constrain.
   bool AlongBreakline(Face_handle f, int i) const;
   bool has_values() const { return has_values_; }
   // Bounding box of the input points.
   const BoundingBox& bounding_box() const { return box_; }
-  // Bytes held by the CGAL containers and the adapter's index.
+  // Bytes held by the CGAL containers and the adapter's index (not the
+  // serving mesh).
   size_t MemoryBytes() const;
   // Finite edges, as endpoint pairs: all of them if there are at most
   // `max_edges`, else every k-th of CGAL's edge order (k as small as keeps
@@ -144,15 +154,6 @@ class Triangulation {
   bool FaceWithCorners(const std::array<uint32_t, 3>& ids,
                        Face_handle* face) const;
 
-  // Fills `out` (all but cost) for q located at `type` in the finite face f.
-  // `feature` is the edge index for kEdge and kOutsideConvexHull (the hull
-  // edge of f that q is beyond), the vertex index for kVertex, else unused.
-  // For a face outside the domain it answers kOutsideDomain with the nearest
-  // domain boundary edge, unless q is on the closure of an in-domain
-  // triangle (an edge or vertex it shares), which then answers.
-  void Describe(Face_handle f, LocationType type, int feature, const Point2& q,
-                LocateResult* out) const;
-
   // For a point on edge/vertex `feature` (kEdge/kVertex) of the
   // out-of-domain finite face f, an in-domain face sharing that edge or
   // vertex (updating f and feature); false if none (or for kFace).
@@ -178,12 +179,6 @@ class Triangulation {
   class Builder;
 
   Triangulation() = default;
-  // Among the edges between an out-of-domain face and an in-domain one, the
-  // one nearest q, searched outwards from the out-of-domain face f; sets
-  // out->type, domain_edge_ids and clears the rest.
-  void DescribeOutsideDomain(Face_handle f, const Point2& q,
-                             LocateResult* out) const;
-
   Cdt dt_;
   // by_input_[id] is the vertex with that id: input point i became
   // by_input_[i] (its first occurrence's vertex); constraint points and
@@ -198,6 +193,7 @@ class Triangulation {
   std::map<Cdt::Constraint_id, ConstraintKind> constraint_kinds_;
   BoundingBox box_;
   bool has_values_ = false;
+  std::shared_ptr<const ServingMesh> mesh_;
 };
 
 }  // namespace locator

@@ -21,8 +21,8 @@
 namespace locator {
 
 // Builds one Triangulation. Face info is used as scratch while marking:
-// -1 unvisited, else the nesting depth, then 1 (in) or 0 (out), and finally
-// the triangle id or -1.
+// -1 unvisited, else the nesting depth, then 1 (in) or 0 (out), then the
+// triangle id or -1, and finally the mesh index (see triangulation.h).
 class Triangulation::Builder {
  public:
   Builder(const Dataset& dataset, Triangulation* t)
@@ -34,6 +34,7 @@ class Triangulation::Builder {
     if (s.ok()) s = NameCrossings();
     if (s.ok()) s = MarkDomain();
     if (s.ok()) s = NumberTriangles();
+    if (s.ok()) s = BuildServingMesh();
     return s;
   }
 
@@ -66,6 +67,8 @@ class Triangulation::Builder {
   // segment or ring edge.
   void Eat(Face_handle seed);
   Status NumberTriangles();
+  // Derives the serving mesh and sets the final face info (triangulation.h).
+  Status BuildServingMesh();
   // The number of regions of out-of-domain faces that do not reach the hull.
   size_t CountHoles();
   // The number of ring segments along edge (f, i); barrier: any boundary.

@@ -1,20 +1,20 @@
 #include "server/core/walk_locator.h"
 
-#include "server/core/walk.h"
+#include "server/core/mesh_walk.h"
 
 namespace locator {
 
-WalkLocator::WalkLocator(const Triangulation& t)
-    : t_(t), start_(t.DefaultStart()) {}
+WalkLocator::WalkLocator(const ServingMesh& mesh)
+    : mesh_(mesh), start_(mesh.DefaultStart()) {}
 
 void WalkLocator::Locate(const Point2& q, LocateResult* result) const {
   result->cost = LocateCost();
-  WalkAndDescribe(t_, start_, q, result);
+  WalkAndDescribe(mesh_, start_, q, result);
 }
 
 TuningSummary WalkLocator::Summary() const {
   TuningSummary s;
-  s.start_points.push_back(Triangulation::FromCgal(start_->vertex(0)->point()));
+  s.start_points.push_back(mesh_.CornerPoint(start_, 0));
   s.start_point_count = 1;
   return s;
 }

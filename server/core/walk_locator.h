@@ -7,22 +7,22 @@
 #define LOCATOR_CORE_WALK_LOCATOR_H_
 
 #include "server/core/point_locator.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
 class WalkLocator : public PointLocator {
  public:
-  // `t` must outlive the locator.
-  explicit WalkLocator(const Triangulation& t);
+  // `mesh` must outlive the locator.
+  explicit WalkLocator(const ServingMesh& mesh);
 
   void Locate(const Point2& q, LocateResult* result) const override;
   std::string_view name() const override { return "walk"; }
   TuningSummary Summary() const override;
 
  private:
-  const Triangulation& t_;
-  const Triangulation::Face_handle start_;
+  const ServingMesh& mesh_;
+  const uint32_t start_;
 };
 
 }  // namespace locator

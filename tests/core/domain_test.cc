@@ -101,7 +101,7 @@ void ExpectEveryStrategyAgrees(const Triangulation& t) {
     options.warmup_queries = 500;
     options.retune_every = 500;
     std::unique_ptr<PointLocator> locator;
-    ASSERT_TRUE(MakePointLocator(name, t, options, &locator).ok());
+    ASSERT_TRUE(MakePointLocator(name, t.mesh(), options, &locator).ok());
     test::ExpectAllAgree(*locator, t, queries);
   }
 }

@@ -210,6 +210,27 @@ TEST_F(EngineTest, BatchAnswersMatchUnaryLocateInInputOrder) {
   EXPECT_GT(faces, 1500);
 }
 
+TEST_F(EngineTest, LocationOnlyBatchSkipsBarycentricsAndValues) {
+  const std::vector<Point2> queries = MixedQueries(2000);
+  std::vector<LocateResult> full, location;
+  ASSERT_TRUE(engine_->LocateBatch(queries, &full).ok());
+  ASSERT_TRUE(engine_
+                  ->LocateBatch(queries, &location, nullptr,
+                                Interpolation::kLinear, Detail::kLocation)
+                  .ok());
+  int with_value = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    EXPECT_EQ(location[i].type, full[i].type) << "query " << i;
+    EXPECT_TRUE(t_->Agrees(queries[i], location[i], full[i])) << "query " << i;
+    EXPECT_EQ(location[i].hull_edge_ids, full[i].hull_edge_ids);
+    EXPECT_EQ(location[i].domain_edge_ids, full[i].domain_edge_ids);
+    EXPECT_FALSE(location[i].has_value) << "query " << i;
+    EXPECT_EQ(location[i].barycentric, (std::array<double, 3>{0, 0, 0}));
+    with_value += full[i].has_value;
+  }
+  EXPECT_GT(with_value, 1000);
+}
+
 TEST_F(EngineTest, StatsCountQueriesAndCosts) {
   EngineStats s = engine_->Stats();
   EXPECT_EQ(s.queries, 0u);
@@ -291,7 +312,8 @@ TEST_F(EngineTest, StatsDescribeTheDataset) {
   EXPECT_EQ(info.duplicates_merged, 5u);
   EXPECT_EQ(info.triangles, t_->num_triangles());
   EXPECT_TRUE(info.has_values);
-  EXPECT_EQ(info.triangulation_bytes, t_->MemoryBytes());
+  EXPECT_EQ(info.triangulation_bytes,
+            t_->MemoryBytes() + t_->mesh().MemoryBytes());
   // Measured, and within the time Create() took.
   EXPECT_GT(info.build_seconds, 0);
   EXPECT_LE(info.build_seconds, create_seconds_);

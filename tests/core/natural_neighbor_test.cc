@@ -31,7 +31,7 @@ using WeightMap = std::map<std::pair<double, double>, double>;
 // SibsonCoordinates from the face the walk finds for q.
 bool Sibson(const Triangulation& t, const Point2& q,
             std::vector<NaturalNeighbor>* out) {
-  return SibsonCoordinates(t, FaceNear(t, t.DefaultStart(), q), q, out);
+  return SibsonCoordinates(t, Walk(t, t.DefaultStart(), q).face, q, out);
 }
 
 // The weights by their vertex's coordinates times 2^-exponent.

@@ -62,7 +62,7 @@ std::unique_ptr<PointLocator> MakeLocator(std::string_view name,
                                           const Triangulation& t,
                                           const TuningOptions& options) {
   std::unique_ptr<PointLocator> locator;
-  const Status s = MakePointLocator(name, t, options, &locator);
+  const Status s = MakePointLocator(name, t.mesh(), options, &locator);
   if (!s.ok()) {
     ADD_FAILURE() << "MakePointLocator(" << name << "): " << s.ToString();
     return nullptr;

@@ -48,9 +48,9 @@ inline const TuningStateFixture& TuningStateFuzzFixture() {
       std::abort();
     }
     const TuningSummary summary =
-        SelfTuningLocator(*f->triangulation, f->options).Summary();
+        SelfTuningLocator(f->triangulation->mesh(), f->options).Summary();
     f->grid = GridGeometry(summary.grid_box, summary.grid_size);
-    f->fingerprint = HotRegionTuner(*f->triangulation, f->grid, f->options, 0)
+    f->fingerprint = HotRegionTuner(f->triangulation->mesh(), f->grid, f->options, 0)
                          .Fingerprint("self-tuning");
     return f;
   }();

@@ -1,0 +1,47 @@
+#include "server/core/mesh_walk.h"
+
+namespace locator {
+
+namespace {
+
+// The serving mesh as a VisibilityWalk topology.
+class MeshTopology {
+ public:
+  using Face = uint32_t;
+
+  explicit MeshTopology(const ServingMesh& mesh) : mesh_(mesh) {}
+
+  Side SideOf(Face f, int i, const Point2& q) const {
+    return Orientation(mesh_.CornerPoint(f, Ccw(i)),
+                       mesh_.CornerPoint(f, Cw(i)), q);
+  }
+  bool Next(Face f, int i, Face* next) const {
+    *next = mesh_.Neighbor(f, i);
+    return !ServingMesh::IsHull(*next);
+  }
+  int EntryIndex(Face next, Face from) const {
+    return mesh_.MirrorIndex(next, from);
+  }
+
+ private:
+  const ServingMesh& mesh_;
+};
+
+}  // namespace
+
+MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q) {
+  return VisibilityWalk(MeshTopology(mesh), start, q);
+}
+
+uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
+                         const Point2& q, LocateResult* result, Detail detail) {
+  MeshWalkOutcome w = Walk(mesh, start, q);
+  if (w.type == LocationType::kOutsideConvexHull) {
+    mesh.NearestVisibleHullEdge(&w.face, &w.feature, q);
+  }
+  mesh.Describe(w.face, w.type, w.feature, q, result, detail);
+  result->cost.faces_visited = w.faces_visited;
+  return w.face;
+}
+
+}  // namespace locator
