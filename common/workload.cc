@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "common/random.h"
 
@@ -144,6 +145,18 @@ std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
   Workload workload(kind, box, seed);
   std::vector<Point2> queries(count);
   for (Point2& q : queries) q = workload.Next();
+  return queries;
+}
+
+std::vector<Point2> RasterQueries(const BoundingBox& box, size_t count) {
+  const size_t columns =
+      static_cast<size_t>(std::ceil(std::sqrt(static_cast<double>(count))));
+  const size_t rows = columns == 0 ? 0 : (count + columns - 1) / columns;
+  std::vector<Point2> queries(count);
+  for (size_t i = 0; i < count; ++i) {
+    queries[i] = {box.min_x + (i % columns + 0.5) * box.width() / columns,
+                  box.min_y + (i / columns + 0.5) * box.height() / rows};
+  }
   return queries;
 }
 

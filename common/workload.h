@@ -77,6 +77,11 @@ class Workload {
 std::vector<Point2> WorkloadQueries(WorkloadKind kind, const BoundingBox& box,
                                     size_t count, uint64_t seed);
 
+// A raster scan: the centres of a columns x rows grid over `box`, row by row
+// from (min_x, min_y), x increasing within a row; columns =
+// ceil(sqrt(count)), and the last row may be partial.
+std::vector<Point2> RasterQueries(const BoundingBox& box, size_t count);
+
 }  // namespace locator
 
 #endif  // LOCATOR_COMMON_WORKLOAD_H_

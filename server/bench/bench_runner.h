@@ -51,6 +51,20 @@ void LocateAll(const PointLocator& locator, std::span<const Point2> queries,
 // locate(queries[i]) over all queries.
 double MedianNsPerQuery(std::span<const Point2> queries, int repeats,
                         const std::function<void(const Point2&)>& locate);
+// Median over `repeats` runs of run()'s wall-clock ns divided by `points`.
+double MedianNsPerPoint(size_t points, int repeats,
+                        const std::function<void()>& run);
+
+// Per-query latency, sampled: one pass over the queries in which every
+// kLatencyStride-th call is timed on its own with steady_clock (the others
+// run untimed between them).
+struct LatencySample {
+  static constexpr size_t kLatencyStride = 64;
+  double p50_ns = 0;
+  double p999_ns = 0;
+};
+LatencySample SampleLatency(std::span<const Point2> queries,
+                            const std::function<void(const Point2&)>& locate);
 
 }  // namespace locator::bench
 

@@ -3,11 +3,14 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <random>
 #include <string>
 
+#include "common/random.h"
 #include "common/workload.h"
 #include "server/bench/bench_runner.h"
 #include "server/bench/cgal_baselines.h"
+#include "server/bench/stopwatch.h"
 #include "server/core/dataset.h"
 #include "server/core/locator_factory.h"
 #include "server/core/triangulation.h"
@@ -45,93 +48,179 @@ class AnswerChecker {
   size_t mismatches_ = 0;
 };
 
+// Blobs of the non-uniform dataset (GenerateClusters).
+constexpr size_t kClusterBlobs = 20;
+// Near-point queries move up to this share of the box's side from a point.
+constexpr double kNearPoint = 1e-3;
+
+// `count` queries at points of `dataset` drawn uniformly, each moved by up
+// to kNearPoint of the box's side along each axis.
+std::vector<Point2> NearPointQueries(const Dataset& dataset,
+                                     const BoundingBox& box, size_t count,
+                                     uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Point2> queries(count);
+  const double dx = kNearPoint * box.width(), dy = kNearPoint * box.height();
+  for (Point2& q : queries) {
+    const size_t i =
+        std::min(dataset.points.size() - 1,
+                 static_cast<size_t>(UnitDouble(rng) * dataset.points.size()));
+    const Point2 p = dataset.points[i];
+    q.x = std::clamp(p.x + UniformDouble(rng, -dx, dx), box.min_x, box.max_x);
+    q.y = std::clamp(p.y + UniformDouble(rng, -dy, dy), box.min_y, box.max_y);
+  }
+  return queries;
+}
+
+// Times every strategy and CGAL's methods on `all` (its first o.warmup
+// queries warm the strategies up), adds their rows, and counts answers that
+// disagree with CGAL into *mismatches. With `record_build`, also the
+// self-tuning strategy's build row.
+Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
+                   CgalBaselines& cgal, const std::string& workload,
+                   std::span<const Point2> all, bool record_build,
+                   BenchReport* report, size_t* mismatches) {
+  const size_t n = t.input_points();
+  const std::span<const Point2> warm = all.first(o.warmup);
+  const std::span<const Point2> measured = all.subspan(o.warmup);
+  std::vector<LocateResult> reference(measured.size());
+  for (size_t i = 0; i < measured.size(); ++i) {
+    reference[i] = cgal.LocateHierarchy(measured[i]);
+  }
+  LocateResult r;
+  std::vector<LocateResult> batch(measured.size());
+  for (const std::string& strategy : StrategyNames()) {
+    auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<PointLocator> locator;
+    const Status s = MakePointLocator(strategy, t.mesh(), o.tuning, &locator);
+    if (!s.ok()) return s;
+    const double build_ns = NanosSince(start);
+    LocateAll(*locator, warm, nullptr);
+    const std::span<const Point2> timed = measured.first(
+        strategy == "walk" ? std::min(o.slow_queries, measured.size())
+                           : measured.size());
+    const TuningSummary before = locator->Summary();
+    const Stopwatch watch;
+    CostSums sums;
+    AnswerChecker checker(t, strategy + " on " + workload);
+    for (size_t i = 0; i < timed.size(); ++i) {
+      locator->Locate(timed[i], &r);
+      sums.Add(r.cost);
+      checker.Check(timed[i], r, reference[i]);
+    }
+    *mismatches += checker.mismatches();
+    const auto locate = [&](const Point2& q) { locator->Locate(q, &r); };
+    BenchRow row{"scale",
+                 workload,
+                 n,
+                 strategy,
+                 sums.mean_cost(),
+                 sums.mean_faces(),
+                 sums.mean_comparisons(),
+                 MedianNsPerQuery(timed, o.repeats, locate),
+                 0};
+    const LatencySample latency = SampleLatency(timed, locate);
+    row.batch_ns_per_query = MedianNsPerPoint(timed.size(), o.repeats, [&] {
+      locator->LocateMany(timed, batch.data());
+    });
+    const double seconds = watch.Seconds();
+    const TuningSummary after = locator->Summary();
+    const double located = static_cast<double>(timed.size()) *
+                           (2 * static_cast<double>(o.repeats) + 2);
+    row.retunes_per_million =
+        1e6 * static_cast<double>(after.retune_count - before.retune_count) /
+        located;
+    row.tune_cpu_share =
+        static_cast<double>(after.tune_nanos - before.tune_nanos) /
+        (seconds * 1e9);
+    row.p50_ns = latency.p50_ns;
+    row.p999_ns = latency.p999_ns;
+    row.extra_bytes = after.memory_bytes;
+    report->Add(row);
+    if (record_build && strategy == "self-tuning") {
+      report->Add(BenchRow{"build", "-", n, strategy, 0, 0, 0, build_ns,
+                           row.extra_bytes});
+    }
+  }
+
+  AnswerChecker checker(t, "cgal-lasthint on " + workload);
+  for (size_t i = 0; i < measured.size(); ++i) {
+    checker.Check(measured[i], cgal.LocateLastHint(measured[i]), reference[i]);
+  }
+  *mismatches += checker.mismatches();
+  const std::span<const Point2> slow =
+      measured.first(std::min(o.slow_queries, measured.size()));
+  report->Add(BenchRow{
+      "scale", workload, n, "cgal-nohint", 0, 0, 0,
+      MedianNsPerQuery(slow, o.repeats,
+                       [&](const Point2& q) { r = cgal.LocateNoHint(q); }),
+      0});
+  report->Add(BenchRow{
+      "scale", workload, n, "cgal-lasthint", 0, 0, 0,
+      MedianNsPerQuery(measured, o.repeats,
+                       [&](const Point2& q) { r = cgal.LocateLastHint(q); }),
+      0});
+  const auto hierarchy = [&](const Point2& q) { r = cgal.LocateHierarchy(q); };
+  BenchRow row{"scale",
+               workload,
+               n,
+               "cgal-hierarchy",
+               0,
+               0,
+               0,
+               MedianNsPerQuery(measured, o.repeats, hierarchy),
+               cgal.hierarchy_bytes() > t.MemoryBytes()
+                   ? cgal.hierarchy_bytes() - t.MemoryBytes()
+                   : 0};
+  const LatencySample latency = SampleLatency(measured, hierarchy);
+  row.p50_ns = latency.p50_ns;
+  row.p999_ns = latency.p999_ns;
+  report->Add(row);
+  return Status::OK();
+}
+
 }  // namespace
 
 Status RunScale(const ScaleOptions& o, BenchReport* report) {
   size_t mismatches = 0;
+  const size_t count = o.warmup + o.queries;
   for (size_t n : o.sizes) {
-    const Dataset dataset = GenerateUniform(n, 1);
-    auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<Triangulation> t;
-    Status s = Triangulation::Build(dataset, &t);
-    if (!s.ok()) return s;
-    report->Add(BenchRow{"build", "-", n, "triangulation", 0, 0, 0,
-                         NanosSince(start), t->MemoryBytes()});
-    CgalBaselines cgal(*t, dataset);
-    report->Add(BenchRow{"build", "-", n, "cgal-hierarchy", 0, 0, 0,
-                         cgal.hierarchy_build_seconds() * 1e9,
-                         cgal.hierarchy_bytes()});
-
-    for (WorkloadKind kind : AllWorkloadKinds()) {
-      const std::string workload(WorkloadName(kind));
-      const std::vector<Point2> all =
-          WorkloadQueries(kind, t->bounding_box(), o.warmup + o.queries,
-                          4242 + static_cast<int>(kind));
-      const std::span<const Point2> warm = std::span(all).first(o.warmup);
-      const std::span<const Point2> measured = std::span(all).subspan(o.warmup);
-      std::vector<LocateResult> reference(measured.size());
-      for (size_t i = 0; i < measured.size(); ++i) {
-        reference[i] = cgal.LocateHierarchy(measured[i]);
+    for (const bool clustered : {false, true}) {
+      const Dataset dataset = clustered ? GenerateClusters(n, kClusterBlobs, 1)
+                                        : GenerateUniform(n, 1);
+      const std::string suffix = clustered ? "-clusters" : "";
+      auto start = std::chrono::steady_clock::now();
+      std::unique_ptr<Triangulation> t;
+      Status s = Triangulation::Build(dataset, &t);
+      if (!s.ok()) return s;
+      // The serving mesh is what answers; CGAL's triangulation builds it.
+      report->Add(BenchRow{"build", "-", n, "triangulation" + suffix, 0, 0, 0,
+                           NanosSince(start), t->mesh().MemoryBytes()});
+      report->Add(BenchRow{"build", "-", n, "cgal-builder" + suffix, 0, 0, 0, 0,
+                           t->MemoryBytes()});
+      CgalBaselines cgal(*t, dataset);
+      report->Add(BenchRow{"build", "-", n, "cgal-hierarchy" + suffix, 0, 0, 0,
+                           cgal.hierarchy_build_seconds() * 1e9,
+                           cgal.hierarchy_bytes()});
+      const BoundingBox& box = t->bounding_box();
+      std::vector<std::pair<std::string, std::vector<Point2>>> workloads;
+      if (clustered) {
+        workloads.emplace_back("clusters-data",
+                               NearPointQueries(dataset, box, count, 4243));
+        workloads.emplace_back("clusters-raster", RasterQueries(box, count));
+      } else {
+        for (WorkloadKind kind : AllWorkloadKinds()) {
+          workloads.emplace_back(
+              std::string(WorkloadName(kind)),
+              WorkloadQueries(kind, box, count, 4242 + static_cast<int>(kind)));
+        }
+        workloads.emplace_back("raster", RasterQueries(box, count));
       }
-      LocateResult r;
-
-      for (const std::string& strategy : StrategyNames()) {
-        start = std::chrono::steady_clock::now();
-        std::unique_ptr<PointLocator> locator;
-        s = MakePointLocator(strategy, t->mesh(), o.tuning, &locator);
+      for (const auto& [workload, queries] : workloads) {
+        s = RunWorkload(o, *t, cgal, workload, queries, workload == "uniform",
+                        report, &mismatches);
         if (!s.ok()) return s;
-        const double build_ns = NanosSince(start);
-        LocateAll(*locator, warm, nullptr);
-        const std::span<const Point2> timed = measured.first(
-            strategy == "walk" ? std::min(o.slow_queries, measured.size())
-                               : measured.size());
-        CostSums sums;
-        AnswerChecker checker(*t, strategy + " on " + workload);
-        for (size_t i = 0; i < timed.size(); ++i) {
-          locator->Locate(timed[i], &r);
-          sums.Add(r.cost);
-          checker.Check(timed[i], r, reference[i]);
-        }
-        mismatches += checker.mismatches();
-        const double ns = MedianNsPerQuery(
-            timed, o.repeats, [&](const Point2& q) { locator->Locate(q, &r); });
-        const size_t bytes = locator->Summary().memory_bytes;
-        report->Add(BenchRow{"scale", workload, n, strategy, sums.mean_cost(),
-                             sums.mean_faces(), sums.mean_comparisons(), ns,
-                             bytes});
-        if (kind == WorkloadKind::kUniform && strategy == "self-tuning") {
-          report->Add(
-              BenchRow{"build", "-", n, strategy, 0, 0, 0, build_ns, bytes});
-        }
       }
-
-      AnswerChecker checker(*t, "cgal-lasthint on " + workload);
-      for (size_t i = 0; i < measured.size(); ++i) {
-        checker.Check(measured[i], cgal.LocateLastHint(measured[i]),
-                      reference[i]);
-      }
-      mismatches += checker.mismatches();
-      const std::span<const Point2> slow =
-          measured.first(std::min(o.slow_queries, measured.size()));
-      report->Add(BenchRow{
-          "scale", workload, n, "cgal-nohint", 0, 0, 0,
-          MedianNsPerQuery(slow, o.repeats,
-                           [&](const Point2& q) { r = cgal.LocateNoHint(q); }),
-          0});
-      report->Add(BenchRow{"scale", workload, n, "cgal-lasthint", 0, 0, 0,
-                           MedianNsPerQuery(measured, o.repeats,
-                                            [&](const Point2& q) {
-                                              r = cgal.LocateLastHint(q);
-                                            }),
-                           0});
-      report->Add(BenchRow{"scale", workload, n, "cgal-hierarchy", 0, 0, 0,
-                           MedianNsPerQuery(measured, o.repeats,
-                                            [&](const Point2& q) {
-                                              r = cgal.LocateHierarchy(q);
-                                            }),
-                           cgal.hierarchy_bytes() > t->MemoryBytes()
-                               ? cgal.hierarchy_bytes() - t->MemoryBytes()
-                               : 0});
     }
   }
   if (mismatches > 0) {

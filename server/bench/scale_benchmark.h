@@ -1,7 +1,10 @@
 // RunScale: wall-clock ns per locate at large n, for every workload and
 // strategy and for CGAL's own methods (no hint, last answer as hint,
 // Triangulation_hierarchy_2), checking every answer against CGAL; plus build
-// times and bytes of each structure.
+// times and bytes of each structure. Workloads: common/workload.h's and a
+// row-order raster on uniform points; queries near the points and a raster
+// on a clustered dataset. Strategy rows also report re-tunes, the tuner's
+// time share, sampled latency and batch (LocateMany) ns per point.
 
 #ifndef LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_
 #define LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_

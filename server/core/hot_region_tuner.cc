@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 
 namespace locator {
@@ -240,7 +241,8 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Snapshot(
   return snapshot;
 }
 
-std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
+bool HotRegionTuner::Plan() {
+  builder_.reset();
   const size_t cells = grid_.cells();
   const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
   const double prior = total > 0 ? kPriorShare : 1.0;
@@ -261,12 +263,27 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
     keep = ExpectedWalk(weight, plan) >
            (1 - kMinGain) * ExpectedWalk(weight, levels_);
   }
-  if (!keep) {
-    table_ =
-        std::make_shared<StartTable>(mesh_, grid_, Shapes(plan), table_.get());
-    levels_ = plan;
-    planned_share_ = share;
-  }
+  if (keep) return false;
+  builder_ = std::make_unique<StartTable::Builder>(mesh_, grid_, Shapes(plan),
+                                                   table_.get());
+  building_levels_ = plan;
+  building_share_ = share;
+  return true;
+}
+
+bool HotRegionTuner::BuildStep(size_t max_units, size_t* units) {
+  if (!builder_ || !builder_->Step(max_units, units)) return !builder_;
+  table_ = builder_->Finish();
+  builder_.reset();
+  levels_ = std::move(building_levels_);
+  planned_share_ = std::move(building_share_);
+  return true;
+}
+
+std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
+  Plan();
+  size_t units = 0;
+  BuildStep(SIZE_MAX, &units);
   return Snapshot(version);
 }
 
@@ -328,6 +345,7 @@ Status HotRegionTuner::Restore(
           std::to_string(ids[2]) + " are not a triangle of this dataset");
     }
   }
+  builder_.reset();  // it may borrow the table replaced here
   table_ = std::make_shared<StartTable>(grid_, shapes, faces);
   levels_ = state.levels;
   counts_ = state.histogram;

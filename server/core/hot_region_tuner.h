@@ -26,7 +26,10 @@
 // the table is rebuilt only if the cost model predicts at least
 // kMinGain fewer faces per query than the current table, otherwise it is
 // reused outright; cells shrink only when the budget needs their starts; and
-// a rebuild shares every unchanged cell. The plan fills
+// a rebuild shares every unchanged cell. A rebuild can run in bounded steps
+// (Plan(), then BuildStep() until it returns true) while the old table
+// serves; the new plan becomes current only when its table is complete. The
+// plan fills
 // kPlanFill of the budget so that kept cells have headroom; a mix that would
 // still exceed the budget falls back to the fresh plan.
 //
@@ -88,8 +91,18 @@ class HotRegionTuner {
 
   // Folds the counts since the last call into the decayed histogram.
   void AddCounts(const std::vector<double>& fresh);
-  // Plans and builds the next snapshot from the histogram.
+  // Plans the next table from the histogram, abandoning any build in
+  // progress; true if the plan needs a new table, which BuildStep() builds.
+  bool Plan();
+  // Does at most max_units (>= 1) units of the pending build (see
+  // StartTable::Builder) and adds their number to *units; true once nothing
+  // is pending (the planned table is then current).
+  bool BuildStep(size_t max_units, size_t* units);
+  bool building() const { return builder_ != nullptr; }
+  // Plan() and BuildStep() to completion; then Snapshot(version).
   std::shared_ptr<const TuningSnapshot> Build(uint64_t version);
+  // The snapshot of the current table and histogram, as `version`.
+  std::shared_ptr<const TuningSnapshot> Snapshot(uint64_t version) const;
 
   // What a state learned by this tuner means: the dataset, `strategy`, the
   // grid and the budget.
@@ -109,8 +122,6 @@ class HotRegionTuner {
  private:
   // counts_ as shares of their total (uniform when there is no traffic).
   std::vector<double> Shares(double total) const;
-  // The snapshot of table_ and counts_, as `version`.
-  std::shared_ptr<const TuningSnapshot> Snapshot(uint64_t version) const;
   std::vector<uint32_t> PlanLevels(const std::vector<double>& weight) const;
   // significant[c]: cell c's count departs from the share the current
   // table was planned for by more than Poisson noise (all, without a table).
@@ -146,6 +157,10 @@ class HotRegionTuner {
   std::shared_ptr<const StartTable> table_;  // the last one built
   std::vector<uint32_t> levels_;             // the levels table_ was built at
   std::vector<double> planned_share_;  // traffic shares table_ was planned for
+  // The build in progress (null when none), and what it was planned at.
+  std::unique_ptr<StartTable::Builder> builder_;
+  std::vector<uint32_t> building_levels_;
+  std::vector<double> building_share_;
 };
 
 }  // namespace locator

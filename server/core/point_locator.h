@@ -63,6 +63,11 @@ struct TuningSummary {
   // for (hot) and elsewhere (fallback). Self-tuning only; 0 for the others.
   uint64_t hot_queries = 0;
   uint64_t fallback_queries = 0;
+  // Self-tuning only: wall-clock ns spent re-tuning (inline in queries or on
+  // the tuner thread), and the most table-building work (StartTable::Builder
+  // units) one located query paid for inline.
+  uint64_t tune_nanos = 0;
+  uint64_t max_tune_units_per_query = 0;
 };
 
 class PointLocator {

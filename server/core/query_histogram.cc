@@ -43,8 +43,28 @@ QueryHistogram::QueryHistogram(const GridGeometry& grid) : grid_(grid) {
 }
 
 void QueryHistogram::AddToCell(size_t cell) {
-  counts_[ThreadShard() * stride_ + cell].fetch_add(1,
-                                                    std::memory_order_relaxed);
+  const int shard = ThreadShard();
+  counts_[shard * stride_ + cell].fetch_add(1, std::memory_order_relaxed);
+  Track& track = tracks_[shard];
+  const uint32_t last = track.last.load(std::memory_order_relaxed);
+  if (last == cell) return;
+  track.last.store(static_cast<uint32_t>(cell), std::memory_order_relaxed);
+  const uint32_t g = static_cast<uint32_t>(grid_.size());
+  const uint32_t column = static_cast<uint32_t>(cell % g);
+  const uint32_t row = static_cast<uint32_t>(cell / g);
+  const int direction = column != last % g ? (column > last % g ? 0 : 1)
+                                           : (row > last / g ? 2 : 3);
+  track.steps[direction].fetch_add(1, std::memory_order_relaxed);
+}
+
+CellSteps QueryHistogram::DrainSteps() {
+  uint64_t sums[4] = {};
+  for (Track& track : tracks_) {
+    for (int d = 0; d < 4; ++d) {
+      sums[d] += track.steps[d].exchange(0, std::memory_order_relaxed);
+    }
+  }
+  return CellSteps{sums[0], sums[1], sums[2], sums[3]};
 }
 
 void QueryHistogram::Drain(std::vector<double>* into) {

@@ -1,5 +1,8 @@
 #include "server/core/self_tuning_locator.h"
 
+#include <algorithm>
+#include <cstdint>
+
 #include "server/core/hot_regions.h"
 #include "server/core/mesh_walk.h"
 
@@ -15,6 +18,21 @@ constexpr uint64_t kColdCheckEvery = 256;
 constexpr double kColdShareTrigger = 0.75;
 // Start points reported by Summary().
 constexpr size_t kSummaryStartPoints = 2000;
+// A window's moves are a sweep when, along one axis, at least this many go
+// one way, and kSweepRatio times as many as go back. A row-order raster up
+// to 4096 queries wide moves 8 cells right per 1024 queries on a 32-cell
+// grid, and left once per row; a hot spot moves both ways alike.
+constexpr uint64_t kMinSweepSteps = 8;
+constexpr uint64_t kSweepRatio = 4;
+
+bool OneWay(uint64_t forth, uint64_t back) {
+  const uint64_t more = std::max(forth, back);
+  return more >= kMinSweepSteps && more >= kSweepRatio * std::min(forth, back);
+}
+
+bool IsSweep(const CellSteps& steps) {
+  return OneWay(steps.right, steps.left) || OneWay(steps.up, steps.down);
+}
 
 }  // namespace
 
@@ -67,30 +85,47 @@ bool SelfTuningLocator::LocateIn(const TuningSnapshot& snap, const Point2& q,
 }
 
 void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
+  const uint64_t located =
+      located_.fetch_add(queries, std::memory_order_relaxed);
+  if (located / kSweepWindow != (located + queries) / kSweepWindow) {
+    sweeping_.store(IsSweep(histogram_.DrainSteps()),
+                    std::memory_order_relaxed);
+  }
   const uint64_t before =
       since_tune_.fetch_add(queries, std::memory_order_relaxed);
-  const uint64_t now = before + queries;
   if (cold > 0) {
     cold_hits_.fetch_add(cold, std::memory_order_relaxed);
     fallback_queries_.fetch_add(cold, std::memory_order_relaxed);
   }
-  if (queries > cold) {
-    hot_queries_.fetch_add(queries - cold, std::memory_order_relaxed);
-  }
-  const uint64_t every = options_.retune_every;
-  if (before < every && now >= every) {
-    RequestRetune();
+  const bool due = Due(before, before + queries);
+  if (options_.background) {
+    if (due) {
+      requests_.fetch_add(1, std::memory_order_release);
+      requests_.notify_one();
+    }
     return;
   }
-  if (before / kColdCheckEvery == now / kColdCheckEvery) return;
+  if (due || building_.load(std::memory_order_relaxed)) {
+    TuneInline(due, queries);
+  }
+}
+
+bool SelfTuningLocator::Due(uint64_t before, uint64_t now) const {
+  const bool sweeping = sweeping_.load(std::memory_order_relaxed);
+  const uint64_t every = options_.retune_every;
+  if (before < every && now >= every) return !sweeping;
+  if (before / kColdCheckEvery == now / kColdCheckEvery) return false;
   // The call that completes a block judges it: most of its queries in cold
   // cells means the traffic moved, and waiting for the regular re-tune
-  // would serve it badly for up to `every` queries.
+  // would serve it badly for up to `every` queries. Unless a sweep explains
+  // them: then its front, not a hot spot, is what moved.
   const uint64_t block_cold = cold_hits_.exchange(0, std::memory_order_relaxed);
-  if (now >= every / 4 &&
-      block_cold > kColdShareTrigger * static_cast<double>(kColdCheckEvery)) {
-    RequestRetune();
-  }
+  if (sweeping) return false;
+  // A regular re-tune that a sweep deferred is due once it ended.
+  return now >= every ||
+         (now >= every / 4 &&
+          block_cold >
+              kColdShareTrigger * static_cast<double>(kColdCheckEvery));
 }
 
 void SelfTuningLocator::Locate(const Point2& q, LocateResult* result) const {
@@ -108,15 +143,20 @@ void SelfTuningLocator::LocateMany(std::span<const Point2> queries,
   Account(queries.size(), cold);
 }
 
-void SelfTuningLocator::RequestRetune() const {
-  if (options_.background) {
-    requests_.fetch_add(1, std::memory_order_release);
-    requests_.notify_one();
-    return;
-  }
-  // Inline: whoever finds the tuner busy just keeps using the old snapshot.
+void SelfTuningLocator::TuneInline(bool start, uint64_t queries) const {
+  // Whoever finds the tuner busy just keeps using the old snapshot.
   if (!tune_mu_.TryLock()) return;
-  RetuneLocked();
+  const auto begin = std::chrono::steady_clock::now();
+  const bool pending = tuner_.building();
+  if (pending || start) {
+    if (!pending) StartRetuneLocked();
+    size_t units = 0;
+    if (tuner_.BuildStep(kTuneUnitsPerQuery * queries, &units)) {
+      PublishLocked();
+    }
+    building_.store(tuner_.building(), std::memory_order_relaxed);
+    RecordTuning(begin, units, queries);
+  }
   tune_mu_.Unlock();
 }
 
@@ -188,14 +228,42 @@ void SelfTuningLocator::Retune() {
   RetuneLocked();
 }
 
-void SelfTuningLocator::RetuneLocked() const {
+void SelfTuningLocator::StartRetuneLocked() const {
   std::fill(fresh_.begin(), fresh_.end(), 0.0);
   histogram_.Drain(&fresh_);
   tuner_.AddCounts(fresh_);
-  snapshot_.Publish(tuner_.Build(snapshot_.Current()->version + 1));
+  tuner_.Plan();
   since_tune_.store(0, std::memory_order_relaxed);
   cold_hits_.store(0, std::memory_order_relaxed);
+}
+
+void SelfTuningLocator::PublishLocked() const {
+  snapshot_.Publish(tuner_.Snapshot(snapshot_.Current()->version + 1));
   retunes_.fetch_add(1, std::memory_order_relaxed);
+}
+
+void SelfTuningLocator::RetuneLocked() const {
+  const auto begin = std::chrono::steady_clock::now();
+  StartRetuneLocked();
+  size_t units = 0;
+  tuner_.BuildStep(SIZE_MAX, &units);
+  PublishLocked();
+  building_.store(false, std::memory_order_relaxed);
+  RecordTuning(begin, units, 0);
+}
+
+void SelfTuningLocator::RecordTuning(
+    std::chrono::steady_clock::time_point begin, size_t units,
+    uint64_t queries) const {
+  tune_nanos_.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                            std::chrono::steady_clock::now() - begin)
+                            .count(),
+                        std::memory_order_relaxed);
+  if (queries == 0) return;
+  const uint64_t per_query = (units + queries - 1) / queries;
+  if (per_query > max_units_per_query_.load(std::memory_order_relaxed)) {
+    max_units_per_query_.store(per_query, std::memory_order_relaxed);
+  }
 }
 
 TuningSummary SelfTuningLocator::Summary() const {
@@ -212,8 +280,12 @@ TuningSummary SelfTuningLocator::Summary() const {
   s.memory_bytes = snap->memory_bytes + histogram_.MemoryBytes();
   MutexLock lock(&persistence_mu_);
   s.persistence = persistence_;
-  s.hot_queries = hot_queries_.load(std::memory_order_relaxed);
+  // Fallbacks first: each is in located_ before it is in fallback_queries_.
   s.fallback_queries = fallback_queries_.load(std::memory_order_relaxed);
+  s.hot_queries = located_.load(std::memory_order_relaxed) - s.fallback_queries;
+  s.tune_nanos = tune_nanos_.load(std::memory_order_relaxed);
+  s.max_tune_units_per_query =
+      max_units_per_query_.load(std::memory_order_relaxed);
   return s;
 }
 

@@ -15,8 +15,20 @@
 // the current TuningSnapshot (immutable, published through a SnapshotSlot,
 // like LevelDB's Version) and counts into relaxed per-thread
 // histogram shards; it never waits for the tuner. Re-tunes are serialised
-// by a mutex only the tuner holds: inline in the query that triggers one
-// (options.background == false, deterministic) or on a background thread.
+// by a mutex only the tuner holds: on a background thread, or inline
+// (options.background == false, deterministic). Inline, no query pays for a
+// whole re-tune: the query that triggers one drains the histogram and plans
+// (O(coarse cells)), and the new table is built kTuneUnitsPerQuery starts
+// per located query (StartTable::Builder) by the queries that follow, which
+// keep the old snapshot until the new one is published complete.
+//
+// Sweeps: a scan moving steadily along rows or columns (a raster) keeps
+// entering cells the plan thought cold, and chasing its front would re-tune
+// all the time. Every kSweepWindow queries the moves between cells are
+// judged (QueryHistogram::DrainSteps); while they go one way along an axis,
+// no re-tune starts, and the histogram keeps accumulating the swept area:
+// when the sweep ends, the next re-tune plans for all of it. Traffic whose
+// moves go both ways (a hot spot, moved or not) re-tunes as before.
 //
 // Persistence (options.state_dir set): the constructor restores the state
 // stored for this dataset and configuration, if any and usable, so the
@@ -64,6 +76,11 @@ class SelfTuningLocator : public PointLocator {
   Status SaveState() override EXCLUDES(tune_mu_);
 
   static constexpr std::chrono::seconds kMinSaveInterval{1};
+  // Inline mode: the most table-building units (StartTable::Builder) a
+  // located query does.
+  static constexpr size_t kTuneUnitsPerQuery = 32;
+  // Queries per sweep judgement.
+  static constexpr uint64_t kSweepWindow = 1024;
 
  private:
   // Publishes the stored state if there is a usable one; true if it did.
@@ -84,12 +101,25 @@ class SelfTuningLocator : public PointLocator {
                 LocateResult* result, Detail detail = Detail::kFull,
                 Chain* chain = nullptr) const;
   // Counts `queries` located (`cold` of them in cold cells) since the last
-  // re-tune, and asks for one when due.
-  void Account(uint64_t queries, uint64_t cold) const;
-  // Asks for a re-tune: runs it inline or wakes the background thread.
-  void RequestRetune() const EXCLUDES(tune_mu_);
-  // Drains the histogram and publishes a new snapshot.
+  // re-tune, and starts one or advances the pending one.
+  void Account(uint64_t queries, uint64_t cold) const EXCLUDES(tune_mu_);
+  // Whether the call that took the re-tune counter from `before` to `now`
+  // makes a re-tune due; judges the cold block it completes.
+  bool Due(uint64_t before, uint64_t now) const;
+  // Inline mode, never waiting: advances the pending build by up to
+  // kTuneUnitsPerQuery * queries units, or starts a re-tune if `start` and
+  // none is pending; publishes the snapshot once complete.
+  void TuneInline(bool start, uint64_t queries) const EXCLUDES(tune_mu_);
+  // Drains the histogram into the tuner and plans; the build is pending.
+  void StartRetuneLocked() const REQUIRES(tune_mu_);
+  // Publishes the tuner's current plan as the next snapshot.
+  void PublishLocked() const REQUIRES(tune_mu_);
+  // A whole re-tune: starts one, builds it and publishes it.
   void RetuneLocked() const REQUIRES(tune_mu_);
+  // Adds the time since `begin` to the tuning time, and `units` done for
+  // `queries` located queries (0: none) to the per-query maximum.
+  void RecordTuning(std::chrono::steady_clock::time_point begin, size_t units,
+                    uint64_t queries) const REQUIRES(tune_mu_);
   void TunerLoop() EXCLUDES(tune_mu_);
 
   const ServingMesh& mesh_;
@@ -102,6 +132,10 @@ class SelfTuningLocator : public PointLocator {
   mutable HotRegionTuner tuner_ GUARDED_BY(tune_mu_);
   mutable std::vector<double> fresh_ GUARDED_BY(tune_mu_);
   mutable std::atomic<uint64_t> retunes_{0};
+  // Inline mode: a build is pending; queries advance it.
+  mutable std::atomic<bool> building_{false};
+  mutable std::atomic<uint64_t> tune_nanos_{0};
+  mutable std::atomic<uint64_t> max_units_per_query_{0};
 
   // Persistence; null store when nothing persists.
   std::unique_ptr<const TuningStateStore> store_;
@@ -113,11 +147,14 @@ class SelfTuningLocator : public PointLocator {
   mutable SnapshotSlot<TuningSnapshot> snapshot_;  // published by re-tunes
   mutable std::atomic<uint64_t> since_tune_{0};
   mutable std::atomic<uint64_t> cold_hits_{0};
-  // Lifetime counts for Summary(): queries in hot and in cold cells.
-  mutable std::atomic<uint64_t> hot_queries_{0};
+  // The last sweep judgement: traffic moves one way; re-tunes wait.
+  mutable std::atomic<bool> sweeping_{false};
+  // Lifetime counts: queries located (sweep windows count these, which
+  // re-tunes do not reset), and those in cold cells.
+  mutable std::atomic<uint64_t> located_{0};
   mutable std::atomic<uint64_t> fallback_queries_{0};
 
-  // Background mode: RequestRetune() bumps requests_, the thread re-tunes.
+  // Background mode: Account() bumps requests_, the thread re-tunes.
   mutable std::atomic<uint64_t> requests_{0};
   std::atomic<bool> stopping_{false};
   std::thread tuner_thread_;

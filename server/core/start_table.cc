@@ -1,6 +1,8 @@
 #include "server/core/start_table.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 
 #include "server/core/mesh_walk.h"
 
@@ -19,40 +21,73 @@ Point2 SubCellCentre(const BoundingBox& cell, const SubGrid& sub_grid,
 StartTable::StartTable(const ServingMesh& mesh, const GridGeometry& grid,
                        const std::vector<SubGrid>& sub_grids,
                        const StartTable* previous)
-    : grid_(grid), cells_(grid.cells()) {
+    : grid_(grid) {
+  Builder builder(mesh, grid, sub_grids, previous);
+  size_t units = 0;
+  builder.Step(SIZE_MAX, &units);
+  *this = std::move(builder.table_);
+}
+
+StartTable::Builder::Builder(const ServingMesh& mesh, const GridGeometry& grid,
+                             std::vector<SubGrid> sub_grids,
+                             const StartTable* previous)
+    : mesh_(mesh),
+      sub_grids_(std::move(sub_grids)),
+      previous_(previous),
+      table_(grid),
+      hint_(mesh.DefaultStart()) {}
+
+bool StartTable::Builder::Step(size_t max_units, size_t* units) {
   // Visit cells and sub-cells in serpentine order so that each centre is
   // located by a short walk from the previous one.
-  Face hint = mesh.DefaultStart();
-  const int g = grid_.size();
-  for (int row = 0; row < g; ++row) {
-    for (int k = 0; k < g; ++k) {
-      const int col = (row % 2 == 0) ? k : g - 1 - k;
-      const size_t index = static_cast<size_t>(row) * g + col;
-      Cell& cell = cells_[index];
-      const BoundingBox box = grid_.CellBox(col, row);
-      const SubGrid sub = sub_grids[index];
-      if (sub.cells() > 1) leaf_count_ += sub.cells();
-      if (previous && previous->cells_[index].sub_grid == sub) {
-        cell = previous->cells_[index];
-        hint = cell.leaves ? cell.leaves[0] : cell.face;
+  const int g = table_.grid_.size();
+  const size_t end = table_.cells_.size();
+  size_t done = 0;
+  while (next_cell_ < end && done < max_units) {
+    const int row = static_cast<int>(next_cell_ / g);
+    const int k = static_cast<int>(next_cell_ % g);
+    const int col = (row % 2 == 0) ? k : g - 1 - k;
+    const size_t index = static_cast<size_t>(row) * g + col;
+    Cell& cell = table_.cells_[index];
+    const BoundingBox box = table_.grid_.CellBox(col, row);
+    const SubGrid sub = sub_grids_[index];
+    if (!leaves_) {
+      if (sub.cells() > 1) table_.leaf_count_ += sub.cells();
+      if (previous_ && previous_->cells_[index].sub_grid == sub) {
+        ++done;
+        cell = previous_->cells_[index];
+        hint_ = cell.leaves ? cell.leaves[0] : cell.face;
+        ++next_cell_;
         continue;
       }
       cell.sub_grid = sub;
       if (sub.cells() == 1) {
-        hint = cell.face = FaceNear(mesh, hint, SubCellCentre(box, sub, 0, 0));
+        ++done;
+        hint_ = cell.face =
+            FaceNear(mesh_, hint_, SubCellCentre(box, sub, 0, 0));
+        ++next_cell_;
         continue;
       }
-      auto leaves = std::make_shared_for_overwrite<Face[]>(sub.cells());
-      for (uint32_t sy = 0; sy < sub.rows; ++sy) {
-        for (uint32_t j = 0; j < sub.columns; ++j) {
-          const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
-          hint = FaceNear(mesh, hint, SubCellCentre(box, sub, sx, sy));
-          leaves[size_t{sy} * sub.columns + sx] = hint;
-        }
-      }
-      cell.leaves = std::move(leaves);
+      leaves_ = std::make_shared_for_overwrite<Face[]>(sub.cells());
     }
+    for (; next_sub_ < sub.cells() && done < max_units; ++next_sub_, ++done) {
+      const uint32_t sy = static_cast<uint32_t>(next_sub_ / sub.columns);
+      const uint32_t j = static_cast<uint32_t>(next_sub_ % sub.columns);
+      const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
+      hint_ = FaceNear(mesh_, hint_, SubCellCentre(box, sub, sx, sy));
+      leaves_[size_t{sy} * sub.columns + sx] = hint_;
+    }
+    if (next_sub_ < sub.cells()) break;
+    cell.leaves = std::move(leaves_);  // leaves_ is null again
+    next_sub_ = 0;
+    ++next_cell_;
   }
+  *units += done;
+  return next_cell_ == end;
+}
+
+std::shared_ptr<const StartTable> StartTable::Builder::Finish() {
+  return std::make_shared<const StartTable>(std::move(table_));
 }
 
 StartTable::StartTable(const GridGeometry& grid,

@@ -11,7 +11,12 @@
 // their own immutable chunk, shared with the previous table when the cell's
 // sub-grid did not change: a re-tune copies pointers, not starts.
 //
+// A table can also be built a bounded number of starts at a time
+// (StartTable::Builder), so that a re-tune run inline in queries spreads its
+// walks over many of them.
+//
 // Thread-safety: immutable after construction; Start() from any thread.
+// A Builder is not thread-safe; its owner serialises calls.
 // Invariant: every stored face is a face of the serving mesh it was built
 // on, which must outlive the table.
 
@@ -48,6 +53,8 @@ class StartTable {
   // control block and allocation header when refined), for budgeting.
   static constexpr size_t kBytesPerStart = sizeof(Face);
   static constexpr size_t kBytesPerCell = 64;
+
+  class Builder;
 
   // sub_grids[c] is the sub-grid of coarse cell c. Cells whose sub-grid
   // equals that in `previous` (if given, same grid) copy its starts instead
@@ -104,9 +111,42 @@ class StartTable {
     SubGrid sub_grid;
   };
 
+  // An empty table (every cell unset) for a Builder to fill.
+  explicit StartTable(const GridGeometry& grid)
+      : grid_(grid), cells_(grid.cells()) {}
+
   GridGeometry grid_;
   std::vector<Cell> cells_;
   size_t leaf_count_ = 0;
+};
+
+// Builds the table StartTable(mesh, grid, sub_grids, previous) would, in steps
+// of a bounded number of work units: one unit per start located by a walk
+// and per cell copied from `previous`.
+// Invariant: cells before the cursor (in serpentine order) are final.
+class StartTable::Builder {
+ public:
+  // `mesh` and `previous` (if given) must outlive the builder.
+  Builder(const ServingMesh& mesh, const GridGeometry& grid,
+          std::vector<SubGrid> sub_grids, const StartTable* previous);
+
+  // Does at most max_units (>= 1) units of work and adds their number to
+  // *units; true once the table is complete.
+  bool Step(size_t max_units, size_t* units);
+  // The complete table. Precondition: Step() returned true.
+  std::shared_ptr<const StartTable> Finish();
+
+ private:
+  friend class StartTable;
+
+  const ServingMesh& mesh_;
+  const std::vector<SubGrid> sub_grids_;
+  const StartTable* previous_;
+  StartTable table_;
+  Face hint_;
+  size_t next_cell_ = 0;  // position in serpentine order
+  size_t next_sub_ = 0;   // the same, within a refined cell being filled
+  std::shared_ptr<Face[]> leaves_;  // that cell's starts, or null
 };
 
 }  // namespace locator

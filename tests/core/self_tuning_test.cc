@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "server/core/locator_factory.h"
+#include "server/core/self_tuning_locator.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 
@@ -199,6 +200,74 @@ TEST_F(LearningTest, RelearnsAHotSpotThatMoves) {
   const std::vector<double> frozen =
       Costs(*control, {all.begin() + kPeriod, all.begin() + 2 * kPeriod});
   EXPECT_GT(mean(frozen, kSettle), 1.5 * mean(cost, kPeriod));
+}
+
+// A row-order raster over the whole box: 300 x 300 queries, 300 per row.
+constexpr size_t kRasterQueries = 90000;
+
+TEST_F(LearningTest, RasterScanDoesNotChaseTheScanLine) {
+  auto locator = MakeLocator("self-tuning", t());
+  ASSERT_NE(locator, nullptr);
+  // A fresh plan has no cold cells, and the first sweep window (1024
+  // queries, moves 31:1 to the right) ends before the regular re-tune is
+  // due: the whole scan runs on the initial snapshot.
+  test::ExpectAllAgree(*locator, t(), RasterQueries(box(), kRasterQueries));
+  EXPECT_EQ(locator->Summary().retune_count, 0u);
+  EXPECT_EQ(locator->Summary().snapshot_version, 1u);
+}
+
+TEST_F(LearningTest, RasterAfterAHotSpotRetunesABoundedNumberOfTimes) {
+  auto locator = MakeLocator("self-tuning", t());
+  ASSERT_NE(locator, nullptr);
+  Feed(*locator, WorkloadQueries(WorkloadKind::kOneCluster, box(), 6000, 11));
+  const uint64_t tuned = locator->Summary().retune_count;
+  EXPECT_GE(tuned, 2u);
+  // The scan starts in cells the hot spot left cold. Within two sweep
+  // windows one holds only the scan's moves and is judged a sweep; until
+  // then an early re-tune needs a block ending at >= retune_every / 4 = 500
+  // queries after the last one, i.e. one per 512 queries at most.
+  const uint64_t bound = 2 * SelfTuningLocator::kSweepWindow / 512;
+  test::ExpectAllAgree(*locator, t(), RasterQueries(box(), kRasterQueries));
+  EXPECT_LE(locator->Summary().retune_count - tuned, bound);
+  // The sweep over, a hot spot is learned again.
+  const uint64_t swept = locator->Summary().retune_count;
+  const auto cluster =
+      WorkloadQueries(WorkloadKind::kOneCluster, box(), 6000, 12);
+  Feed(*locator, cluster);
+  EXPECT_GE(locator->Summary().retune_count - swept, 2u);
+  EXPECT_LE(MeanCost(*locator, std::span(cluster).last(1000)), 6.0);
+}
+
+TEST_F(LearningTest, NoQueryPaysForAWholeRebuild) {
+  // The default budget at 50K points is tens of thousands of starts: a
+  // hot spot's first re-tune rebuilds most of them, over many queries.
+  auto locator = MakeLocator("self-tuning", t());
+  ASSERT_NE(locator, nullptr);
+  const auto queries =
+      WorkloadQueries(WorkloadKind::kThreeCluster, box(), 8000, 13);
+  const std::span<const Point2> all(queries);
+  test::ExpectAllAgree(*locator, t(), all.first(4000));
+  std::vector<LocateResult> results(1000);
+  for (size_t i = 4000; i < all.size(); i += results.size()) {
+    locator->LocateMany(all.subspan(i, results.size()), results.data());
+  }
+  const TuningSummary s = locator->Summary();
+  EXPECT_GE(s.retune_count, 2u);
+  EXPECT_GT(s.max_tune_units_per_query, 0u);
+  EXPECT_LE(s.max_tune_units_per_query, SelfTuningLocator::kTuneUnitsPerQuery);
+  EXPECT_GT(s.tune_nanos, 0u);
+  // Each build's tens of thousands of starts took more than one query.
+  EXPECT_GT(s.start_point_count, 10 * SelfTuningLocator::kTuneUnitsPerQuery);
+}
+
+TEST_F(LearningTest, DriftIsNotASweep) {
+  auto locator = MakeLocator("self-tuning", t());
+  ASSERT_NE(locator, nullptr);
+  constexpr uint64_t kPeriod = Workload::kDefaultDriftPeriod;
+  Feed(*locator, WorkloadQueries(WorkloadKind::kDrift, box(), 6 * kPeriod, 14));
+  // At least the regular re-tune per retune_every queries: none deferred.
+  EXPECT_GE(locator->Summary().retune_count,
+            6 * kPeriod / TuningOptions().retune_every);
 }
 
 TEST_F(LearningTest, AdaptivePaperLearnsAfterWarmUp) {
