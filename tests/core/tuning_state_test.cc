@@ -47,7 +47,7 @@ std::string SavedState(WorkloadKind kind) {
   test::ScratchDir dir;
   TuningOptions options = fixture.options;
   options.state_dir = dir.path();
-  SelfTuningLocator locator(*fixture.triangulation, options);
+  SelfTuningLocator locator(fixture.triangulation->mesh(), options);
   LocateResult result;
   for (const Point2& q :
        WorkloadQueries(kind, fixture.triangulation->bounding_box(), 3000, 1)) {
@@ -215,8 +215,8 @@ TEST(TuningStateTest, LengthsCountsAndIdsThatLieAreRejected) {
 
 TEST(TuningStateTest, RestoreRejectsIdsThatNameNoTriangle) {
   const fuzz::TuningStateFixture& fixture = TuningStateFuzzFixture();
-  HotRegionTuner tuner(*fixture.triangulation, fixture.grid, fixture.options,
-                       0);
+  HotRegionTuner tuner(fixture.triangulation->mesh(), fixture.grid,
+                       fixture.options, 0);
   TuningState state = Decoded(ClusteredSave());
   std::swap(state.starts[2][1], state.starts[2][2]);  // clockwise now
   std::shared_ptr<const TuningSnapshot> snapshot;
@@ -255,8 +255,8 @@ TEST(TuningStateTest, CommittedFuzzSeedsDecodeAndRestore) {
       continue;
     }
     ASSERT_TRUE(s.ok()) << name << ": " << s.ToString();
-    HotRegionTuner tuner(*fixture.triangulation, fixture.grid, fixture.options,
-                         0);
+    HotRegionTuner tuner(fixture.triangulation->mesh(), fixture.grid,
+                         fixture.options, 0);
     std::shared_ptr<const TuningSnapshot> snapshot;
     EXPECT_TRUE(tuner.Restore(state, 1, &snapshot).ok()) << name;
   }
