@@ -18,7 +18,7 @@ PACKAGES=(
   python3 python3-grpcio python3-protobuf python3-numpy
   libssl-dev
   chromium nginx openssl curl
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev lld
 )
 
 LOG="${LOCATOR_DEPS_LOG:-/tmp/locator-install-deps.log}"
