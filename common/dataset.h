@@ -78,7 +78,8 @@ struct Dataset {
 
 struct DatasetLimits {
   // Loading more points than this fails with ResourceExhausted, before the
-  // memory is committed (each point costs ~200 bytes once triangulated).
+  // memory is committed (a build peaks at ~350 bytes per point: CGAL's
+  // triangulation and the serving mesh derived from it).
   size_t max_points = 50'000'000;
 };
 

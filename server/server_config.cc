@@ -1,5 +1,7 @@
 #include "server/server_config.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <boost/program_options.hpp>
@@ -293,6 +295,15 @@ Status ParseCommandLine(int argc, const char* const argv[],
 
 }  // namespace
 
+size_t PointsThisMachineHolds() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_bytes = sysconf(_SC_PAGE_SIZE);
+  constexpr size_t kAtLeast = 1'000'000;
+  if (pages <= 0 || page_bytes <= 0) return kAtLeast;
+  const double usable = 0.8 * static_cast<double>(pages) * page_bytes;
+  return std::max(kAtLeast, static_cast<size_t>(usable / kPeakBytesPerPoint));
+}
+
 std::string ServingConfig::ListenAddress() const {
   return listen_host + ":" + std::to_string(listen_port);
 }
@@ -356,8 +367,9 @@ Status ParseServerConfig(int argc, const char* const argv[],
       po::value(&max_dataset_points)
           ->default_value(std::to_string(defaults.dataset_limits.max_points)),
       "points all datasets together may hold: a dataset that would take "
-      "the total beyond it fails before it is triangulated (~200 bytes per "
-      "point once built)")(
+      "the total beyond it fails before it is triangulated. Default: what "
+      "80% of this machine's memory holds at ~350 bytes per point (a "
+      "build's peak)")(
       "reload-dir", po::value(&reload_dir)->default_value(""),
       "a Reload RPC may also load generator specs and the files inside this "
       "directory (resolved; no escape by .. or symlinks); everything else "

@@ -47,6 +47,13 @@ struct ServingConfig {
   std::string ListenAddress() const;
 };
 
+// The points whose triangulation this machine's memory holds: 80% of its
+// physical memory at kPeakBytesPerPoint, the resident peak of a build
+// (CGAL's triangulation and the serving mesh derived from it; 3.4 GB for
+// uniform:10000000); at least 10^6. The default of --max-dataset-points.
+inline constexpr size_t kPeakBytesPerPoint = 350;
+size_t PointsThisMachineHolds();
+
 // locatord's flags.
 struct ServerConfig {
   ServingConfig serving;
@@ -55,9 +62,8 @@ struct ServerConfig {
   // source each (see LoadServedDataset). Never empty.
   std::vector<DatasetConfig> datasets = {{.spec = "uniform:1000000:1"}};
   // --max-dataset-points: the points all datasets together may hold; one
-  // that would take the total beyond it fails before it is triangulated
-  // (each point costs ~200 bytes resident once triangulated).
-  DatasetLimits dataset_limits{.max_points = 10'000'000};
+  // that would take the total beyond it fails before it is triangulated.
+  DatasetLimits dataset_limits{.max_points = PointsThisMachineHolds()};
   // --reload-dir: a Reload RPC may load generator specs and the files inside
   // this directory besides a dataset's own spec (see ReloadPolicy). Empty:
   // only those.

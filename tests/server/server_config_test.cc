@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <string>
@@ -45,7 +46,12 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   EXPECT_EQ(config.retune_interval_s, 0);
   EXPECT_EQ(config.engine.tuning.state_dir, "");
   EXPECT_FALSE(config.http_enabled());
-  EXPECT_EQ(config.dataset_limits.max_points, 10'000'000u);
+  EXPECT_EQ(config.dataset_limits.max_points, PointsThisMachineHolds());
+  // 80% of the physical memory at the build's peak bytes per point.
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                        static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  EXPECT_NEAR(static_cast<double>(PointsThisMachineHolds()),
+              std::max(1e6, 0.8 * memory / kPeakBytesPerPoint), 1.0);
   const TransportConfig& transport = config.serving.transport;
   EXPECT_FALSE(transport.tls.enabled());
   EXPECT_EQ(transport.max_concurrent_streams, 100);
