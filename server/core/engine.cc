@@ -1,5 +1,7 @@
 #include "server/core/engine.h"
 
+#include <malloc.h>
+
 #include <chrono>
 #include <string>
 #include <utility>
@@ -38,11 +40,14 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
                       std::unique_ptr<Engine>* engine) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
-  Status s = Triangulation::Build(dataset, &e->triangulation_);
+  std::unique_ptr<Triangulation> triangulation;
+  Status s = Triangulation::Build(dataset, &triangulation);
   if (!s.ok()) return s;
-  const Triangulation& t = *e->triangulation_;
+  const Triangulation& t = *triangulation;
   e->outline_ = OutlineOf(t, kOutlineSize);
-  s = MakePointLocator(options.strategy, t.mesh(), options.tuning,
+  e->edge_sample_ = t.SampleEdges(kEdgeSampleSize);
+  e->mesh_ = t.shared_mesh();
+  s = MakePointLocator(options.strategy, *e->mesh_, options.tuning,
                        &e->locator_);
   if (!s.ok()) return s;
   DatasetInfo& info = e->info_;
@@ -57,7 +62,12 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   info.bounding_box = t.bounding_box();
   info.has_values = t.has_values();
   info.crs = std::move(dataset.crs);
-  info.triangulation_bytes = t.MemoryBytes() + t.mesh().MemoryBytes();
+  info.triangulation_bytes = e->mesh_->MemoryBytes();
+  // The engine serves from the mesh alone. CGAL's faces and vertices are
+  // many small blocks that malloc keeps after they are freed; trimming
+  // returns their pages, so the process shrinks to about the mesh.
+  triangulation.reset();
+  malloc_trim(0);
   info.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -140,13 +150,6 @@ EngineStats Engine::Stats() const {
   s.walk_costs = walk_costs_.Counts();
   s.tuning = locator_->Summary();
   return s;
-}
-
-const std::vector<std::array<Point2, 2>>& Engine::EdgeSample() const {
-  std::call_once(edge_sample_once_, [this] {
-    edge_sample_ = triangulation_->SampleEdges(kEdgeSampleSize);
-  });
-  return edge_sample_;
 }
 
 }  // namespace locator

@@ -1,10 +1,14 @@
-// Engine: a dataset's triangulation (CGAL's, and the serving mesh derived
-// from it) plus the locator strategy answering on the mesh, with query
-// validation and serving statistics. This is the one entry point the service
-// and tools use; it exposes plain types only (no CGAL).
+// Engine: a dataset's serving mesh plus the locator strategy answering on
+// it, with query validation and serving statistics. This is the one entry
+// point the service and tools use; it exposes plain types only (no CGAL).
+//
+// Owns: the serving mesh (shared with nothing else once Create() returns),
+// the strategy, and what Create() derived from CGAL's triangulation before
+// freeing it (dataset facts, edge sample, domain outline).
 //
 // Thread-safety: all const methods and Retune() may be called concurrently.
-// Invariant: the triangulation is immutable once Create() returns.
+// Invariant: the mesh is immutable once Create() returns; every query
+// (locates, values, profiles, rasters) runs on it alone.
 
 #ifndef LOCATOR_CORE_ENGINE_H_
 #define LOCATOR_CORE_ENGINE_H_
@@ -15,7 +19,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,7 +36,7 @@
 
 namespace locator {
 
-class Triangulation;
+class ServingMesh;
 
 // InvalidArgument naming point `index` of a batch and its coordinates unless
 // both are finite: the one wording of that error, wherever a batch is
@@ -59,6 +62,8 @@ struct DatasetInfo {
   bool has_values = false;
   // The dataset's CRS as WKT (Dataset::crs); empty when it has none.
   std::string crs;
+  // Bytes of the serving mesh, all the engine keeps of the triangulation
+  // (CGAL's is freed once the mesh is built).
   size_t triangulation_bytes = 0;
   double build_seconds = 0;
 };
@@ -86,7 +91,8 @@ class Engine {
   // Edges per list of domain_outline().
   static constexpr size_t kOutlineSize = 3000;
 
-  // Triangulates `dataset` and sets up the strategy. Fails with
+  // Triangulates `dataset`, derives the serving mesh, sets up the strategy
+  // on it and frees CGAL's triangulation. Fails with
   // InvalidArgument for fewer than 3 distinct or all-collinear points, or an
   // unknown strategy.
   static Status Create(Dataset dataset, const EngineOptions& options,
@@ -150,8 +156,10 @@ class Engine {
 
   // At most kEdgeSampleSize edges of the triangulation, spread evenly over
   // its edge list, each as its two endpoints: enough to draw the mesh's
-  // outline and density. Computed on the first call, then reused.
-  const std::vector<std::array<Point2, 2>>& EdgeSample() const;
+  // outline and density. Computed once, by Create().
+  const std::vector<std::array<Point2, 2>>& EdgeSample() const {
+    return edge_sample_;
+  }
 
   // The domain's boundary and the breaklines, at most kOutlineSize edges
   // each (see OutlineOf); both empty for a plain point cloud. Computed once,
@@ -169,7 +177,9 @@ class Engine {
 
   DatasetInfo info_;
   DomainOutline outline_;
-  std::unique_ptr<Triangulation> triangulation_;
+  std::vector<std::array<Point2, 2>> edge_sample_;
+  // The strategy refers to the mesh: declared first, destroyed last.
+  std::shared_ptr<const ServingMesh> mesh_;
   std::unique_ptr<PointLocator> locator_;
 
   mutable std::atomic<uint64_t> queries_{0};
@@ -178,9 +188,6 @@ class Engine {
   mutable std::atomic<uint64_t> window_count_{0};
   mutable std::atomic<double> last_window_mean_{-1};
   mutable WalkCostHistogram walk_costs_;
-
-  mutable std::once_flag edge_sample_once_;
-  mutable std::vector<std::array<Point2, 2>> edge_sample_;
 };
 
 }  // namespace locator

@@ -1,50 +1,32 @@
 // Engine's surface queries: interpolation, profiles and rasters.
 
-#include <array>
 #include <cstdint>
 #include <string>
 
 #include "server/core/engine.h"
 #include "server/core/profile_trace.h"
 #include "server/core/raster_render.h"
+#include "server/core/serving_mesh.h"
 #include "server/core/surface_value.h"
-#include "server/core/triangulation.h"
 
 namespace locator {
 namespace {
 
-using Face_handle = Triangulation::Face_handle;
-
-// The face of `r`'s triangle (the hull triangle outside the hull); for an
-// answer outside the domain, a face at its nearest boundary edge.
-Face_handle FaceOf(const Triangulation& t, const LocateResult& r) {
-  const std::array<int64_t, 3>& ids = r.vertex_ids;
-  Face_handle face;
-  if (ids[0] >= 0 && t.FaceWithCorners({static_cast<uint32_t>(ids[0]),
-                                        static_cast<uint32_t>(ids[1]),
-                                        static_cast<uint32_t>(ids[2])},
-                                       &face)) {
-    return face;
-  }
-  if (r.domain_edge_ids[0] >= 0) {
-    return t.FiniteFaceAt(
-        t.VertexOfInput(static_cast<size_t>(r.domain_edge_ids[0])));
-  }
-  return t.DefaultStart();
-}
-
-// A finite face near q, found the way the strategy starts a locate of q.
-Face_handle StartNear(const Triangulation& t, const PointLocator& locator,
-                      const Point2& q) {
+// A face near q, found the way the strategy starts a locate of q: the
+// triangle of its answer, or outside the domain and the hull, the triangle
+// next to q along the mesh's Hilbert order.
+uint32_t StartNear(const ServingMesh& mesh, const PointLocator& locator,
+                   const Point2& q) {
   LocateResult r;
   locator.Locate(q, &r);
-  return FaceOf(t, r);
+  return r.triangle_id >= 0 ? static_cast<uint32_t>(r.triangle_id)
+                            : mesh.TriangleNear(q);
 }
 
 }  // namespace
 
 Status Engine::CheckInterpolation(Interpolation how) const {
-  return ::locator::CheckInterpolation(*triangulation_, how);
+  return ::locator::CheckInterpolation(info_.constraints, how);
 }
 
 void Engine::Reinterpolate(std::span<const Point2> queries, Interpolation how,
@@ -52,21 +34,22 @@ void Engine::Reinterpolate(std::span<const Point2> queries, Interpolation how,
   if (how == Interpolation::kLinear) return;
   for (size_t i = 0; i < queries.size(); ++i) {
     LocateResult& r = results[i];
+    // A value means an in-domain triangle, whose id is its mesh index.
     if (!r.has_value) continue;
     r.value =
-        ValueAt(*triangulation_, FaceOf(*triangulation_, r), queries[i], how);
+        ValueAt(*mesh_, static_cast<uint32_t>(r.triangle_id), queries[i], how);
   }
 }
 
 Status Engine::TraceProfile(std::span<const Point2> line,
                             const ProfileOptions& options, Profile* out) const {
   if (Status s = CheckInterpolation(options.interpolation); !s.ok()) return s;
-  const Triangulation& t = *triangulation_;
+  const ServingMesh& mesh = *mesh_;
   // The trace checks the line itself; the strategy only sees a good point.
-  const Face_handle start = !line.empty() && IsFinite(line[0])
-                                ? StartNear(t, *locator_, line[0])
-                                : t.DefaultStart();
-  return ::locator::TraceProfile(t, start, line, options, out);
+  const uint32_t start = !line.empty() && IsFinite(line[0])
+                             ? StartNear(mesh, *locator_, line[0])
+                             : mesh.DefaultStart();
+  return ::locator::TraceProfile(mesh, start, line, options, out);
 }
 
 Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,
@@ -80,10 +63,10 @@ Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,
         std::to_string(spec.height) + " rows of the raster");
   }
   if (rows == 0) return Status::OK();
-  const Triangulation& t = *triangulation_;
-  ::locator::RenderRows(t,
-                        StartNear(t, *locator_, spec.CellCentre(0, first_row)),
-                        spec, first_row, rows, out);
+  const ServingMesh& mesh = *mesh_;
+  ::locator::RenderRows(
+      mesh, StartNear(mesh, *locator_, spec.CellCentre(0, first_row)), spec,
+      first_row, rows, out);
   return Status::OK();
 }
 

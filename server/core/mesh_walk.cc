@@ -33,6 +33,14 @@ MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q) {
   return VisibilityWalk(MeshTopology(mesh), start, q);
 }
 
+uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at) {
+  if (at.type == LocationType::kOutsideConvexHull) return ServingMesh::kNoFace;
+  uint32_t f = at.face;
+  int feature = at.feature;
+  if (mesh.InDomain(f) || mesh.MoveIntoDomain(&f, at.type, &feature)) return f;
+  return ServingMesh::kNoFace;
+}
+
 uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
                          const Point2& q, LocateResult* result, Detail detail) {
   MeshWalkOutcome w = Walk(mesh, start, q);

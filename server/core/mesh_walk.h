@@ -30,6 +30,12 @@ uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
                          const Point2& q, LocateResult* result,
                          Detail detail = Detail::kFull);
 
+// An in-domain face whose closed triangle contains the point Walk() located
+// at `at` (a point on the domain's boundary edge or vertex takes the
+// in-domain side); ServingMesh::kNoFace outside the hull or the closed
+// domain.
+uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at);
+
 // A face whose closed triangle contains q, or for q outside the hull the
 // hull face the walk left through: a good start for queries near q.
 inline uint32_t FaceNear(const ServingMesh& mesh, uint32_t hint,

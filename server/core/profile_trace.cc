@@ -5,21 +5,19 @@
 #include <string>
 
 #include "common/str_cat.h"
+#include "server/core/mesh_walk.h"
 #include "server/core/profile_walk.h"
 #include "server/core/surface_value.h"
-#include "server/core/walk.h"
 
 namespace locator {
 
 namespace {
 
-using Face_handle = Triangulation::Face_handle;
-
 // A point of the trace, reported or not.
 struct Stop {
   ProfilePoint point;
   // For a line vertex, an in-domain face whose closed triangle holds it.
-  Face_handle own_face;
+  uint32_t own_face = ServingMesh::kNoFace;
 };
 
 // Traces the line into stops and the stretches between them
@@ -27,12 +25,12 @@ struct Stop {
 // profile from them.
 class ProfileBuilder {
  public:
-  ProfileBuilder(const Triangulation& t, std::span<const Point2> line,
+  ProfileBuilder(const ServingMesh& mesh, std::span<const Point2> line,
                  const ProfileOptions& options)
-      : t_(t), line_(line), options_(options) {}
+      : mesh_(mesh), line_(line), options_(options) {}
 
-  Status Trace(Face_handle start) {
-    Face_handle hint = start;
+  Status Trace(uint32_t start) {
+    uint32_t hint = start;
     double offset = 0;
     for (size_t s = 0; s + 1 < line_.size(); ++s) {
       const Point2& p = line_[s];
@@ -40,7 +38,7 @@ class ProfileBuilder {
       const double length = std::hypot(q.x - p.x, q.y - p.y);
       segment_start_.push_back(offset);
       segment_length_.push_back(length);
-      WalkOutcome at;
+      MeshWalkOutcome at;
       Status status = WalkTo(hint, p, s, offset, &at);
       if (!status.ok()) return status;
       if (p.x == q.x && p.y == q.y) {
@@ -49,46 +47,47 @@ class ProfileBuilder {
         continue;
       }
       SegmentTrace trace;
-      status = WalkSegment(t_, at, p, q, options_.max_faces, &faces_, &trace);
+      status =
+          WalkSegment(mesh_, at, p, q, options_.max_faces, &faces_, &trace);
       if (!status.ok()) return status;
       for (const SegmentStop& stop : trace.stops) {
         stretches_.push_back(stop.before);
         AddStop(stop.kind, stop.point, offset + stop.t * length, s,
-                Face_handle());
+                ServingMesh::kNoFace);
       }
       stretches_.push_back(trace.last);
       offset += length;
       hint = trace.end_face;
     }
-    WalkOutcome at;
+    MeshWalkOutcome at;
     return WalkTo(hint, line_.back(), line_.size() - 2, offset, &at);
   }
 
   void Finish(Profile* out) {
     out->length = stops_.back().point.distance;
     for (size_t j = 0; j < stops_.size(); ++j) {
-      const Face_handle none;
-      const Face_handle before = j > 0 ? stretches_[j - 1].face : none;
-      const Face_handle after =
-          j < stretches_.size() ? stretches_[j].face : none;
+      constexpr uint32_t none = ServingMesh::kNoFace;
+      const uint32_t before = j > 0 ? stretches_[j - 1].face : none;
+      const uint32_t after = j < stretches_.size() ? stretches_[j].face : none;
       ProfilePoint& point = stops_[j].point;
       // Crossings inside a gap are walked through silently.
       if (before == none && after == none &&
           point.kind != ProfilePointKind::kLineVertex) {
         continue;
       }
-      const Face_handle face = before != none  ? before
-                               : after != none ? after
-                                               : stops_[j].own_face;
+      const uint32_t face = before != none  ? before
+                            : after != none ? after
+                                            : stops_[j].own_face;
       if (face != none) {
-        if (t_.has_values()) {
+        if (mesh_.has_values()) {
           point.has_value = true;
-          point.value = ValueAt(t_, face, point.point, options_.interpolation);
+          point.value =
+              ValueAt(mesh_, face, point.point, options_.interpolation);
         }
         // The last point has no stretch after it: the face it ends in.
         point.triangle_id = j < stretches_.size()
-                                ? (after == none ? -1 : t_.TriangleId(after))
-                                : t_.TriangleId(face);
+                                ? (after == none ? -1 : int64_t{after})
+                                : int64_t{face};
       }
       out->breakpoints.push_back(point);
       if (point.kind != ProfilePointKind::kLineVertex) ++out->crossings;
@@ -99,18 +98,18 @@ class ProfileBuilder {
 
  private:
   // Walks to the line vertex `v` of segment `s` and records it.
-  Status WalkTo(Face_handle hint, const Point2& v, size_t s, double distance,
-                WalkOutcome* at) {
-    *at = Walk(t_, hint, v);
+  Status WalkTo(uint32_t hint, const Point2& v, size_t s, double distance,
+                MeshWalkOutcome* at) {
+    *at = Walk(mesh_, hint, v);
     faces_ += at->faces_visited;
     if (faces_ > options_.max_faces) return TooManyFaces(options_.max_faces);
     AddStop(ProfilePointKind::kLineVertex, v, distance, s,
-            ClosedDomainFace(t_, *at));
+            ClosedDomainFace(mesh_, *at));
     return Status::OK();
   }
 
   void AddStop(ProfilePointKind kind, const Point2& point, double distance,
-               size_t segment, Face_handle own_face) {
+               size_t segment, uint32_t own_face) {
     Stop stop;
     stop.point.kind = kind;
     stop.point.point = point;
@@ -123,9 +122,9 @@ class ProfileBuilder {
   }
 
   // The zero-length stretch of a repeated line vertex.
-  ProfileRegion RegionAt(const WalkOutcome& at) const {
-    const Face_handle face = ClosedDomainFace(t_, at);
-    if (face != Face_handle()) return {face, LocationType::kFace};
+  ProfileRegion RegionAt(const MeshWalkOutcome& at) const {
+    const uint32_t face = ClosedDomainFace(mesh_, at);
+    if (face != ServingMesh::kNoFace) return {face, LocationType::kFace};
     return {face, at.type == LocationType::kOutsideConvexHull
                       ? LocationType::kOutsideConvexHull
                       : LocationType::kOutsideDomain};
@@ -134,7 +133,7 @@ class ProfileBuilder {
   void AddGaps(Profile* out) const {
     for (size_t j = 0; j < stretches_.size(); ++j) {
       const ProfileRegion& r = stretches_[j];
-      if (r.face != Face_handle()) continue;
+      if (r.face != ServingMesh::kNoFace) continue;
       const double from = stops_[j].point.distance;
       const double to = stops_[j + 1].point.distance;
       if (!out->gaps.empty() && out->gaps.back().reason == r.type &&
@@ -179,19 +178,20 @@ class ProfileBuilder {
       }
       // At a stop between a gap and a defined stretch, the defined one.
       size_t k = j;
-      while (stretches_[k].face == Face_handle() && k + 1 < stretches_.size() &&
+      while (stretches_[k].face == ServingMesh::kNoFace &&
+             k + 1 < stretches_.size() &&
              stops_[k + 1].point.distance <= sample.distance) {
         ++k;
       }
-      const Face_handle face = stretches_[k].face;
-      if (face != Face_handle()) {
-        sample.triangle_id = t_.TriangleId(face);
-        if (t_.has_values()) {
+      const uint32_t face = stretches_[k].face;
+      if (face != ServingMesh::kNoFace) {
+        sample.triangle_id = face;
+        if (mesh_.has_values()) {
           sample.has_value = true;
           sample.value =
               options_.interpolation == Interpolation::kLinear
                   ? Lerp(stops_[k].point, stops_[k + 1].point, sample.distance)
-                  : ValueAt(t_, face, sample.point, options_.interpolation);
+                  : ValueAt(mesh_, face, sample.point, options_.interpolation);
         }
       }
       out->samples.push_back(sample);
@@ -207,7 +207,7 @@ class ProfileBuilder {
     return a.value + f * (b.value - a.value);
   }
 
-  const Triangulation& t_;
+  const ServingMesh& mesh_;
   const std::span<const Point2> line_;
   const ProfileOptions& options_;
   uint64_t faces_ = 0;
@@ -220,7 +220,7 @@ class ProfileBuilder {
 
 }  // namespace
 
-Status TraceProfile(const Triangulation& t, Face_handle start,
+Status TraceProfile(const ServingMesh& mesh, uint32_t start,
                     std::span<const Point2> line, const ProfileOptions& options,
                     Profile* out) {
   *out = Profile();
@@ -235,7 +235,7 @@ Status TraceProfile(const Triangulation& t, Face_handle start,
           {"profile: line point ", std::to_string(i), " is not finite"}));
     }
   }
-  ProfileBuilder builder(t, line, options);
+  ProfileBuilder builder(mesh, line, options);
   const Status status = builder.Trace(start);
   if (!status.ok()) return status;
   builder.Finish(out);

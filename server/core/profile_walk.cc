@@ -5,42 +5,45 @@
 #include <utility>
 
 #include "common/str_cat.h"
+#include "server/core/orientation.h"
 
 namespace locator {
 
 namespace {
 
-using Face_handle = Triangulation::Face_handle;
-using Vertex_handle = Triangulation::Vertex_handle;
-using CgalPoint = Triangulation::CgalPoint;
-
 double Cross(const Point2& o, const Point2& u, const Point2& v) {
   return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
+}
+
+// -1, 0 or 1 as a is before, at or after b, lexicographically (x, then y):
+// CGAL's compare_xy, exact on doubles.
+int CompareXY(const Point2& a, const Point2& b) {
+  if (a.x != b.x) return a.x < b.x ? -1 : 1;
+  if (a.y != b.y) return a.y < b.y ? -1 : 1;
+  return 0;
 }
 
 // One segment's walk: a state machine over "in face" and "at vertex", every
 // decision an exact orientation against p and q.
 class SegmentWalker {
  public:
-  SegmentWalker(const Triangulation& t, const Point2& p, const Point2& q,
+  SegmentWalker(const ServingMesh& mesh, const Point2& p, const Point2& q,
                 uint64_t max_faces, uint64_t* faces, SegmentTrace* out)
-      : t_(t),
+      : mesh_(mesh),
         p_(p),
         q_(q),
-        cp_(Triangulation::ToCgal(p)),
-        cq_(Triangulation::ToCgal(q)),
-        direction_(CGAL::compare_xy(cp_, cq_)),
+        direction_(CompareXY(p, q)),
         max_faces_(max_faces),
         faces_(faces),
         out_(out) {}
 
-  Status Run(const WalkOutcome& at) {
+  Status Run(const MeshWalkOutcome& at) {
     face_ = at.face;
     out_->end_face = at.face;
     Status s;
     switch (at.type) {
       case LocationType::kVertex:
-        vertex_ = at.face->vertex(at.feature);
+        vertex_ = mesh_.Corner(at.face, at.feature);
         state_ = State::kAtVertex;
         break;
       case LocationType::kOutsideConvexHull:
@@ -59,37 +62,38 @@ class SegmentWalker {
  private:
   enum class State { kInFace, kAtVertex, kDone };
 
-  CGAL::Orientation Side(Vertex_handle v) const {
-    return CGAL::orientation(cp_, cq_, v->point());
+  const Point2& PointOf(uint32_t v) const { return mesh_.arrays().points[v]; }
+  // Which side of the line p->q mesh vertex v is on.
+  Side SideOf(uint32_t v) const { return Orientation(p_, q_, PointOf(v)); }
+  // Whether mesh vertex w (on the line) is strictly ahead of `from` along
+  // p->q.
+  bool Ahead(const Point2& from, uint32_t w) const {
+    return CompareXY(from, PointOf(w)) == direction_;
   }
-  // Whether w (on the line) is strictly ahead of `from` along p->q.
-  bool Ahead(const CgalPoint& from, Vertex_handle w) const {
-    return CGAL::compare_xy(from, w->point()) == direction_;
-  }
-  bool ContainsQ(Face_handle f) const {
+  bool ContainsQ(uint32_t f) const {
     for (int i = 0; i < 3; ++i) {
-      if (CGAL::orientation(f->vertex(Ccw(i))->point(),
-                            f->vertex(Cw(i))->point(), cq_) == CGAL::NEGATIVE) {
+      if (Orientation(mesh_.CornerPoint(f, Ccw(i)), mesh_.CornerPoint(f, Cw(i)),
+                      q_) == Side::kRight) {
         return false;
       }
     }
     return true;
   }
 
-  ProfileRegion FaceRegion(Face_handle f) const {
-    if (t_.InDomain(f)) return {f, LocationType::kFace};
-    return {Face_handle(), LocationType::kOutsideDomain};
+  ProfileRegion FaceRegion(uint32_t f) const {
+    if (mesh_.InDomain(f)) return {f, LocationType::kFace};
+    return {ServingMesh::kNoFace, LocationType::kOutsideDomain};
   }
-  // Along the finite edge (f, i): defined if a face on either side is.
-  ProfileRegion EdgeRegion(Face_handle f, int i) const {
-    const Face_handle g = f->neighbor(i);
-    if (!t_.InDomain(f) && !t_.IsInfinite(g) && t_.InDomain(g)) {
+  // Along the edge (f, i): defined if a face on either side is.
+  ProfileRegion EdgeRegion(uint32_t f, int i) const {
+    const uint32_t g = mesh_.Neighbor(f, i);
+    if (!mesh_.InDomain(f) && !ServingMesh::IsHull(g) && mesh_.InDomain(g)) {
       return {g, LocationType::kFace};
     }
     return FaceRegion(f);
   }
 
-  Status Enter(Face_handle f) {
+  Status Enter(uint32_t f) {
     face_ = f;
     out_->end_face = f;
     if (++*faces_ > max_faces_) return TooManyFaces(max_faces_);
@@ -100,7 +104,7 @@ class SegmentWalker {
     state_ = State::kDone;
   }
   void LeaveHull() {
-    Finish({Face_handle(), LocationType::kOutsideConvexHull});
+    Finish({ServingMesh::kNoFace, LocationType::kOutsideConvexHull});
   }
   void Stop(const ProfileRegion& before, ProfilePointKind kind,
             const Point2& point) {
@@ -110,17 +114,17 @@ class SegmentWalker {
         ((point.x - p_.x) * dx + (point.y - p_.y) * dy) / (dx * dx + dy * dy);
     out_->stops.push_back({before, kind, point, std::clamp(t, 0.0, 1.0)});
   }
-  void StopAtVertex(const ProfileRegion& before, Vertex_handle v) {
-    Stop(before, ProfilePointKind::kMeshVertex,
-         Triangulation::FromCgal(v->point()));
+  // Stops at corner v of face f.
+  void StopAtVertex(const ProfileRegion& before, uint32_t f, uint32_t v) {
+    Stop(before, ProfilePointKind::kMeshVertex, PointOf(v));
+    face_ = f;
     vertex_ = v;
     state_ = State::kAtVertex;
   }
   // Where the line crosses the edge (a, b), rounded.
-  void StopOnEdge(const ProfileRegion& before, Vertex_handle a,
-                  Vertex_handle b) {
-    const Point2 pa = Triangulation::FromCgal(a->point());
-    const Point2 pb = Triangulation::FromCgal(b->point());
+  void StopOnEdge(const ProfileRegion& before, uint32_t a, uint32_t b) {
+    const Point2& pa = PointOf(a);
+    const Point2& pb = PointOf(b);
     const double oa = Cross(p_, q_, pa);
     const double ob = Cross(p_, q_, pb);
     const double s = oa == ob ? 0.5 : std::clamp(oa / (oa - ob), 0.0, 1.0);
@@ -130,8 +134,8 @@ class SegmentWalker {
   // Crosses edge i of face_ (already recorded, if at all) into its
   // neighbour.
   Status CrossEdge(int i) {
-    const Face_handle next = face_->neighbor(i);
-    if (t_.IsInfinite(next)) {
+    const uint32_t next = mesh_.Neighbor(face_, i);
+    if (ServingMesh::IsHull(next)) {
       LeaveHull();
       return Status::OK();
     }
@@ -142,48 +146,43 @@ class SegmentWalker {
   // p is outside the hull: find the hull edge or vertex the segment enters
   // by, if any.
   Status EnterHull() {
-    const auto& dt = t_.cgal();
-    auto fc = dt.incident_faces(dt.infinite_vertex());
-    const auto done = fc;
-    do {
-      const int k = fc->index(dt.infinite_vertex());
-      const Face_handle f = fc->neighbor(k);
-      const int i = dt.mirror_index(fc, k);
-      const Vertex_handle a = f->vertex(Ccw(i));
-      const Vertex_handle b = f->vertex(Cw(i));
-      const CGAL::Orientation oa = Side(a);
-      const CGAL::Orientation ob = Side(b);
-      if (oa == CGAL::NEGATIVE || ob == CGAL::POSITIVE ||
-          (oa == CGAL::ZERO && ob == CGAL::ZERO) ||
-          CGAL::orientation(a->point(), b->point(), cp_) != CGAL::NEGATIVE) {
+    for (const uint32_t edge : mesh_.hull()) {
+      const uint32_t f = ServingMesh::EdgeFace(edge);
+      const int i = ServingMesh::EdgeIndex(edge);
+      const uint32_t a = mesh_.Corner(f, Ccw(i));
+      const uint32_t b = mesh_.Corner(f, Cw(i));
+      const Side oa = SideOf(a);
+      const Side ob = SideOf(b);
+      if (oa == Side::kRight || ob == Side::kLeft ||
+          (oa == Side::kOn && ob == Side::kOn) ||
+          Orientation(PointOf(a), PointOf(b), p_) != Side::kRight) {
         continue;
       }
-      const CGAL::Orientation side_q =
-          CGAL::orientation(a->point(), b->point(), cq_);
-      if (side_q == CGAL::NEGATIVE) continue;
+      const Side side_q = Orientation(PointOf(a), PointOf(b), q_);
+      if (side_q == Side::kRight) continue;
       out_->end_face = f;
-      if (side_q == CGAL::ZERO) break;  // it reaches the hull at q
-      const ProfileRegion outside{Face_handle(),
+      if (side_q == Side::kOn) break;  // it reaches the hull at q
+      const ProfileRegion outside{ServingMesh::kNoFace,
                                   LocationType::kOutsideConvexHull};
-      if (oa == CGAL::ZERO || ob == CGAL::ZERO) {
-        StopAtVertex(outside, oa == CGAL::ZERO ? a : b);
+      if (oa == Side::kOn || ob == Side::kOn) {
+        StopAtVertex(outside, f, oa == Side::kOn ? a : b);
         return Status::OK();
       }
       StopOnEdge(outside, a, b);
       state_ = State::kInFace;
       return Enter(f);
-    } while (++fc != done);
+    }
     LeaveHull();
     return Status::OK();
   }
 
   Status StepInFace() {
-    const Face_handle f = face_;
-    CGAL::Orientation o[3];
-    for (int i = 0; i < 3; ++i) o[i] = Side(f->vertex(i));
+    const uint32_t f = face_;
+    Side o[3];
+    for (int i = 0; i < 3; ++i) o[i] = SideOf(mesh_.Corner(f, i));
     int along = -1;  // the edge the line runs along, if any
     for (int k = 0; k < 3; ++k) {
-      if (o[Ccw(k)] == CGAL::ZERO && o[Cw(k)] == CGAL::ZERO) along = k;
+      if (o[Ccw(k)] == Side::kOn && o[Cw(k)] == Side::kOn) along = k;
     }
     const ProfileRegion region =
         along >= 0 ? EdgeRegion(f, along) : FaceRegion(f);
@@ -192,115 +191,100 @@ class SegmentWalker {
       return Status::OK();
     }
     if (along >= 0) {
-      const Vertex_handle a = f->vertex(Ccw(along));
-      StopAtVertex(region, Ahead(cp_, a) ? a : f->vertex(Cw(along)));
+      const uint32_t a = mesh_.Corner(f, Ccw(along));
+      StopAtVertex(region, f, Ahead(p_, a) ? a : mesh_.Corner(f, Cw(along)));
       return Status::OK();
     }
     for (int k = 0; k < 3; ++k) {
-      const Vertex_handle a = f->vertex(Ccw(k));
-      const Vertex_handle b = f->vertex(Cw(k));
-      if (o[Ccw(k)] != CGAL::NEGATIVE || o[Cw(k)] != CGAL::POSITIVE) continue;
+      if (o[Ccw(k)] != Side::kRight || o[Cw(k)] != Side::kLeft) continue;
       // An exit edge through p is crossed at p: no stop of its own.
-      if (CGAL::orientation(a->point(), b->point(), cp_) != CGAL::ZERO) {
-        StopOnEdge(region, a, b);
+      if (Orientation(mesh_.CornerPoint(f, Ccw(k)), mesh_.CornerPoint(f, Cw(k)),
+                      p_) != Side::kOn) {
+        StopOnEdge(region, mesh_.Corner(f, Ccw(k)), mesh_.Corner(f, Cw(k)));
       }
       return CrossEdge(k);
     }
     for (int k = 0; k < 3; ++k) {
-      if (o[k] == CGAL::ZERO && Ahead(cp_, f->vertex(k))) {
-        StopAtVertex(region, f->vertex(k));
+      if (o[k] == Side::kOn && Ahead(p_, mesh_.Corner(f, k))) {
+        StopAtVertex(region, f, mesh_.Corner(f, k));
         return Status::OK();
       }
     }
     return Status::Internal("profile: the walk lost the line in a face");
   }
 
+  // In face f around vertex_: the step if the line leaves vertex_ into f or
+  // along one of f's edges at vertex_; false, with nothing done, otherwise.
+  bool StepFromVertexInto(uint32_t f, Status* status) {
+    const uint32_t v = vertex_;
+    const int iv = mesh_.IndexOf(f, v);
+    const uint32_t a = mesh_.Corner(f, Ccw(iv));
+    const uint32_t b = mesh_.Corner(f, Cw(iv));
+    const Side oa = SideOf(a);
+    const Side ob = SideOf(b);
+    out_->end_face = f;
+    if (oa == Side::kRight && ob == Side::kLeft) {
+      *status = Enter(f);
+      if (!status->ok()) return true;
+      const ProfileRegion region = FaceRegion(f);
+      if (ContainsQ(f)) {
+        Finish(region);
+        return true;
+      }
+      StopOnEdge(region, a, b);
+      *status = CrossEdge(iv);
+      return true;
+    }
+    // Along edge (v, a) (opposite b) or (v, b) (opposite a).
+    for (const auto& [w, edge] :
+         {std::pair{a, Cw(iv)}, std::pair{b, Ccw(iv)}}) {
+      if (SideOf(w) != Side::kOn || !Ahead(PointOf(v), w)) continue;
+      const ProfileRegion region = EdgeRegion(f, edge);
+      if (ContainsQ(f)) {
+        Finish(region);
+      } else {
+        StopAtVertex(region, f, w);
+      }
+      return true;
+    }
+    return false;
+  }
+
+  // At vertex_ (a corner of face_): into the face or along the edge the
+  // line leaves it by, trying face_ first and then the faces around it.
   Status StepAtVertex() {
-    const Vertex_handle v = vertex_;
-    const auto& dt = t_.cgal();
-    auto fc = dt.incident_faces(v);
-    const auto done = fc;
-    do {
-      if (t_.IsInfinite(fc)) continue;
-      const Face_handle f = fc;
-      const int iv = f->index(v);
-      const Vertex_handle a = f->vertex(Ccw(iv));
-      const Vertex_handle b = f->vertex(Cw(iv));
-      const CGAL::Orientation oa = Side(a);
-      const CGAL::Orientation ob = Side(b);
-      out_->end_face = f;
-      if (oa == CGAL::NEGATIVE && ob == CGAL::POSITIVE) {
-        Status s = Enter(f);
-        if (!s.ok()) return s;
-        const ProfileRegion region = FaceRegion(f);
-        if (ContainsQ(f)) {
-          Finish(region);
-          return Status::OK();
-        }
-        StopOnEdge(region, a, b);
-        return CrossEdge(iv);
-      }
-      // Along edge (v, a) (opposite b) or (v, b) (opposite a).
-      for (const auto& [w, edge] :
-           {std::pair{a, Cw(iv)}, std::pair{b, Ccw(iv)}}) {
-        if (Side(w) != CGAL::ZERO || !Ahead(v->point(), w)) continue;
-        const ProfileRegion region = EdgeRegion(f, edge);
-        if (ContainsQ(f)) {
-          Finish(region);
-        } else {
-          StopAtVertex(region, w);
-        }
-        return Status::OK();
-      }
-    } while (++fc != done);
+    Status status;
+    const uint32_t start = face_;
+    if (StepFromVertexInto(start, &status) ||
+        mesh_.AnyFaceAround(start, vertex_, [&](uint32_t g) {
+          return StepFromVertexInto(g, &status);
+        })) {
+      return status;
+    }
     LeaveHull();
     return Status::OK();
   }
 
-  const Triangulation& t_;
+  const ServingMesh& mesh_;
   const Point2 p_;
   const Point2 q_;
-  const CgalPoint cp_;
-  const CgalPoint cq_;
-  // compare_xy(p, q): which way "ahead" is, lexicographically.
-  const CGAL::Comparison_result direction_;
+  // CompareXY(p, q): which way "ahead" is, lexicographically.
+  const int direction_;
   const uint64_t max_faces_;
   uint64_t* const faces_;
   SegmentTrace* const out_;
   State state_ = State::kDone;
-  Face_handle face_;
-  Vertex_handle vertex_;
+  // The face the walk is in; at a vertex, a face with vertex_ as a corner.
+  uint32_t face_ = 0;
+  uint32_t vertex_ = 0;
 };
 
 }  // namespace
 
-Face_handle ClosedDomainFace(const Triangulation& t, const WalkOutcome& at) {
-  switch (at.type) {
-    case LocationType::kFace:
-      break;
-    case LocationType::kEdge: {
-      const Face_handle g = at.face->neighbor(at.feature);
-      if (!t.InDomain(at.face) && !t.IsInfinite(g) && t.InDomain(g)) return g;
-      break;
-    }
-    case LocationType::kVertex: {
-      auto fc = t.cgal().incident_faces(at.face->vertex(at.feature));
-      const auto done = fc;
-      do {
-        if (!t.IsInfinite(fc) && t.InDomain(fc)) return fc;
-      } while (++fc != done);
-      return Face_handle();
-    }
-    default:
-      return Face_handle();
-  }
-  return t.InDomain(at.face) ? at.face : Face_handle();
-}
-
-Status WalkSegment(const Triangulation& t, const WalkOutcome& at,
+Status WalkSegment(const ServingMesh& mesh, const MeshWalkOutcome& at,
                    const Point2& p, const Point2& q, uint64_t max_faces,
                    uint64_t* faces, SegmentTrace* out) {
-  return SegmentWalker(t, p, q, max_faces, faces, out).Run(at);
+  return SegmentWalker(mesh, p, q, max_faces, faces, out).Run(at);
 }
 
 Status TooManyFaces(uint64_t max_faces) {

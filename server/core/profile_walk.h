@@ -1,7 +1,8 @@
 // The straight-line walk behind TraceProfile (profile.h): what one segment
-// of the line meets, traced exactly. Internal to profile.cc.
+// of the line meets, traced exactly on the serving mesh. Internal to
+// profile_trace.cc.
 //
-// Thread-safety: pure functions over an immutable Triangulation.
+// Thread-safety: pure functions over an immutable ServingMesh.
 
 #ifndef LOCATOR_CORE_PROFILE_WALK_H_
 #define LOCATOR_CORE_PROFILE_WALK_H_
@@ -12,16 +13,17 @@
 #include "common/geometry.h"
 #include "common/status.h"
 #include "server/core/locate_result.h"
+#include "server/core/mesh_walk.h"
 #include "server/core/profile.h"
-#include "server/core/triangulation.h"
-#include "server/core/walk.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
 // What the surface is along one stretch of the line between two stops.
 struct ProfileRegion {
-  // An in-domain face the stretch runs through or along; null in a gap.
-  Triangulation::Face_handle face;
+  // An in-domain face the stretch runs through or along;
+  // ServingMesh::kNoFace in a gap.
+  uint32_t face = ServingMesh::kNoFace;
   // kFace where the surface is defined, else kOutsideDomain or
   // kOutsideConvexHull.
   LocationType type = LocationType::kFace;
@@ -41,22 +43,17 @@ struct SegmentTrace {
   std::vector<SegmentStop> stops;
   // The stretch from the last stop (or p) to q.
   ProfileRegion last;
-  // A finite face at or near q: a hint for the walk to the next segment.
-  Triangulation::Face_handle end_face;
+  // A face at or near q: a hint for the walk to the next segment.
+  uint32_t end_face = 0;
 };
-
-// An in-domain face whose closed triangle contains the point Walk() located
-// at `at`; null outside the hull or the closed domain.
-Triangulation::Face_handle ClosedDomainFace(const Triangulation& t,
-                                            const WalkOutcome& at);
 
 // Traces the segment p->q (p != q) from `at`, Walk()'s answer for p. Adds
 // the faces it enters to *faces; ResourceExhausted once that passes
 // max_faces.
-[[nodiscard]] Status WalkSegment(const Triangulation& t, const WalkOutcome& at,
-                                 const Point2& p, const Point2& q,
-                                 uint64_t max_faces, uint64_t* faces,
-                                 SegmentTrace* out);
+[[nodiscard]] Status WalkSegment(const ServingMesh& mesh,
+                                 const MeshWalkOutcome& at, const Point2& p,
+                                 const Point2& q, uint64_t max_faces,
+                                 uint64_t* faces, SegmentTrace* out);
 
 // The ResourceExhausted status for a line entering more than max_faces.
 Status TooManyFaces(uint64_t max_faces);

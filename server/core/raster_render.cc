@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "server/core/mesh_walk.h"
 #include "server/core/surface_value.h"
-#include "server/core/walk.h"
 
 namespace locator {
 
@@ -37,33 +37,27 @@ namespace {
 // The value at the cell centre q that the walk `w` located, or nodata
 // outside the hull or the domain (a centre on the domain's boundary edge or
 // vertex takes the in-domain side).
-double CellValue(const Triangulation& t, const RasterSpec& spec,
-                 const WalkOutcome& w, const Point2& q) {
-  if (w.type == LocationType::kOutsideConvexHull || !t.has_values()) {
-    return spec.nodata;
-  }
-  Triangulation::Face_handle f = w.face;
-  if (!t.InDomain(f)) {
-    int feature = w.feature;
-    if (!t.MoveIntoDomain(&f, w.type, &feature)) return spec.nodata;
-  }
-  return ValueAt(t, f, q, spec.interpolation);
+double CellValue(const ServingMesh& mesh, const RasterSpec& spec,
+                 const MeshWalkOutcome& w, const Point2& q) {
+  if (!mesh.has_values()) return spec.nodata;
+  const uint32_t f = ClosedDomainFace(mesh, w);
+  if (f == ServingMesh::kNoFace) return spec.nodata;
+  return ValueAt(mesh, f, q, spec.interpolation);
 }
 
 }  // namespace
 
-void RenderRows(const Triangulation& t, Triangulation::Face_handle hint,
-                const RasterSpec& spec, uint32_t first_row, uint32_t rows,
-                double* out) {
-  Triangulation::Face_handle row_start = hint;
+void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
+                uint32_t first_row, uint32_t rows, double* out) {
+  uint32_t row_start = hint;
   for (uint32_t r = 0; r < rows; ++r) {
-    Triangulation::Face_handle face = row_start;
+    uint32_t face = row_start;
     for (uint32_t col = 0; col < spec.width; ++col) {
       const Point2 q = spec.CellCentre(col, first_row + r);
-      const WalkOutcome w = Walk(t, face, q);
+      const MeshWalkOutcome w = Walk(mesh, face, q);
       face = w.face;
       if (col == 0) row_start = face;
-      *out++ = CellValue(t, spec, w, q);
+      *out++ = CellValue(mesh, spec, w, q);
     }
   }
 }

@@ -5,7 +5,7 @@
 // the scan crosses. Exact like every walk: CGAL's orientation_2 decides the
 // triangle, also for centres on edges and vertices.
 //
-// Thread-safety: a pure function over an immutable Triangulation; threads
+// Thread-safety: a pure function over an immutable ServingMesh; threads
 // render disjoint rows at once.
 
 #ifndef LOCATOR_CORE_RASTER_RENDER_H_
@@ -14,18 +14,17 @@
 #include <cstdint>
 
 #include "server/core/raster.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
 // Renders rows [first_row, first_row + rows) of `spec` into `out` (rows x
 // spec.width values, row by row, west to east), starting the first walk at
-// the finite face `hint`. Preconditions: CheckRasterSpec(spec).ok(), the
-// rows lie within spec.height, and CheckInterpolation(t,
-// spec.interpolation).ok().
-void RenderRows(const Triangulation& t, Triangulation::Face_handle hint,
-                const RasterSpec& spec, uint32_t first_row, uint32_t rows,
-                double* out);
+// face `hint`. Preconditions: CheckRasterSpec(spec).ok(), the rows lie
+// within spec.height, and CheckInterpolation(spec.interpolation) is OK for
+// the mesh's dataset.
+void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
+                uint32_t first_row, uint32_t rows, double* out);
 
 }  // namespace locator
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "server/core/barycentric.h"
+#include "server/core/hilbert.h"
 #include "server/core/orientation.h"
 #include "server/core/segment_distance.h"
 
@@ -38,6 +39,32 @@ std::array<uint32_t, 3> ServingMesh::CornerIds(uint32_t f) const {
 size_t ServingMesh::MemoryBytes() const {
   return a_.triangles.size_bytes() + a_.points.size_bytes() +
          a_.values.size_bytes() + a_.ids.size_bytes() + a_.hull.size_bytes();
+}
+
+uint32_t ServingMesh::CentroidKey(const Point2& a, const Point2& b,
+                                  const Point2& c, const BoundingBox& box) {
+  Point2 centroid{0, 0};
+  for (const Point2* p : {&a, &b, &c}) {
+    centroid.x += p->x / 3;
+    centroid.y += p->y / 3;
+  }
+  return HilbertKey(centroid, box);
+}
+
+uint32_t ServingMesh::TriangleNear(const Point2& q) const {
+  const uint32_t key = HilbertKey(q, a_.box);
+  uint32_t lo = 0;
+  uint32_t hi = a_.in_domain;  // the first triangle whose key is >= key
+  while (lo < hi) {
+    const uint32_t mid = lo + (hi - lo) / 2;
+    if (CentroidKey(CornerPoint(mid, 0), CornerPoint(mid, 1),
+                    CornerPoint(mid, 2), a_.box) < key) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return std::min(lo, a_.in_domain - 1);
 }
 
 void ServingMesh::NearestVisibleHullEdge(uint32_t* face, int* edge,

@@ -137,6 +137,14 @@ class ServingMesh {
   std::array<uint32_t, 3> CornerIds(uint32_t f) const;
   // A hull face: where a walk starts without a hint.
   uint32_t DefaultStart() const { return EdgeFace(a_.hull[0]); }
+  // The in-domain triangle whose centroid follows q's position along the
+  // Hilbert curve (the last one if none does): a start near q found by
+  // binary search over the triangle order, O(log F), without a table.
+  uint32_t TriangleNear(const Point2& q) const;
+  // The Hilbert key over `box` of the centroid of triangle a, b, c: the
+  // order of the triangles within each group.
+  static uint32_t CentroidKey(const Point2& a, const Point2& b, const Point2& c,
+                              const BoundingBox& box);
 
   // Fills `out` (all but cost) for q located at `type` in face f, as
   // Triangulation::Describe does: for kOutsideConvexHull, `feature` is the
@@ -162,12 +170,6 @@ class ServingMesh {
   std::vector<uint32_t> FacesWithCorners(
       std::span<const std::array<uint32_t, 3>> ids) const;
 
-  // Bytes of the arrays (what a mesh file holds).
-  size_t MemoryBytes() const;
-
- private:
-  void DescribeOutsideDomain(uint32_t f, const Point2& q,
-                             LocateResult* out) const;
   // Calls visit(g) for the faces g around vertex v of face f, other than f:
   // round one way, then, if the hull stopped that, the other way. Stops at
   // the first g for which visit returns true, and returns whether there
@@ -179,13 +181,21 @@ class ServingMesh {
       for (;;) {
         const int j = IndexOf(g, v);
         const uint32_t n = Neighbor(g, forward ? Ccw(j) : Cw(j));
-        if (IsHull(n) || n == f) break;
+        if (IsHull(n)) break;
+        if (n == f) return false;  // round v, which is not on the hull
         if (visit(n)) return true;
         g = n;
       }
     }
     return false;
   }
+
+  // Bytes of the arrays (what a mesh file holds).
+  size_t MemoryBytes() const;
+
+ private:
+  void DescribeOutsideDomain(uint32_t f, const Point2& q,
+                             LocateResult* out) const;
 
   std::unique_ptr<const Storage> storage_;
   Arrays a_;

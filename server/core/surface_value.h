@@ -1,29 +1,32 @@
 // The surface's value at a point of a triangle, interpolated as asked (see
 // interpolation.h): the one evaluation that Locate, LocateBatch, profiles
-// and rasters share.
+// and rasters share. It runs on the serving mesh.
 //
-// Thread-safety: pure functions over an immutable Triangulation.
+// Thread-safety: pure functions over an immutable ServingMesh.
 
 #ifndef LOCATOR_CORE_SURFACE_VALUE_H_
 #define LOCATOR_CORE_SURFACE_VALUE_H_
 
+#include <cstdint>
+
 #include "common/geometry.h"
 #include "common/status.h"
 #include "server/core/interpolation.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
-// OK if values can be interpolated `how` on t; InvalidArgument saying why
-// not otherwise (natural neighbour on a triangulation with constraints).
-[[nodiscard]] Status CheckInterpolation(const Triangulation& t,
+// OK if values can be interpolated `how` on a triangulation with
+// `constraints` constrained segments; InvalidArgument saying why not
+// otherwise (natural neighbour with constraints).
+[[nodiscard]] Status CheckInterpolation(uint64_t constraints,
                                         Interpolation how);
 
-// The value at q, which lies in the closed triangle of the finite in-domain
-// face f, interpolated `how`. Preconditions: t.has_values() and
-// CheckInterpolation(t, how).ok().
-double ValueAt(const Triangulation& t, Triangulation::Face_handle f,
-               const Point2& q, Interpolation how);
+// The value at q, which lies in the closed triangle of the in-domain face
+// f, interpolated `how`. Preconditions: mesh.has_values() and
+// CheckInterpolation(how) is OK for the mesh's dataset.
+double ValueAt(const ServingMesh& mesh, uint32_t f, const Point2& q,
+               Interpolation how);
 
 }  // namespace locator
 

@@ -131,29 +131,6 @@ bool Triangulation::FaceWithCorners(const std::array<uint32_t, 3>& ids,
   return false;
 }
 
-bool Triangulation::MoveIntoDomain(Face_handle* f, LocationType type,
-                                   int* feature) const {
-  if (type == LocationType::kEdge) {
-    const Face_handle n = (*f)->neighbor(*feature);
-    if (dt_.is_infinite(n) || !InDomain(n)) return false;
-    *feature = dt_.mirror_index(*f, *feature);
-    *f = n;
-    return true;
-  }
-  if (type != LocationType::kVertex) return false;
-  const Vertex_handle v = (*f)->vertex(*feature);
-  auto g = dt_.incident_faces(v, *f);
-  const auto end = g;
-  do {
-    if (!dt_.is_infinite(g) && InDomain(g)) {
-      *f = g;
-      *feature = g->index(v);
-      return true;
-    }
-  } while (++g != end);
-  return false;
-}
-
 LocateResult Triangulation::ReferenceLocate(const Point2& q) const {
   Cdt::Locate_type lt;
   int li = -1;

@@ -107,10 +107,6 @@ class Triangulation {
   size_t num_holes() const { return num_holes_; }
   // Whether the finite face f is in the domain.
   bool InDomain(Face_handle f) const { return f->info() >= 0; }
-  // The stable triangle id of the finite face f, or -1 outside the domain.
-  int64_t TriangleId(Face_handle f) const {
-    return f->info() >= 0 ? f->info() : -1;
-  }
   // The index of the finite face f in mesh().
   uint32_t MeshFace(Face_handle f) const {
     return static_cast<uint32_t>(f->info() >= 0 ? f->info() : -2 - f->info());
@@ -153,11 +149,6 @@ class Triangulation {
   // range or was merged into an earlier point.
   bool FaceWithCorners(const std::array<uint32_t, 3>& ids,
                        Face_handle* face) const;
-
-  // For a point on edge/vertex `feature` (kEdge/kVertex) of the
-  // out-of-domain finite face f, an in-domain face sharing that edge or
-  // vertex (updating f and feature); false if none (or for kFace).
-  bool MoveIntoDomain(Face_handle* f, LocationType type, int* feature) const;
 
   static CgalPoint ToCgal(const Point2& p) { return CgalPoint(p.x, p.y); }
   static Point2 FromCgal(const CgalPoint& p) { return Point2{p.x(), p.y()}; }

@@ -77,13 +77,10 @@ Status Triangulation::Builder::BuildServingMesh() {
   std::vector<FaceKey> faces;
   faces.reserve(face_count);
   for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f) {
-    Point2 centroid{0, 0};
-    for (int i = 0; i < 3; ++i) {
-      centroid.x += f->vertex(i)->point().x() / 3;
-      centroid.y += f->vertex(i)->point().y() / 3;
-    }
-    faces.push_back(FaceKey{!t_.InDomain(f), HilbertKey(centroid, box),
-                            t_.CornerIds(f), f});
+    const uint32_t key = ServingMesh::CentroidKey(
+        FromCgal(f->vertex(0)->point()), FromCgal(f->vertex(1)->point()),
+        FromCgal(f->vertex(2)->point()), box);
+    faces.push_back(FaceKey{!t_.InDomain(f), key, t_.CornerIds(f), f});
   }
   std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
     return std::tie(a.out, a.key, a.ids) < std::tie(b.out, b.key, b.ids);

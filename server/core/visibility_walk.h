@@ -1,7 +1,7 @@
 // VisibilityWalk: from a start triangle, step across any edge that has the
-// query strictly on its far side, until no such edge is left. One template
-// for both triangulations the engine walks: the serving mesh (mesh_walk.h,
-// every locate) and CGAL's (walk.h, the surface code and tests).
+// query strictly on its far side, until no such edge is left, over any
+// Topology; the serving mesh's is in mesh_walk.h (every locate, value,
+// profile and raster).
 //
 // Every side test is CGAL's exact orientation_2, so the answer is exact,
 // including points on edges and vertices. The walk remembers the edge it

@@ -13,7 +13,8 @@
 #include <vector>
 
 #include "server/core/dataset.h"
-#include "server/core/walk.h"
+#include "server/core/mesh_walk.h"
+#include "server/core/triangulation.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {
@@ -28,19 +29,26 @@ using test::UniformQueries;
 // Weights by vertex coordinates, to compare triangulations.
 using WeightMap = std::map<std::pair<double, double>, double>;
 
-// SibsonCoordinates from the face the walk finds for q.
+// SibsonCoordinates on t's serving mesh from the face the walk finds for q.
 bool Sibson(const Triangulation& t, const Point2& q,
             std::vector<NaturalNeighbor>* out) {
-  return SibsonCoordinates(t, Walk(t, t.DefaultStart(), q).face, q, out);
+  const ServingMesh& mesh = t.mesh();
+  return SibsonCoordinates(mesh, Walk(mesh, mesh.DefaultStart(), q).face, q,
+                           out);
+}
+
+const Point2& PointOf(const Triangulation& t, const NaturalNeighbor& n) {
+  return t.mesh().arrays().points[n.vertex];
 }
 
 // The weights by their vertex's coordinates times 2^-exponent.
-WeightMap ByPoint(const std::vector<NaturalNeighbor>& neighbors,
+WeightMap ByPoint(const Triangulation& t,
+                  const std::vector<NaturalNeighbor>& neighbors,
                   int exponent = 0) {
   WeightMap weights;
   for (const NaturalNeighbor& n : neighbors) {
-    const auto& p = n.vertex->point();
-    weights[{std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent)}] +=
+    const Point2& p = PointOf(t, n);
+    weights[{std::ldexp(p.x, -exponent), std::ldexp(p.y, -exponent)}] +=
         n.weight;
   }
   return weights;
@@ -60,10 +68,11 @@ double MaxDifference(const WeightMap& a, const WeightMap& b) {
   return max;
 }
 
-double Interpolate(const std::vector<NaturalNeighbor>& neighbors) {
+double Interpolate(const Triangulation& t,
+                   const std::vector<NaturalNeighbor>& neighbors) {
   double z = 0;
   for (const NaturalNeighbor& n : neighbors) {
-    z += n.weight * n.vertex->info().value;
+    z += n.weight * t.mesh().arrays().values[n.vertex];
   }
   return z;
 }
@@ -71,7 +80,8 @@ double Interpolate(const std::vector<NaturalNeighbor>& neighbors) {
 // Checks what holds for every q inside the hull: positive weights summing
 // to 1 whose combination of the vertices is q, and (for a dataset on the
 // plane) of their values is Plane(q), both to `tolerance` of the scale.
-void ExpectSibsonProperties(const std::vector<NaturalNeighbor>& neighbors,
+void ExpectSibsonProperties(const Triangulation& t,
+                            const std::vector<NaturalNeighbor>& neighbors,
                             const Point2& q, double scale, double z_range,
                             double tolerance) {
   double sum = 0;
@@ -79,13 +89,13 @@ void ExpectSibsonProperties(const std::vector<NaturalNeighbor>& neighbors,
   for (const NaturalNeighbor& n : neighbors) {
     EXPECT_GT(n.weight, 0) << q.x << " " << q.y;
     sum += n.weight;
-    combination.x += n.weight * n.vertex->point().x();
-    combination.y += n.weight * n.vertex->point().y();
+    combination.x += n.weight * PointOf(t, n).x;
+    combination.y += n.weight * PointOf(t, n).y;
   }
   EXPECT_NEAR(sum, 1, 1e-12) << q.x << " " << q.y;
   EXPECT_NEAR(combination.x, q.x, tolerance * scale) << q.x << " " << q.y;
   EXPECT_NEAR(combination.y, q.y, tolerance * scale) << q.x << " " << q.y;
-  EXPECT_NEAR(Interpolate(neighbors), Plane(q), tolerance * z_range)
+  EXPECT_NEAR(Interpolate(t, neighbors), Plane(q), tolerance * z_range)
       << q.x << " " << q.y;
 }
 
@@ -127,8 +137,8 @@ TEST(NaturalNeighborTest, AgreesWithCgal) {
     ASSERT_EQ(ours, reference.Weights(q, &expected)) << q.x << " " << q.y;
     if (!ours) continue;
     ++inside;
-    max_difference =
-        std::max(max_difference, MaxDifference(ByPoint(neighbors), expected));
+    max_difference = std::max(max_difference,
+                              MaxDifference(ByPoint(*t, neighbors), expected));
   }
   EXPECT_GE(inside, 2000u);
   EXPECT_LE(max_difference, 1e-9);
@@ -143,7 +153,7 @@ TEST(NaturalNeighborTest, ReproducesThePlane) {
     if (!Sibson(*t, q, &neighbors)) continue;
     ++inside;
     // z spans 6 over the unit square.
-    ExpectSibsonProperties(neighbors, q, 1, 6, 1e-9);
+    ExpectSibsonProperties(*t, neighbors, q, 1, 6, 1e-9);
   }
   EXPECT_GE(inside, 1800u);
 }
@@ -156,7 +166,8 @@ TEST(NaturalNeighborTest, DataPointsTakeTheirVertexOnly) {
   for (size_t i = 0; i < dataset.points.size(); ++i) {
     ASSERT_TRUE(Sibson(*t, dataset.points[i], &neighbors));
     ASSERT_EQ(neighbors.size(), 1u);
-    EXPECT_EQ(neighbors[0].vertex, t->VertexOfInput(i));
+    EXPECT_EQ(t->mesh().PublicId(neighbors[0].vertex),
+              t->VertexOfInput(i)->info().id);
     EXPECT_EQ(neighbors[0].weight, 1);
   }
 }
@@ -172,7 +183,7 @@ TEST(NaturalNeighborTest, ContinuousAcrossEdges) {
   std::vector<NaturalNeighbor> neighbors;
   const auto value = [&](const Point2& q) {
     EXPECT_TRUE(Sibson(*t, q, &neighbors)) << q.x << " " << q.y;
-    return Interpolate(neighbors);
+    return Interpolate(*t, neighbors);
   };
   size_t edges = 0;
   size_t k = 0;
@@ -215,9 +226,9 @@ TEST(NaturalNeighborTest, HullEdgesAreLinearAndOutsideIsRefused) {
                      from.y + s * (to.y - from.y)};
       ASSERT_TRUE(Sibson(*t, q, &neighbors)) << q.x << " " << q.y;
       const WeightMap expected = {{{from.x, from.y}, 1 - s}, {{to.x, to.y}, s}};
-      EXPECT_LE(MaxDifference(ByPoint(neighbors), expected), 1e-15)
+      EXPECT_LE(MaxDifference(ByPoint(*t, neighbors), expected), 1e-15)
           << q.x << " " << q.y;
-      ExpectSibsonProperties(neighbors, q, 1, 6, 1e-15);
+      ExpectSibsonProperties(*t, neighbors, q, 1, 6, 1e-15);
       // 1e-12 inside (the sides run counter-clockwise: inward is left),
       // Sibson's coordinates are near this limit (they converge linearly;
       // ~4e-10 off here), although the circumcentre of the side and the
@@ -225,7 +236,7 @@ TEST(NaturalNeighborTest, HullEdgesAreLinearAndOutsideIsRefused) {
       const Point2 in{q.x - 1e-12 * (to.y - from.y),
                       q.y + 1e-12 * (to.x - from.x)};
       ASSERT_TRUE(Sibson(*t, in, &neighbors)) << in.x << " " << in.y;
-      EXPECT_LE(MaxDifference(ByPoint(neighbors), expected), 1e-8)
+      EXPECT_LE(MaxDifference(ByPoint(*t, neighbors), expected), 1e-8)
           << in.x << " " << in.y;
     }
   }
@@ -234,7 +245,7 @@ TEST(NaturalNeighborTest, HullEdgesAreLinearAndOutsideIsRefused) {
                          {-1, -1},
                          {0.5, 1 + 1e-15},
                          {1e300, 0.5}}) {
-    neighbors.assign(1, NaturalNeighbor{t->VertexOfInput(0), 1});
+    neighbors.assign(1, NaturalNeighbor{0, 1});
     EXPECT_FALSE(Sibson(*t, q, &neighbors)) << q.x << " " << q.y;
     EXPECT_TRUE(neighbors.empty());
   }
@@ -262,17 +273,17 @@ TEST(NaturalNeighborTest, CocircularGrid) {
   for (const Point2& q : queries) {
     ASSERT_TRUE(Sibson(*t, q, &neighbors)) << q.x << " " << q.y;
     // z spans 36 over the 7 x 7 square.
-    ExpectSibsonProperties(neighbors, q, 7, 36, 1e-9);
+    ExpectSibsonProperties(*t, neighbors, q, 7, 36, 1e-9);
     ASSERT_TRUE(reference.Weights(q, &expected));
-    max_difference =
-        std::max(max_difference, MaxDifference(ByPoint(neighbors), expected));
+    max_difference = std::max(max_difference,
+                              MaxDifference(ByPoint(*t, neighbors), expected));
   }
   EXPECT_LE(max_difference, 1e-9);
   // The centre of a square is equally near its four corners.
   ASSERT_TRUE(Sibson(*t, {3.5, 2.5}, &neighbors));
   EXPECT_LE(
       MaxDifference(
-          ByPoint(neighbors),
+          ByPoint(*t, neighbors),
           {{{3, 2}, 0.25}, {{4, 2}, 0.25}, {{3, 3}, 0.25}, {{4, 3}, 0.25}}),
       1e-12);
 }
@@ -300,7 +311,8 @@ TEST(NaturalNeighborTest, WeightsDoNotDependOnScale) {
                  &neighbors),
           inside);
       if (!inside) continue;
-      EXPECT_LE(MaxDifference(ByPoint(neighbors, exponent), ByPoint(expected)),
+      EXPECT_LE(MaxDifference(ByPoint(*big, neighbors, exponent),
+                              ByPoint(*t, expected)),
                 1e-12)
           << q.x << " " << q.y;
     }

@@ -3,8 +3,6 @@
 // edges), gaps outside the hull and in a hole, samples against
 // ReferenceLocate, limits and bad input.
 
-#include "server/core/profile_trace.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +16,7 @@
 #include <vector>
 
 #include "server/core/barycentric.h"
+#include "server/core/profile_trace.h"
 #include "server/core/segment_distance.h"
 #include "server/core/triangulation.h"
 #include "tests/core/test_datasets.h"
@@ -62,7 +61,8 @@ Dataset PlaneGrid(int k) {
 Profile Trace(const Triangulation& t, const std::vector<Point2>& line,
               const ProfileOptions& options = ProfileOptions()) {
   Profile profile;
-  const Status s = TraceProfile(t, t.DefaultStart(), line, options, &profile);
+  const Status s =
+      TraceProfile(t.mesh(), t.mesh().DefaultStart(), line, options, &profile);
   EXPECT_TRUE(s.ok()) << s.ToString();
   return profile;
 }
@@ -496,19 +496,22 @@ TEST(ProfileTest, LimitsAndBadInput) {
   ProfileOptions options;
   options.max_faces = 10;
   Profile profile;
-  Status s = TraceProfile(*t, t->DefaultStart(), long_line, options, &profile);
+  Status s = TraceProfile(t->mesh(), t->mesh().DefaultStart(), long_line,
+                          options, &profile);
   EXPECT_EQ(s.code(), Status::Code::kResourceExhausted);
   EXPECT_NE(s.message().find("10"), std::string::npos) << s.message();
   options.max_faces = 100000;
-  EXPECT_TRUE(
-      TraceProfile(*t, t->DefaultStart(), long_line, options, &profile).ok());
+  EXPECT_TRUE(TraceProfile(t->mesh(), t->mesh().DefaultStart(), long_line,
+                           options, &profile)
+                  .ok());
 
   for (const std::vector<Point2>& bad :
        std::vector<std::vector<Point2>>{{},
                                         {{0.5, 0.5}},
                                         {{0.5, 0.5}, {kNaN, 0.5}},
                                         {{0.5, kInf}, {0.5, 0.5}}}) {
-    s = TraceProfile(*t, t->DefaultStart(), bad, ProfileOptions(), &profile);
+    s = TraceProfile(t->mesh(), t->mesh().DefaultStart(), bad, ProfileOptions(),
+                     &profile);
     EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << bad.size();
   }
 }

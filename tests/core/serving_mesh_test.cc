@@ -62,7 +62,6 @@ TEST_P(ServingMeshTest, HasCgalsFacesNeighboursConstraintsAndDomain) {
     seen[m] = true;
     EXPECT_EQ(mesh().CornerIds(m), t_->CornerIds(f));
     EXPECT_EQ(mesh().InDomain(m), t_->InDomain(f));
-    if (t_->InDomain(f)) EXPECT_EQ(t_->TriangleId(f), int64_t{m});
     for (int i = 0; i < 3; ++i) {
       const auto n = f->neighbor(i);
       const uint32_t raw = mesh().Neighbor(m, i);

@@ -91,9 +91,10 @@ void ExpectMemoryAccounted(const ServerProcess& server,
   const v1::GetStatsResponse stats = GetStats(*stub);
   const uint64_t points = stats.dataset().input_points();
   EXPECT_EQ(points, 200'000u);
-  // A vertex, two faces and an index entry each: about 100-200 bytes.
-  EXPECT_GE(stats.memory().triangulation_bytes(), 100 * points);
-  EXPECT_LE(stats.memory().triangulation_bytes(), 400 * points);
+  // The serving mesh: a point (16 bytes), its id (4), two triangles (48)
+  // and a value if any (8): about 70-80 bytes.
+  EXPECT_GE(stats.memory().triangulation_bytes(), 60 * points);
+  EXPECT_LE(stats.memory().triangulation_bytes(), 100 * points);
   EXPECT_GT(stats.memory().tuning_bytes(), 0u);
 }
 
