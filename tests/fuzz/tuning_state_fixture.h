@@ -28,6 +28,7 @@ namespace locator::fuzz {
 struct TuningStateFixture {
   static constexpr size_t kPoints = 400;
   static constexpr uint64_t kSeed = 5;
+  static constexpr size_t kBudgetBytes = 4096;
 
   std::unique_ptr<Triangulation> triangulation;
   TuningOptions options;
@@ -39,6 +40,9 @@ struct TuningStateFixture {
 inline const TuningStateFixture& TuningStateFuzzFixture() {
   static const TuningStateFixture* fixture = [] {
     auto* f = new TuningStateFixture();
+    // A budget of its own, not a share of the mesh's bytes: enough for
+    // refined cells, so that saves hold sub-grid starts.
+    f->options.budget_bytes = TuningStateFixture::kBudgetBytes;
     const Status built = Triangulation::Build(
         GenerateUniform(TuningStateFixture::kPoints, TuningStateFixture::kSeed),
         &f->triangulation);
@@ -50,8 +54,9 @@ inline const TuningStateFixture& TuningStateFuzzFixture() {
     const TuningSummary summary =
         SelfTuningLocator(f->triangulation->mesh(), f->options).Summary();
     f->grid = GridGeometry(summary.grid_box, summary.grid_size);
-    f->fingerprint = HotRegionTuner(f->triangulation->mesh(), f->grid, f->options, 0)
-                         .Fingerprint("self-tuning");
+    f->fingerprint =
+        HotRegionTuner(f->triangulation->mesh(), f->grid, f->options, 0)
+            .Fingerprint("self-tuning");
     return f;
   }();
   return *fixture;
