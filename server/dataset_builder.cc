@@ -32,6 +32,26 @@ void LogTuningState(const Engine& engine, std::string_view tag) {
   }
 }
 
+// Says whether the mesh was mapped from the mesh cache, and why a file there
+// was ignored or could not be written.
+void LogMeshCache(const MeshCacheOutcome& cache, std::string_view tag) {
+  if (cache.path.empty()) return;
+  if (cache.mapped) {
+    LogLine(tag) << "mapped the serving mesh from " << cache.path;
+    return;
+  }
+  if (!cache.load_error.empty()) {
+    LogLine(tag) << "warning: ignoring the mesh file " << cache.path << ": "
+                 << cache.load_error << "; triangulated instead";
+  }
+  if (cache.save_error.empty()) {
+    LogLine(tag) << "wrote the serving mesh to " << cache.path;
+  } else {
+    LogLine(tag) << "warning: cannot write the mesh file " << cache.path << ": "
+                 << cache.save_error;
+  }
+}
+
 }  // namespace
 
 DatasetBuilder::DatasetBuilder(const ServerConfig& config)
@@ -94,7 +114,7 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   }
   if (!status.ok()) return status;
   LogLine(tag) << "loaded " << dataset.points.size() << " points in "
-               << SecondsSince(load_start) << " s; triangulating";
+               << SecondsSince(load_start) << " s; building the serving mesh";
   std::unique_ptr<Engine> created;
   status = Engine::Create(std::move(dataset), options, &created);
   if (!status.ok()) {
@@ -104,9 +124,11 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   // Published by the caller right after this returns.
   budget_.Commit(slot.index());
   const DatasetInfo& info = created->dataset_info();
-  LogLine(tag) << "built " << info.triangles << " triangles over "
-               << info.vertices << " vertices (" << info.duplicates_merged
+  LogLine(tag) << (info.mesh_cache.mapped ? "mapped " : "built ")
+               << info.triangles << " triangles over " << info.vertices
+               << " vertices (" << info.duplicates_merged
                << " duplicates merged) in " << info.build_seconds << " s";
+  LogMeshCache(info.mesh_cache, tag);
   LogTuningState(*created, tag);
   *built = std::move(created);
   return Status::OK();

@@ -75,6 +75,11 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
   dataset->set_constraints(info.constraints);
   dataset->set_holes(info.holes);
   dataset->set_all_triangles(info.all_triangles);
+  v1::MeshCacheStats* cache = dataset->mutable_mesh_cache();
+  cache->set_path(info.mesh_cache.path);
+  cache->set_mapped(info.mesh_cache.mapped);
+  cache->set_load_error(info.mesh_cache.load_error);
+  cache->set_save_error(info.mesh_cache.save_error);
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ struct EngineFlags {
   std::string stats_interval_s;
   std::string retune_interval_s;
   std::string state_dir;
+  std::string mesh_cache;
 };
 
 struct HttpFlags {
@@ -154,7 +155,11 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       "state-dir", po::value(&flags->state_dir)->default_value(""),
       "self-tuning: directory where the learned tuning persists across "
       "restarts and reloads (a dataset named by NAME=SPEC keeps its files "
-      "in DIR/NAME, made if missing); empty = off");
+      "in DIR/NAME, made if missing); empty = off")(
+      "mesh-cache", po::value(&flags->mesh_cache)->default_value(""),
+      "directory of serving-mesh files, one per dataset (named by its "
+      "fingerprint): a start or reload maps the dataset's file instead of "
+      "triangulating, and writes it after triangulating; empty = off");
 }
 
 void AddHttpFlags(const ServerConfig& defaults, HttpFlags* flags,
@@ -229,6 +234,18 @@ Status ReadStateDir(const EngineFlags& flags, EngineOptions* engine) {
   return Status::OK();
 }
 
+// The mesh cache must be an existing directory (locatord does not create
+// directories).
+Status ReadMeshCache(const EngineFlags& flags, EngineOptions* engine) {
+  if (flags.mesh_cache.empty()) return Status::OK();
+  std::error_code error;
+  if (!std::filesystem::is_directory(flags.mesh_cache, error)) {
+    return FlagError("mesh-cache", flags.mesh_cache, "not a directory");
+  }
+  engine->mesh_cache_dir = flags.mesh_cache;
+  return Status::OK();
+}
+
 Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
   if (Status s = ValidateStrategy(flags.strategy); !s.ok()) {
     return FlagError("strategy", flags.strategy, s.message());
@@ -262,6 +279,7 @@ Status ReadEngineFlags(const EngineFlags& flags, ServerConfig* config) {
                           &config->retune_interval_s);
   }
   if (status.ok()) status = ReadStateDir(flags, &engine);
+  if (status.ok()) status = ReadMeshCache(flags, &engine);
   return status;
 }
 

@@ -70,8 +70,8 @@ struct ServerConfig {
   std::string reload_dir;
   // --token-file, --admin-token-file, --redact.
   AccessConfig access;
-  // --strategy, --grid, --warmup, --retune-every, --budget, --state-dir; the
-  // server always re-tunes in the background.
+  // --strategy, --grid, --warmup, --retune-every, --budget, --state-dir,
+  // --mesh-cache; the server always re-tunes in the background.
   EngineOptions engine;
   // --stats-interval-s: period of the stats log line; 0 = off.
   double stats_interval_s = 0;

@@ -1,5 +1,6 @@
 #include "server/core/domain_outline.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "server/core/triangulation.h"
@@ -9,8 +10,21 @@ namespace {
 
 using Segments = std::vector<std::array<Point2, 2>>;
 
-// Every k-th of `all` (k as small as keeps at most `max_edges`).
+// Every k-th of `all` in a canonical order (each segment from its
+// lexicographically smaller end; segments sorted), so that the outline does
+// not depend on CGAL's edge order, which differs between builds of the same
+// dataset (CGAL's insertion order is randomized); k as small as keeps at
+// most `max_edges`.
 Segments Thinned(Segments all, size_t max_edges) {
+  const auto less = [](const Point2& a, const Point2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  };
+  for (auto& [a, b] : all) {
+    if (less(b, a)) std::swap(a, b);
+  }
+  std::sort(all.begin(), all.end(), [&less](const auto& s, const auto& t) {
+    return less(s[0], t[0]) || (!less(t[0], s[0]) && less(s[1], t[1]));
+  });
   if (all.size() <= max_edges) return all;
   Segments kept;
   if (max_edges == 0) return kept;

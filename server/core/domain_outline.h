@@ -29,8 +29,10 @@ struct DomainOutline {
 };
 
 // The outline of `t`, each list at most `max_edges` long: all its edges if
-// they fit, else every k-th in CGAL's edge order (k as small as keeps the
-// count within `max_edges`). Deterministic; O(edges of t).
+// they fit, else every k-th in sorted order (k as small as keeps the count
+// within `max_edges`); each segment runs from its lexicographically smaller
+// end, and the lists are sorted, so equal triangulations give equal
+// outlines. O(E log E) in the E edges of the outline, O(edges of t) else.
 DomainOutline OutlineOf(const Triangulation& t, size_t max_edges);
 
 }  // namespace locator

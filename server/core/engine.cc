@@ -1,14 +1,12 @@
 #include "server/core/engine.h"
 
-#include <malloc.h>
-
 #include <chrono>
 #include <string>
 #include <utility>
 
 #include "server/core/hilbert.h"
 #include "server/core/locator_factory.h"
-#include "server/core/triangulation.h"
+#include "server/core/serving_mesh.h"
 
 namespace locator {
 
@@ -40,34 +38,29 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
                       std::unique_ptr<Engine>* engine) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
-  std::unique_ptr<Triangulation> triangulation;
-  Status s = Triangulation::Build(dataset, &triangulation);
+  DatasetInfo& info = e->info_;
+  BuiltMesh built;
+  Status s =
+      BuildOrMapMesh(dataset, options.mesh_cache_dir, &built, &info.mesh_cache);
   if (!s.ok()) return s;
-  const Triangulation& t = *triangulation;
-  e->outline_ = OutlineOf(t, kOutlineSize);
-  e->edge_sample_ = t.SampleEdges(kEdgeSampleSize);
-  e->mesh_ = t.shared_mesh();
+  e->mesh_ = std::move(built.mesh);
+  e->facts_ = std::move(built.facts);
   s = MakePointLocator(options.strategy, *e->mesh_, options.tuning,
                        &e->locator_);
   if (!s.ok()) return s;
-  DatasetInfo& info = e->info_;
+  const ServingMesh& mesh = *e->mesh_;
   info.source = std::move(dataset.source);
-  info.input_points = t.input_points();
-  info.vertices = t.num_vertices();
-  info.duplicates_merged = t.duplicates_merged();
-  info.triangles = t.num_triangles();
-  info.all_triangles = t.num_faces();
-  info.constraints = t.num_constraints();
-  info.holes = t.num_holes();
-  info.bounding_box = t.bounding_box();
-  info.has_values = t.has_values();
+  info.input_points = mesh.input_points();
+  info.vertices = mesh.num_vertices();
+  info.duplicates_merged = info.input_points - info.vertices;
+  info.triangles = mesh.num_triangles();
+  info.all_triangles = mesh.num_faces();
+  info.constraints = e->facts_.constraints;
+  info.holes = e->facts_.holes;
+  info.bounding_box = mesh.bounding_box();
+  info.has_values = mesh.has_values();
   info.crs = std::move(dataset.crs);
-  info.triangulation_bytes = e->mesh_->MemoryBytes();
-  // The engine serves from the mesh alone. CGAL's faces and vertices are
-  // many small blocks that malloc keeps after they are freed; trimming
-  // returns their pages, so the process shrinks to about the mesh.
-  triangulation.reset();
-  malloc_trim(0);
+  info.triangulation_bytes = mesh.MemoryBytes();
   info.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

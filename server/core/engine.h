@@ -4,7 +4,8 @@
 //
 // Owns: the serving mesh (shared with nothing else once Create() returns),
 // the strategy, and what Create() derived from CGAL's triangulation before
-// freeing it (dataset facts, edge sample, domain outline).
+// freeing it, or read from the mesh file (dataset facts, edge sample,
+// domain outline).
 //
 // Thread-safety: all const methods and Retune() may be called concurrently.
 // Invariant: the mesh is immutable once Create() returns; every query
@@ -28,6 +29,7 @@
 #include "server/core/domain_outline.h"
 #include "server/core/interpolation.h"
 #include "server/core/locate_result.h"
+#include "server/core/mesh_cache.h"
 #include "server/core/point_locator.h"
 #include "server/core/profile.h"
 #include "server/core/raster.h"
@@ -47,6 +49,10 @@ struct EngineOptions {
   // walk | jump-and-walk | adaptive-paper | self-tuning
   std::string strategy = "self-tuning";
   TuningOptions tuning;
+  // A directory of mesh files (mesh_cache.h): Create() maps the dataset's
+  // file there instead of triangulating, or writes it after triangulating.
+  // Empty: always triangulate, write nothing.
+  std::string mesh_cache_dir;
 };
 
 struct DatasetInfo {
@@ -65,7 +71,10 @@ struct DatasetInfo {
   // Bytes of the serving mesh, all the engine keeps of the triangulation
   // (CGAL's is freed once the mesh is built).
   size_t triangulation_bytes = 0;
+  // Seconds Create() took, whether it triangulated or mapped the mesh.
   double build_seconds = 0;
+  // How EngineOptions::mesh_cache_dir served this build.
+  MeshCacheOutcome mesh_cache;
 };
 
 struct EngineStats {
@@ -87,14 +96,15 @@ class Engine {
  public:
   static constexpr uint64_t kStatsWindow = 1000;
   // Edges returned by EdgeSample().
-  static constexpr size_t kEdgeSampleSize = 3000;
+  static constexpr size_t kEdgeSampleSize = MeshFacts::kEdgeSampleSize;
   // Edges per list of domain_outline().
-  static constexpr size_t kOutlineSize = 3000;
+  static constexpr size_t kOutlineSize = MeshFacts::kOutlineSize;
 
   // Triangulates `dataset`, derives the serving mesh, sets up the strategy
-  // on it and frees CGAL's triangulation. Fails with
-  // InvalidArgument for fewer than 3 distinct or all-collinear points, or an
-  // unknown strategy.
+  // on it and frees CGAL's triangulation; or, with options.mesh_cache_dir,
+  // maps the mesh from the dataset's file there (see BuildOrMapMesh). Fails
+  // with InvalidArgument for fewer than 3 distinct or all-collinear points,
+  // or an unknown strategy.
   static Status Create(Dataset dataset, const EngineOptions& options,
                        std::unique_ptr<Engine>* engine);
   ~Engine();
@@ -158,13 +168,13 @@ class Engine {
   // its edge list, each as its two endpoints: enough to draw the mesh's
   // outline and density. Computed once, by Create().
   const std::vector<std::array<Point2, 2>>& EdgeSample() const {
-    return edge_sample_;
+    return facts_.edge_sample;
   }
 
   // The domain's boundary and the breaklines, at most kOutlineSize edges
   // each (see OutlineOf); both empty for a plain point cloud. Computed once,
   // by Create().
-  const DomainOutline& domain_outline() const { return outline_; }
+  const DomainOutline& domain_outline() const { return facts_.outline; }
 
  private:
   Engine();
@@ -176,8 +186,7 @@ class Engine {
                      LocateResult* results) const;
 
   DatasetInfo info_;
-  DomainOutline outline_;
-  std::vector<std::array<Point2, 2>> edge_sample_;
+  MeshFacts facts_;
   // The strategy refers to the mesh: declared first, destroyed last.
   std::shared_ptr<const ServingMesh> mesh_;
   std::unique_ptr<PointLocator> locator_;

@@ -1,12 +1,14 @@
 #include "server/core/file_io.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <system_error>
+#include <utility>
 
 namespace locator {
 namespace {
@@ -54,7 +56,8 @@ std::string TemporaryNameFor(const std::string& path) {
          std::to_string(counter.fetch_add(1));
 }
 
-Status WriteAndSync(const std::string& path, std::string_view bytes) {
+Status WriteAndSync(const std::string& path,
+                    std::span<const std::string_view> pieces) {
   const int fd =
       ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
@@ -62,10 +65,12 @@ Status WriteAndSync(const std::string& path, std::string_view bytes) {
                            ErrorText(errno));
   }
   FdCloser closer{fd};
-  Status status = WriteAll(fd, bytes);
-  if (!status.ok()) {
-    return Status::IOError("cannot write " + Quoted(path) + ": " +
-                           status.message());
+  for (const std::string_view bytes : pieces) {
+    const Status status = WriteAll(fd, bytes);
+    if (!status.ok()) {
+      return Status::IOError("cannot write " + Quoted(path) + ": " +
+                             status.message());
+    }
   }
   if (::fsync(fd) != 0) {
     return Status::IOError("cannot fsync " + Quoted(path) + ": " +
@@ -79,28 +84,48 @@ Status WriteAndSync(const std::string& path, std::string_view bytes) {
   return Status::OK();
 }
 
+// A regular file open for reading.
+struct OpenedFile {
+  std::string name;  // its role and path, for messages
+  FdCloser closer{-1};
+  uint64_t size = 0;
+};
+
+// Opens the regular file at `path` for reading. `what` names its role in
+// messages: NotFound if it does not exist, IOError otherwise.
+Status OpenRegularFile(const std::string& path, std::string_view what,
+                       OpenedFile* file) {
+  file->name = std::string(what) + " " + Quoted(path);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    const int err = errno;
+    const std::string msg = "cannot open " + file->name + ": " + ErrorText(err);
+    return err == ENOENT ? Status::NotFound(msg) : Status::IOError(msg);
+  }
+  file->closer.fd = fd;
+  struct stat st;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    return Status::IOError(file->name + " is not a readable regular file");
+  }
+  file->size = static_cast<uint64_t>(st.st_size);
+  return Status::OK();
+}
+
 }  // namespace
 
 Status ReadWholeFile(const std::string& path, std::string_view what,
                      std::string* contents, size_t max_bytes) {
-  const std::string name = std::string(what) + " " + Quoted(path);
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    const int err = errno;
-    const std::string msg = "cannot open " + name + ": " + ErrorText(err);
-    return err == ENOENT ? Status::NotFound(msg) : Status::IOError(msg);
-  }
-  FdCloser closer{fd};
-  struct stat st;
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    return Status::IOError(name + " is not a readable regular file");
-  }
-  if (static_cast<uint64_t>(st.st_size) > max_bytes) {
+  OpenedFile file;
+  if (Status s = OpenRegularFile(path, what, &file); !s.ok()) return s;
+  const std::string& name = file.name;
+  const int fd = file.closer.fd;
+  const uint64_t file_size = file.size;
+  if (file_size > max_bytes) {
     return Status::ResourceExhausted(
-        name + " has " + std::to_string(st.st_size) + " bytes, more than " +
+        name + " has " + std::to_string(file_size) + " bytes, more than " +
         std::to_string(max_bytes));
   }
-  contents->resize(static_cast<size_t>(st.st_size));
+  contents->resize(static_cast<size_t>(file_size));
   size_t done = 0;
   // read() may return less than asked (large files, signals), hence the loop.
   while (done < contents->size()) {
@@ -118,8 +143,13 @@ Status ReadWholeFile(const std::string& path, std::string_view what,
 }
 
 Status WriteFileAtomically(const std::string& path, std::string_view bytes) {
+  return WriteFileAtomically(path, std::span(&bytes, 1));
+}
+
+Status WriteFileAtomically(const std::string& path,
+                           std::span<const std::string_view> pieces) {
   const std::string temporary = TemporaryNameFor(path);
-  Status status = WriteAndSync(temporary, bytes);
+  Status status = WriteAndSync(temporary, pieces);
   if (status.ok() && ::rename(temporary.c_str(), path.c_str()) != 0) {
     status = Status::IOError("cannot rename " + Quoted(temporary) + " to " +
                              Quoted(path) + ": " + ErrorText(errno));
@@ -141,6 +171,44 @@ Status WriteFileAtomically(const std::string& path, std::string_view bytes) {
     return Status::IOError("cannot fsync directory " + Quoted(directory) +
                            ": " + ErrorText(errno));
   }
+  return Status::OK();
+}
+
+MappedFile::~MappedFile() {
+  if (data_ != nullptr) ::munmap(data_, size_);
+}
+
+MappedFile::MappedFile(MappedFile&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)),
+      size_(std::exchange(other.size_, 0)) {}
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+  if (this != &other) {
+    if (data_ != nullptr) ::munmap(data_, size_);
+    data_ = std::exchange(other.data_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+Status MappedFile::Open(const std::string& path, std::string_view what,
+                        MappedFile* out) {
+  OpenedFile file;
+  if (Status s = OpenRegularFile(path, what, &file); !s.ok()) return s;
+  const std::string& name = file.name;
+  const int fd = file.closer.fd;
+  const uint64_t file_size = file.size;
+  if (file_size == 0) return Status::IOError(name + " is empty");
+  const size_t size = static_cast<size_t>(file_size);
+  void* data =
+      ::mmap(nullptr, size, PROT_READ, MAP_SHARED | MAP_POPULATE, fd, 0);
+  if (data == MAP_FAILED) {
+    return Status::IOError("cannot map " + name + ": " + ErrorText(errno));
+  }
+  MappedFile mapped;
+  mapped.data_ = data;
+  mapped.size_ = size;
+  *out = std::move(mapped);
   return Status::OK();
 }
 

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,34 @@ Status ReadWholeFile(const std::string& path, std::string_view what,
 // the directory. The temporary file is removed on failure. IOError naming
 // the step that failed.
 Status WriteFileAtomically(const std::string& path, std::string_view bytes);
+// As above, the file being `pieces` one after another (large files written
+// without first concatenating them in memory).
+Status WriteFileAtomically(const std::string& path,
+                           std::span<const std::string_view> pieces);
+
+// A regular file mapped read-only and shared (MAP_SHARED: processes mapping
+// the same file share its pages). Unmapped when destroyed. Move-only.
+class MappedFile {
+ public:
+  MappedFile() = default;
+  ~MappedFile();
+  MappedFile(MappedFile&& other) noexcept;
+  MappedFile& operator=(MappedFile&& other) noexcept;
+
+  // Maps `path`, reading its pages in at once (MAP_POPULATE). `what` names
+  // the file in messages. NotFound if it does not exist; IOError otherwise
+  // (not a regular file, empty, mmap failed).
+  static Status Open(const std::string& path, std::string_view what,
+                     MappedFile* out);
+
+  std::string_view bytes() const {
+    return {static_cast<const char*>(data_), size_};
+  }
+
+ private:
+  void* data_ = nullptr;
+  size_t size_ = 0;
+};
 
 }  // namespace locator
 

@@ -290,7 +290,7 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
 TuningFingerprint HotRegionTuner::Fingerprint(std::string_view strategy) const {
   TuningFingerprint fingerprint;
   fingerprint.dataset_digest = mesh_.digest();
-  fingerprint.input_points = mesh_.input_points();
+  fingerprint.input_points = mesh_.id_bound();
   fingerprint.strategy = std::string(strategy);
   fingerprint.grid_size = static_cast<uint32_t>(grid_.size());
   fingerprint.grid_box = grid_.box();

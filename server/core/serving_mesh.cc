@@ -30,10 +30,34 @@ struct EdgeKey {
 
 ServingMesh::ServingMesh(std::unique_ptr<const Storage> storage,
                          const Arrays& arrays)
-    : storage_(std::move(storage)), a_(arrays) {}
+    : storage_(std::move(storage)), a_(arrays), id_bound_(a_.input_points) {
+  for (const uint32_t id : a_.ids) {
+    id_bound_ = std::max<uint64_t>(id_bound_, uint64_t{id} + 1);
+  }
+}
 
 std::array<uint32_t, 3> ServingMesh::CornerIds(uint32_t f) const {
   return {a_.ids[Corner(f, 0)], a_.ids[Corner(f, 1)], a_.ids[Corner(f, 2)]};
+}
+
+std::vector<std::array<Point2, 2>> ServingMesh::SampleEdges(
+    size_t max_edges) const {
+  std::vector<std::array<Point2, 2>> sample;
+  if (max_edges == 0) return sample;
+  // Euler's formula for a triangulated point set: V - E + (F + 1) = 2.
+  const size_t edges = num_vertices() + num_faces() - 1;
+  const size_t stride = (edges + max_edges - 1) / max_edges;
+  sample.reserve(std::min(edges, max_edges));
+  size_t index = 0;
+  for (uint32_t f = 0; f < num_faces(); ++f) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t n = Neighbor(f, i);
+      if (!IsHull(n) && n < f) continue;  // counted from n
+      if (index++ % stride != 0) continue;
+      sample.push_back({CornerPoint(f, Ccw(i)), CornerPoint(f, Cw(i))});
+    }
+  }
+  return sample;
 }
 
 size_t ServingMesh::MemoryBytes() const {

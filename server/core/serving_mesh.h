@@ -99,6 +99,9 @@ class ServingMesh {
   bool has_values() const { return !a_.values.empty(); }
   const BoundingBox& bounding_box() const { return a_.box; }
   uint64_t input_points() const { return a_.input_points; }
+  // One past the largest public vertex id, and at least input_points():
+  // constraint points that are not input points take the ids after them.
+  uint64_t id_bound() const { return id_bound_; }
   // Equal for meshes of the same points and domain (VertexDigest()).
   uint64_t digest() const { return a_.digest; }
   const Arrays& arrays() const { return a_; }
@@ -190,6 +193,11 @@ class ServingMesh {
     return false;
   }
 
+  // Edges, as endpoint pairs: all of them if there are at most `max_edges`,
+  // else every k-th in mesh order (each edge once, from its lower-numbered
+  // face; k as small as keeps the count within `max_edges`). O(F).
+  std::vector<std::array<Point2, 2>> SampleEdges(size_t max_edges) const;
+
   // Bytes of the arrays (what a mesh file holds).
   size_t MemoryBytes() const;
 
@@ -199,6 +207,7 @@ class ServingMesh {
 
   std::unique_ptr<const Storage> storage_;
   Arrays a_;
+  uint64_t id_bound_;
 };
 
 }  // namespace locator

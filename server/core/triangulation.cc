@@ -29,26 +29,6 @@ size_t Triangulation::MemoryBytes() const {
          by_input_.capacity() * sizeof(Vertex_handle);
 }
 
-std::vector<std::array<Point2, 2>> Triangulation::SampleEdges(
-    size_t max_edges) const {
-  std::vector<std::array<Point2, 2>> sample;
-  if (max_edges == 0) return sample;
-  // Euler's formula for a triangulated point set: V - E + (F + 1) = 2.
-  const size_t edges = num_vertices() + num_faces() - 1;
-  const size_t stride = (edges + max_edges - 1) / max_edges;
-  sample.reserve(std::min(edges, max_edges));
-  size_t index = 0;
-  for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end();
-       ++e, ++index) {
-    if (index % stride != 0) continue;
-    const Face_handle f = e->first;
-    const int i = e->second;
-    sample.push_back({FromCgal(f->vertex(dt_.cw(i))->point()),
-                      FromCgal(f->vertex(dt_.ccw(i))->point())});
-  }
-  return sample;
-}
-
 bool Triangulation::VertexPoint(int64_t id, Point2* p) const {
   if (id < 0 || static_cast<size_t>(id) >= by_input_.size()) return false;
   const Vertex_handle v = by_input_[id];

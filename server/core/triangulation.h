@@ -123,10 +123,6 @@ class Triangulation {
   // Bytes held by the CGAL containers and the adapter's index (not the
   // serving mesh).
   size_t MemoryBytes() const;
-  // Finite edges, as endpoint pairs: all of them if there are at most
-  // `max_edges`, else every k-th of CGAL's edge order (k as small as keeps
-  // the count within `max_edges`). Deterministic; O(edges).
-  std::vector<std::array<Point2, 2>> SampleEdges(size_t max_edges) const;
 
   bool IsInfinite(Face_handle f) const { return dt_.is_infinite(f); }
   // The vertex with id `i` (0 <= i < input_points() is input point i).

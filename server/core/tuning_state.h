@@ -56,7 +56,8 @@ inline constexpr uint64_t MaxStartsAtLevel(uint32_t r) {
 struct TuningFingerprint {
   // Fnv1a64 over the distinct vertices (id, x, y), in id order.
   uint64_t dataset_digest = 0;
-  // Points read from the dataset: every vertex id is below it.
+  // ServingMesh::id_bound(): every vertex id is below it (the points read
+  // from the dataset, plus the constraint points that are not among them).
   uint64_t input_points = 0;
   std::string strategy;
   // The coarse grid the histogram and start table use.

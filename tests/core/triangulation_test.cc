@@ -203,11 +203,12 @@ TEST(TriangulationTest, SampleEdgesTakesAllOrAnEvenShareOfRealEdges) {
   constexpr int k = 50;
   auto t = BuildTriangulation(test::GridDataset(k));
   ASSERT_NE(t, nullptr);
+  const ServingMesh& mesh = t->mesh();
   const size_t edges = t->num_vertices() + t->num_triangles() - 1;
-  EXPECT_EQ(t->SampleEdges(edges).size(), edges);
-  EXPECT_EQ(t->SampleEdges(10 * edges).size(), edges);
-  EXPECT_TRUE(t->SampleEdges(0).empty());
-  const auto sample = t->SampleEdges(1000);
+  EXPECT_EQ(mesh.SampleEdges(edges).size(), edges);
+  EXPECT_EQ(mesh.SampleEdges(10 * edges).size(), edges);
+  EXPECT_TRUE(mesh.SampleEdges(0).empty());
+  const auto sample = mesh.SampleEdges(1000);
   EXPECT_LE(sample.size(), 1000u);
   EXPECT_GE(sample.size(), 500u);
   // Grid edges: unit axis-parallel segments or unit-square diagonals.

@@ -14,11 +14,17 @@
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
+#include <cinttypes>
+#include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "server/core/dataset.h"
+#include "server/core/dataset_fingerprint.h"
+#include "server/core/mesh_file.h"
 #include "tests/server/dataset_table.h"
 
 namespace locator::test {
@@ -297,12 +303,68 @@ std::vector<DatasetRow> DatasetRows() {
   };
 }
 
+// 50 points on a 7-column grid.
+std::string MeshCacheCsv() {
+  return Lines(50, [](int i) {
+    return std::to_string(i % 7) + "," + std::to_string(i / 7);
+  });
+}
+
+// The name of the mesh file of `csv` in a mesh cache.
+std::string MeshFileNameOf(const std::string& csv) {
+  Dataset dataset;
+  EXPECT_TRUE(ParseXyzText(csv, "mesh_cache.csv", &dataset).ok());
+  char name[32];
+  std::snprintf(name, sizeof(name), "mesh-%016" PRIx64 ".mesh",
+                DatasetFingerprint(dataset));
+  return name;
+}
+
+// A row serving MeshCacheCsv() with --mesh-cache beside a mesh file holding
+// `contents`: the file is ignored for `reason`, the mesh is triangulated and
+// the file written afresh.
+DatasetRow BadMeshFileRow(const std::string& name, const std::string& input,
+                          const std::string& contents,
+                          const std::string& reason) {
+  return {
+      name,
+      input,
+      "mesh_cache.csv",
+      MeshCacheCsv(),
+      {"--mesh-cache", "{dir}"},
+      0,
+      "",
+      [reason](const ServerProcess& server, const std::string&) {
+        auto stub = NewStub(server);
+        const v1::MeshCacheStats cache = GetStats(*stub).dataset().mesh_cache();
+        EXPECT_FALSE(cache.mapped());
+        EXPECT_THAT(cache.load_error(), ::testing::HasSubstr(reason));
+        EXPECT_EQ(cache.save_error(), "");
+        EXPECT_GT(std::filesystem::file_size(cache.path()),
+                  kMeshFileHeaderBytes);
+        EXPECT_THAT(server.StderrText(),
+                    ::testing::HasSubstr("warning: ignoring the mesh file"));
+      },
+      {{MeshFileNameOf(MeshCacheCsv()), contents}}};
+}
+
+std::vector<DatasetRow> MeshCacheRows() {
+  return {
+      BadMeshFileRow("MeshFileTruncated", "a 10-byte mesh file", "not a mesh",
+                     "shorter than the 256-byte header"),
+      BadMeshFileRow("MeshFileForeign", "a file that is not a mesh file",
+                     std::string(300, 'x'), "not a locator mesh file"),
+  };
+}
+
 TEST_P(DatasetTableTest, RefusedNamingTheProblemOrServed) {
   RunRow(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Datasets, DatasetTableTest,
                          ::testing::ValuesIn(DatasetRows()), RowName);
+INSTANTIATE_TEST_SUITE_P(MeshCache, DatasetTableTest,
+                         ::testing::ValuesIn(MeshCacheRows()), RowName);
 
 }  // namespace
 }  // namespace locator::test

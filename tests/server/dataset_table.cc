@@ -53,7 +53,7 @@ void DatasetTableTest::RunRow(const DatasetRow& row) {
   const std::string dataset = row.spec.empty() ? file_ : Expand(row.spec);
   std::vector<std::string> args = {"--dataset", dataset, "--listen",
                                    "127.0.0.1:0"};
-  args.insert(args.end(), row.flags.begin(), row.flags.end());
+  for (const std::string& flag : row.flags) args.push_back(Expand(flag));
   std::unique_ptr<ServerProcess> server;
   ASSERT_TRUE(ServerProcess::Spawn(LOCATORD_PATH, args, &server).ok());
   // It listens first, whatever the dataset, then loads it.

@@ -37,6 +37,7 @@ struct DatasetRow {
   // to --dataset as it is (a generator spec or a path that does not exist).
   std::string file_name;
   std::string contents;
+  // Flags, with "{file}" and "{dir}" expanded.
   std::vector<std::string> flags = {};
   // 1: locatord refuses the dataset; 0: it serves it.
   int exit_code = 0;

@@ -231,6 +231,41 @@ TEST_F(LocatordDatasetsTest, DatasetsWithTheSamePointsKeepTheirOwnStateFiles) {
   EXPECT_EQ(a.substr(a.rfind('/')), b.substr(b.rfind('/')));
 }
 
+// --mesh-cache: the first start triangulates both datasets and writes their
+// mesh files; after a restart both are mapped, and answer as before (and as
+// CGAL does). (The tuning state restored onto a mapped mesh:
+// tests/core/mesh_file_test.cc.)
+TEST_F(LocatordDatasetsTest, ARestartMapsEveryDatasetsMeshFile) {
+  ScratchDir cache;
+  const std::vector<std::string> flags = {"--mesh-cache", cache.path()};
+  Start(flags);
+  for (const std::string name : {"terrain", "bedrock"}) {
+    const v1::MeshCacheStats first =
+        GetStats(*stub_, name).dataset().mesh_cache();
+    EXPECT_FALSE(first.mapped()) << name;
+    EXPECT_THAT(first.path(), ::testing::StartsWith(cache.path() + "/mesh-"));
+    EXPECT_EQ(first.load_error() + first.save_error(), "") << name;
+  }
+  EXPECT_EQ(cache.Entries().size(), 2u);
+  v1::LocateResponse before;
+  ASSERT_TRUE(LocateOne(*stub_, {0.3, 0.6}, &before, "bedrock").ok());
+  server_->SendSignal(SIGTERM);
+  ASSERT_EQ(server_->WaitForExit(kExitTimeout), 0);
+
+  Start(flags);
+  for (const std::string name : {"terrain", "bedrock"}) {
+    const v1::GetStatsResponse stats = GetStats(*stub_, name);
+    EXPECT_TRUE(stats.dataset().mesh_cache().mapped()) << name;
+    EXPECT_EQ(stats.dataset().mesh_cache().load_error(), "") << name;
+  }
+  EXPECT_THAT(server_->StderrText(), HasSubstr("mapped the serving mesh"));
+  v1::LocateResponse after;
+  ASSERT_TRUE(LocateOne(*stub_, {0.3, 0.6}, &after, "bedrock").ok());
+  EXPECT_EQ(after.triangle_id(), before.triangle_id());
+  ExpectAnswersAgree(*stub_, terrain_, "terrain");
+  ExpectAnswersAgree(*stub_, bedrock_, "bedrock");
+}
+
 TEST(LocatordDatasetsStartupTest, MaxDatasetPointsIsATotal) {
   std::unique_ptr<ServerProcess> server;
   ASSERT_TRUE(ServerProcess::Spawn(LOCATORD_PATH,

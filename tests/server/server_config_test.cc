@@ -273,6 +273,18 @@ TEST(ServerConfigTest, HttpFlagsMapToTheConfig) {
                                       "http://localhost:8000"}));
 }
 
+TEST(ServerConfigTest, MeshCacheMustBeADirectory) {
+  const std::string dir = ::testing::TempDir();
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--mesh-cache", dir}, &config).ok());
+  EXPECT_EQ(config.engine.mesh_cache_dir, dir);
+  ServerConfig defaults;
+  ASSERT_TRUE(Parse({}, &defaults).ok());
+  EXPECT_EQ(defaults.engine.mesh_cache_dir, "");
+  EXPECT_EQ(Parse({"--mesh-cache", dir + "/no/such/dir"}, &config).message(),
+            "--mesh-cache '" + dir + "/no/such/dir': not a directory");
+}
+
 TEST(ServerConfigTest, StateDirMustBeADirectoryForSelfTuning) {
   const std::string dir = ::testing::TempDir();
   ServerConfig config;

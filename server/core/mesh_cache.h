@@ -1,0 +1,47 @@
+// The serving mesh of a dataset, triangulated or mapped from a mesh cache:
+// a directory of mesh files (mesh_file.h) named after the fingerprint of
+// the dataset each was built from ("mesh-<16 hex digits>.mesh"), so that
+// the meshes of several datasets sit side by side and a restart, a reload
+// or another replica on the host maps the file instead of triangulating.
+//
+// Thread-safety: free functions. Processes and threads may share a cache
+// directory: files are written atomically (the last rename wins whole), and
+// a mapping keeps the file it mapped even when a newer one replaces it.
+
+#ifndef LOCATOR_CORE_MESH_CACHE_H_
+#define LOCATOR_CORE_MESH_CACHE_H_
+
+#include <string>
+
+#include "common/dataset.h"
+#include "common/status.h"
+#include "server/core/mesh_file.h"
+
+namespace locator {
+
+// How the mesh cache served one build.
+struct MeshCacheOutcome {
+  // The dataset's mesh file; empty without a cache directory.
+  std::string path;
+  // Whether the mesh was mapped from `path` instead of triangulated.
+  bool mapped = false;
+  // Why an existing file was not used; empty otherwise.
+  std::string load_error;
+  // Why writing the file after triangulating failed; empty otherwise.
+  std::string save_error;
+};
+
+// Triangulates `dataset` with CGAL, derives its serving mesh and facts, and
+// frees CGAL's triangulation. InvalidArgument as Triangulation::Build.
+Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out);
+
+// With an empty `cache_dir`, TriangulateMesh. Otherwise maps the dataset's
+// file in `cache_dir` if it is sound; if there is none, or it is unusable
+// (the reason goes to outcome->load_error), triangulates and writes the
+// file (a failure goes to outcome->save_error; the mesh is served anyway).
+Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
+                      BuiltMesh* out, MeshCacheOutcome* outcome);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_MESH_CACHE_H_

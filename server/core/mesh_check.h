@@ -1,0 +1,35 @@
+// CheckMeshArrays: whether arrays are safe to serve from: every index a
+// query can follow stays inside the arrays, whatever bytes they came from.
+// A mesh file's contents pass it before they are served (after its
+// checksum and fingerprint, which vouch that the mesh is the triangulation
+// a build of the dataset wrote).
+//
+// It checks bounds, not geometry: a file forged with a recomputed checksum
+// can still hold a mesh whose triangles overlap, which would give wrong
+// answers or make walks wander, but never read outside the arrays. The
+// mesh cache directory is trusted as the binary is. Linear scans only:
+// ~0.1 s per 10^7 points.
+//
+// Thread-safety: a pure function.
+
+#ifndef LOCATOR_CORE_MESH_CHECK_H_
+#define LOCATOR_CORE_MESH_CHECK_H_
+
+#include "common/status.h"
+#include "server/core/serving_mesh.h"
+
+namespace locator {
+
+// OK if: at least 3 vertices, 1 in-domain face and 3 hull edges, and
+// in_domain at most the faces; ids and values one per vertex; every
+// coordinate and the box finite; every id below input_points + V
+// (constraint points follow the input points); every corner a vertex;
+// every neighbour a face or a position in the hull; every hull entry an
+// edge of a face whose neighbour field names that entry back, each edge
+// ending where the one before it starts (a closed ring). Otherwise
+// InvalidArgument naming the first violation.
+Status CheckMeshArrays(const ServingMesh::Arrays& a);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_MESH_CHECK_H_
