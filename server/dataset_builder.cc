@@ -52,6 +52,17 @@ void LogMeshCache(const MeshCacheOutcome& cache, std::string_view tag) {
   }
 }
 
+// Says how a new engine's mesh came to be, and where its tuning came from.
+void LogBuilt(const Engine& engine, std::string_view tag) {
+  const DatasetInfo& info = engine.dataset_info();
+  LogLine(tag) << (info.mesh_cache.mapped ? "mapped " : "built ")
+               << info.triangles << " triangles over " << info.vertices
+               << " vertices (" << info.duplicates_merged
+               << " duplicates merged) in " << info.build_seconds << " s";
+  LogMeshCache(info.mesh_cache, tag);
+  LogTuningState(engine, tag);
+}
+
 }  // namespace
 
 DatasetBuilder::DatasetBuilder(const ServerConfig& config)
@@ -95,6 +106,7 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   if (Status status = EngineOptionsFor(slot, &options); !status.ok()) {
     return status;
   }
+  if (MapGenerated(slot, spec, options, built)) return Status::OK();
   LogLine(tag) << "loading dataset " << spec;
   const auto load_start = std::chrono::steady_clock::now();
   Dataset dataset;
@@ -123,15 +135,61 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   }
   // Published by the caller right after this returns.
   budget_.Commit(slot.index());
-  const DatasetInfo& info = created->dataset_info();
-  LogLine(tag) << (info.mesh_cache.mapped ? "mapped " : "built ")
-               << info.triangles << " triangles over " << info.vertices
-               << " vertices (" << info.duplicates_merged
-               << " duplicates merged) in " << info.build_seconds << " s";
-  LogMeshCache(info.mesh_cache, tag);
-  LogTuningState(*created, tag);
+  RecordGenerated(spec, options, created->dataset_info().mesh_cache, tag);
+  LogBuilt(*created, tag);
   *built = std::move(created);
   return Status::OK();
+}
+
+bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
+                                  const std::string& spec,
+                                  const EngineOptions& options,
+                                  std::shared_ptr<Engine>* built) {
+  GeneratorSpec generator;
+  uint64_t fingerprint = 0;
+  if (options.mesh_cache_dir.empty() || !IsGeneratorSpec(spec) ||
+      !ParseGeneratorSpec(spec, &generator).ok() ||
+      !FindGeneratedFingerprint(options.mesh_cache_dir, generator, &fingerprint)
+           .ok()) {
+    return false;
+  }
+  const std::string_view tag = Tag(slot);
+  std::unique_ptr<Engine> created;
+  Status status =
+      Engine::CreateFromMeshFile(fingerprint, spec, options, &created);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
+  }
+  if (!status.ok()) {
+    // The slow path loads the spec and says what is wrong, if anything.
+    if (status.code() != Status::Code::kResourceExhausted) {
+      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
+                   << status.ToString() << "; generating it instead";
+    }
+    return false;
+  }
+  budget_.Commit(slot.index());
+  LogLine(tag) << "found the mesh of " << spec << " without generating it";
+  LogBuilt(*created, tag);
+  *built = std::move(created);
+  return true;
+}
+
+void DatasetBuilder::RecordGenerated(const std::string& spec,
+                                     const EngineOptions& options,
+                                     const MeshCacheOutcome& cache,
+                                     std::string_view tag) {
+  GeneratorSpec generator;
+  if (cache.path.empty() || !cache.save_error.empty() ||
+      !IsGeneratorSpec(spec) || !ParseGeneratorSpec(spec, &generator).ok()) {
+    return;
+  }
+  const Status status = RecordGeneratedFingerprint(
+      options.mesh_cache_dir, generator, cache.fingerprint);
+  if (!status.ok()) {
+    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
+                 << status.ToString();
+  }
 }
 
 Status DatasetBuilder::Build(const DatasetSlot& slot, const std::string& spec,

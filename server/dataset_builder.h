@@ -52,6 +52,20 @@ class DatasetBuilder {
                                     std::string_view when);
 
  private:
+  // With --mesh-cache and a generator spec whose mesh was recorded there:
+  // maps it without generating the points (within the budget) and returns
+  // true. False if any of that does not hold or fails (a failure but the
+  // budget is logged): the caller loads the spec as usual.
+  bool MapGenerated(const DatasetSlot& slot, const std::string& spec,
+                    const EngineOptions& options,
+                    std::shared_ptr<Engine>* built);
+  // After a build from the generator spec `spec` whose mesh file was
+  // written or mapped, records which mesh it generates (see
+  // RecordGeneratedFingerprint); a failure is logged with `tag`.
+  static void RecordGenerated(const std::string& spec,
+                              const EngineOptions& options,
+                              const MeshCacheOutcome& cache,
+                              std::string_view tag);
   // Loads `spec` within the budget and triangulates it.
   Status LoadAndTriangulate(const DatasetSlot& slot, const std::string& spec,
                             std::shared_ptr<Engine>* built);

@@ -26,35 +26,6 @@ Status BadSpec(std::string_view spec, std::string_view what) {
       Cat("bad dataset spec ", Quoted(spec), ": ", what));
 }
 
-// Runs a "uniform:N[:SEED]" or "clusters:N:K[:SEED]" spec; `parts` is the
-// spec split on ':' (parts[0] is the generator name).
-Status RunGenerator(const std::string& spec,
-                    const std::vector<std::string_view>& parts,
-                    const DatasetLimits& limits, Dataset* out) {
-  const bool clusters = parts[0] == "clusters";
-  const size_t required = clusters ? 3 : 2;
-  if (parts.size() != required && parts.size() != required + 1) {
-    return BadSpec(spec, clusters ? "expected clusters:N:K[:SEED]"
-                                  : "expected uniform:N[:SEED]");
-  }
-  size_t n = 0;
-  if (!ParseInteger(parts[1], &n) || n == 0) {
-    return BadSpec(spec, "N must be a positive integer");
-  }
-  size_t k = 1;
-  if (clusters && (!ParseInteger(parts[2], &k) || k == 0)) {
-    return BadSpec(spec, "K must be a positive integer");
-  }
-  if (k > n) return BadSpec(spec, "K must not exceed N");
-  uint64_t seed = kDefaultSeed;
-  if (parts.size() == required + 1 && !ParseInteger(parts.back(), &seed)) {
-    return BadSpec(spec, "SEED must be an unsigned 64-bit integer");
-  }
-  if (n > limits.max_points) return TooManyPoints(spec, limits.max_points);
-  *out = clusters ? GenerateClusters(n, k, seed) : GenerateUniform(n, seed);
-  return Status::OK();
-}
-
 std::vector<std::string_view> SplitOnColon(std::string_view s) {
   std::vector<std::string_view> parts;
   size_t start = 0;
@@ -104,6 +75,39 @@ std::vector<std::string> DatasetCompanionFiles(const std::string& path) {
   return {path.substr(0, path.size() - kEle.size()) + ".node"};
 }
 
+Status ParseGeneratorSpec(const std::string& spec, GeneratorSpec* out) {
+  const std::vector<std::string_view> parts = SplitOnColon(spec);
+  GeneratorSpec g;
+  g.clusters = parts[0] == "clusters";
+  const size_t required = g.clusters ? 3 : 2;
+  if ((parts[0] != "uniform" && !g.clusters) ||
+      (parts.size() != required && parts.size() != required + 1)) {
+    return BadSpec(spec, g.clusters ? "expected clusters:N:K[:SEED]"
+                                    : "expected uniform:N[:SEED]");
+  }
+  if (!ParseInteger(parts[1], &g.n) || g.n == 0) {
+    return BadSpec(spec, "N must be a positive integer");
+  }
+  if (g.clusters && (!ParseInteger(parts[2], &g.k) || g.k == 0)) {
+    return BadSpec(spec, "K must be a positive integer");
+  }
+  if (g.k > g.n) return BadSpec(spec, "K must not exceed N");
+  g.seed = kDefaultSeed;
+  if (parts.size() == required + 1 && !ParseInteger(parts.back(), &g.seed)) {
+    return BadSpec(spec, "SEED must be an unsigned 64-bit integer");
+  }
+  *out = g;
+  return Status::OK();
+}
+
+std::string GeneratorSpec::CanonicalKey() const {
+  const std::string counts =
+      clusters ? Cat("clusters:", std::to_string(n), ":", std::to_string(k))
+               : Cat("uniform:", std::to_string(n));
+  return Cat(counts, ":", std::to_string(seed), " generator version ",
+             std::to_string(kGeneratorVersion));
+}
+
 bool IsGeneratorSpec(std::string_view spec) {
   return spec.starts_with("uniform:") || spec.starts_with("clusters:");
 }
@@ -124,7 +128,15 @@ Status LoadDataset(const std::string& spec, Dataset* out,
     if (status.ok()) status = ParseWktConstraints(text, wkt_path, &wkt);
     if (status.ok()) AppendConstraints(std::move(wkt), &ds.constraints);
   } else if (IsGeneratorSpec(spec)) {
-    status = RunGenerator(spec, SplitOnColon(spec), limits, &ds);
+    GeneratorSpec g;
+    status = ParseGeneratorSpec(spec, &g);
+    if (status.ok() && g.n > limits.max_points) {
+      status = TooManyPoints(spec, limits.max_points);
+    }
+    if (status.ok()) {
+      ds = g.clusters ? GenerateClusters(g.n, g.k, g.seed)
+                      : GenerateUniform(g.n, g.seed);
+    }
   } else {
     std::string text;
     status = ReadWholeFile(spec, "dataset", &text);

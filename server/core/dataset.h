@@ -114,6 +114,27 @@ bool SplitWktConstraintsSpec(std::string_view spec, std::string_view* points,
 Dataset GenerateUniform(size_t n, uint64_t seed);
 Dataset GenerateClusters(size_t n, size_t k, uint64_t seed);
 
+// Changes whenever a generator above would give other points for the same
+// arguments, so that what was derived from generated points (mesh files)
+// is not reused across the change.
+inline constexpr uint32_t kGeneratorVersion = 1;
+
+// A generator spec, parsed (see LoadDataset).
+struct GeneratorSpec {
+  bool clusters = false;  // clusters:N:K[:SEED], else uniform:N[:SEED]
+  size_t n = 0;
+  size_t k = 1;
+  uint64_t seed = 1;
+
+  // "uniform:N:SEED" or "clusters:N:K:SEED" with kGeneratorVersion: equal
+  // for specs that generate the same points.
+  std::string CanonicalKey() const;
+};
+
+// Parses a spec for which IsGeneratorSpec() holds; InvalidArgument naming
+// what is wrong otherwise.
+Status ParseGeneratorSpec(const std::string& spec, GeneratorSpec* out);
+
 }  // namespace locator
 
 #endif  // LOCATOR_CORE_DATASET_H_

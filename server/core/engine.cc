@@ -38,28 +38,48 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
                       std::unique_ptr<Engine>* engine) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
-  DatasetInfo& info = e->info_;
   BuiltMesh built;
-  Status s =
-      BuildOrMapMesh(dataset, options.mesh_cache_dir, &built, &info.mesh_cache);
+  Status s = BuildOrMapMesh(dataset, options.mesh_cache_dir, &built,
+                            &e->info_.mesh_cache);
   if (!s.ok()) return s;
+  e->info_.source = std::move(dataset.source);
+  e->info_.crs = std::move(dataset.crs);
+  return Finish(std::move(built), options, start, std::move(e), engine);
+}
+
+Status Engine::CreateFromMeshFile(uint64_t fingerprint, std::string source,
+                                  const EngineOptions& options,
+                                  std::unique_ptr<Engine>* engine) {
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<Engine> e(new Engine());
+  BuiltMesh built;
+  Status s = MapCachedMesh(options.mesh_cache_dir, fingerprint, &built,
+                           &e->info_.mesh_cache);
+  if (!s.ok()) return s;
+  e->info_.source = std::move(source);
+  return Finish(std::move(built), options, start, std::move(e), engine);
+}
+
+Status Engine::Finish(BuiltMesh built, const EngineOptions& options,
+                      std::chrono::steady_clock::time_point start,
+                      std::unique_ptr<Engine> e,
+                      std::unique_ptr<Engine>* engine) {
   e->mesh_ = std::move(built.mesh);
   e->facts_ = std::move(built.facts);
-  s = MakePointLocator(options.strategy, *e->mesh_, options.tuning,
-                       &e->locator_);
+  Status s = MakePointLocator(options.strategy, *e->mesh_, options.tuning,
+                              &e->locator_);
   if (!s.ok()) return s;
   const ServingMesh& mesh = *e->mesh_;
-  info.source = std::move(dataset.source);
+  DatasetInfo& info = e->info_;
   info.input_points = mesh.input_points();
   info.vertices = mesh.num_vertices();
-  info.duplicates_merged = info.input_points - info.vertices;
+  info.duplicates_merged = e->facts_.duplicates_merged;
   info.triangles = mesh.num_triangles();
   info.all_triangles = mesh.num_faces();
   info.constraints = e->facts_.constraints;
   info.holes = e->facts_.holes;
   info.bounding_box = mesh.bounding_box();
   info.has_values = mesh.has_values();
-  info.crs = std::move(dataset.crs);
   info.triangulation_bytes = mesh.MemoryBytes();
   info.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -107,6 +108,14 @@ class Engine {
   // or an unknown strategy.
   static Status Create(Dataset dataset, const EngineOptions& options,
                        std::unique_ptr<Engine>* engine);
+  // The engine of the dataset with `fingerprint` from its mesh file in
+  // options.mesh_cache_dir, without the dataset itself (see
+  // FindGeneratedFingerprint); `source` names it in stats. NotFound if
+  // there is no file, or why the file is unusable (MapCachedMesh); the
+  // outcome is in dataset_info().mesh_cache either way when it succeeds.
+  static Status CreateFromMeshFile(uint64_t fingerprint, std::string source,
+                                   const EngineOptions& options,
+                                   std::unique_ptr<Engine>* engine);
   ~Engine();
 
   Engine(const Engine&) = delete;
@@ -178,6 +187,12 @@ class Engine {
 
  private:
   Engine();
+  // Sets up the strategy on `built` and fills the dataset facts; `start` is
+  // when the build began.
+  static Status Finish(BuiltMesh built, const EngineOptions& options,
+                       std::chrono::steady_clock::time_point start,
+                       std::unique_ptr<Engine> e,
+                       std::unique_ptr<Engine>* engine);
   // Counts `queries` answered at total `cost` in the serving statistics.
   void Record(uint64_t queries, uint64_t cost) const;
   // Replaces the linear values of `results` (located with the strategy)

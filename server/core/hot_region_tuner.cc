@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 namespace locator {
 
@@ -37,10 +38,11 @@ HotRegionTuner::HotRegionTuner(const ServingMesh& mesh,
   leaf_budget_ =
       budget_ > fixed ? (budget_ - fixed) / StartTable::kBytesPerStart : 0;
   for (const Point2& p : mesh.arrays().points) points_[grid.CellOf(p)] += 1;
-  MeasureCrossingRatios();
 }
 
 void HotRegionTuner::MeasureCrossingRatios() {
+  if (crossing_measured_) return;
+  crossing_measured_ = true;
   // A segment of length L along x crosses about L * sum|dy| / area edges
   // (and along y, L * sum|dx| / area), summing over the edges around it.
   const size_t cells = grid_.cells();
@@ -222,6 +224,18 @@ std::vector<double> HotRegionTuner::Shares(double total) const {
 
 std::shared_ptr<const TuningSnapshot> HotRegionTuner::Snapshot(
     uint64_t version) const {
+  return SnapshotOf(table_, version);
+}
+
+std::shared_ptr<const TuningSnapshot> HotRegionTuner::CoarseSnapshot(
+    uint64_t version) const {
+  return SnapshotOf(std::make_shared<const StartTable>(
+                        mesh_, grid_, std::vector<SubGrid>(grid_.cells())),
+                    version);
+}
+
+std::shared_ptr<const TuningSnapshot> HotRegionTuner::SnapshotOf(
+    std::shared_ptr<const StartTable> table, uint64_t version) const {
   const size_t cells = grid_.cells();
   const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
   const std::vector<double> share = Shares(total);
@@ -232,7 +246,7 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Snapshot(
     for (size_t c = 0; c < cells; ++c)
       snapshot->hot[c] = share[c] * cells >= 0.5;
   }
-  snapshot->table = table_;
+  snapshot->table = std::move(table);
   snapshot->histogram = counts_;
   snapshot->memory_bytes = snapshot->table->MemoryBytes() +
                            snapshot->hot.capacity() +
@@ -242,6 +256,7 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Snapshot(
 }
 
 bool HotRegionTuner::Plan() {
+  MeasureCrossingRatios();
   builder_.reset();
   const size_t cells = grid_.cells();
   const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
@@ -313,6 +328,7 @@ void HotRegionTuner::ExportState(TuningState* state) const {
 Status HotRegionTuner::Restore(
     const TuningState& state, uint64_t version,
     std::shared_ptr<const TuningSnapshot>* snapshot) {
+  MeasureCrossingRatios();
   const size_t cells = grid_.cells();
   if (state.histogram.size() != cells || state.planned_share.size() != cells ||
       state.levels.size() != cells) {

@@ -103,6 +103,10 @@ class HotRegionTuner {
   std::shared_ptr<const TuningSnapshot> Build(uint64_t version);
   // The snapshot of the current table and histogram, as `version`.
   std::shared_ptr<const TuningSnapshot> Snapshot(uint64_t version) const;
+  // A snapshot, as `version`, of a table with one start per coarse cell and
+  // no sub-grids: O(cells) walks instead of the budget's. The tuner's own
+  // table stays as it was (none before the first Build()).
+  std::shared_ptr<const TuningSnapshot> CoarseSnapshot(uint64_t version) const;
 
   // What a state learned by this tuner means: the dataset, `strategy`, the
   // grid and the budget.
@@ -139,8 +143,13 @@ class HotRegionTuner {
   // shaped by the cell's crossing ratio (1 x 1 for r = 1).
   SubGrid ShapeOf(size_t c, uint32_t r) const;
   std::vector<SubGrid> Shapes(const std::vector<uint32_t>& levels) const;
-  // Fills crossing_ratio_ from the triangulation's edges.
+  // Fills crossing_ratio_ from the triangulation's edges, once (a scan of
+  // every edge: deferred to the first plan or restore, so that a tuner is
+  // cheap to make).
   void MeasureCrossingRatios();
+  // table as the snapshot `version`, with the current histogram.
+  std::shared_ptr<const TuningSnapshot> SnapshotOf(
+      std::shared_ptr<const StartTable> table, uint64_t version) const;
 
   const ServingMesh& mesh_;
   const GridGeometry grid_;
@@ -154,6 +163,7 @@ class HotRegionTuner {
   // width / height: a walk across the cell's width crosses this many times
   // as many edges as one across its height.
   std::vector<double> crossing_ratio_;
+  bool crossing_measured_ = false;
   std::shared_ptr<const StartTable> table_;  // the last one built
   std::vector<uint32_t> levels_;             // the levels table_ was built at
   std::vector<double> planned_share_;  // traffic shares table_ was planned for

@@ -2,21 +2,39 @@
 
 #include <malloc.h>
 
+#include <cerrno>
 #include <cinttypes>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <utility>
 
 #include "server/core/dataset_fingerprint.h"
+#include "server/core/file_io.h"
 #include "server/core/triangulation.h"
+
+#define XXH_INLINE_ALL
+#include <xxhash.h>
 
 namespace locator {
 namespace {
 
+// "DIR/PREFIX<16 hex digits of value>SUFFIX".
+std::string PathIn(const std::string& dir, const char* prefix, uint64_t value,
+                   const char* suffix) {
+  char hex[17];
+  std::snprintf(hex, sizeof(hex), "%016" PRIx64, value);
+  return dir + "/" + prefix + hex + suffix;
+}
+
 std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
-  char name[32];
-  std::snprintf(name, sizeof(name), "mesh-%016" PRIx64 ".mesh", fingerprint);
-  return dir + "/" + name;
+  return PathIn(dir, "mesh-", fingerprint, ".mesh");
+}
+
+std::string GeneratedKeyPath(const std::string& dir,
+                             const GeneratorSpec& spec) {
+  const std::string key = spec.CanonicalKey();
+  return PathIn(dir, "generated-", XXH3_64bits(key.data(), key.size()), ".key");
 }
 
 }  // namespace
@@ -27,6 +45,7 @@ Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out) {
   out->mesh = t->shared_mesh();
   out->facts.constraints = t->num_constraints();
   out->facts.holes = t->num_holes();
+  out->facts.duplicates_merged = t->duplicates_merged();
   out->facts.outline = OutlineOf(*t, MeshFacts::kOutlineSize);
   out->facts.edge_sample = out->mesh->SampleEdges(MeshFacts::kEdgeSampleSize);
   // The engine serves from the mesh alone. CGAL's faces and vertices are
@@ -37,26 +56,62 @@ Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out) {
   return Status::OK();
 }
 
+Status MapCachedMesh(const std::string& cache_dir, uint64_t fingerprint,
+                     BuiltMesh* out, MeshCacheOutcome* outcome) {
+  *outcome = MeshCacheOutcome();
+  outcome->fingerprint = fingerprint;
+  outcome->path = MeshFilePath(cache_dir, fingerprint);
+  const Status status = MapMeshFile(outcome->path, fingerprint, out);
+  outcome->mapped = status.ok();
+  if (!status.ok() && status.code() != Status::Code::kNotFound) {
+    outcome->load_error = status.message();
+  }
+  return status;
+}
+
 Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
                       BuiltMesh* out, MeshCacheOutcome* outcome) {
   *outcome = MeshCacheOutcome();
   if (cache_dir.empty()) return TriangulateMesh(dataset, out);
   const uint64_t fingerprint = DatasetFingerprint(dataset);
-  outcome->path = MeshFilePath(cache_dir, fingerprint);
-  Status status = MapMeshFile(outcome->path, fingerprint, out);
-  if (status.ok()) {
-    outcome->mapped = true;
-    return status;
-  }
-  if (status.code() != Status::Code::kNotFound) {
-    outcome->load_error = status.message();
-  }
+  Status status = MapCachedMesh(cache_dir, fingerprint, out, outcome);
+  if (status.ok()) return status;
   if (status = TriangulateMesh(dataset, out); !status.ok()) return status;
-  if (Status saved = WriteMeshFile(outcome->path, fingerprint, *out);
+  if (const Status saved = WriteMeshFile(outcome->path, fingerprint, *out);
       !saved.ok()) {
     outcome->save_error = saved.message();
   }
   return Status::OK();
+}
+
+Status FindGeneratedFingerprint(const std::string& cache_dir,
+                                const GeneratorSpec& spec,
+                                uint64_t* fingerprint) {
+  const std::string path = GeneratedKeyPath(cache_dir, spec);
+  std::string text;
+  if (Status s = ReadWholeFile(path, "generated dataset key", &text, 64);
+      !s.ok()) {
+    return s;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const uint64_t value = std::strtoull(text.c_str(), &end, 16);
+  if (text.size() != 17 || errno != 0 || end != text.c_str() + 16 ||
+      *end != '\n') {
+    return Status::InvalidArgument("generated dataset key " + path +
+                                   " is not 16 hex digits and a newline");
+  }
+  *fingerprint = value;
+  return Status::OK();
+}
+
+Status RecordGeneratedFingerprint(const std::string& cache_dir,
+                                  const GeneratorSpec& spec,
+                                  uint64_t fingerprint) {
+  char text[18];
+  std::snprintf(text, sizeof(text), "%016" PRIx64 "\n", fingerprint);
+  return WriteFileAtomically(GeneratedKeyPath(cache_dir, spec),
+                             std::string_view(text, 17));
 }
 
 }  // namespace locator

@@ -11,10 +11,12 @@
 #ifndef LOCATOR_CORE_MESH_CACHE_H_
 #define LOCATOR_CORE_MESH_CACHE_H_
 
+#include <cstdint>
 #include <string>
 
 #include "common/dataset.h"
 #include "common/status.h"
+#include "server/core/dataset.h"
 #include "server/core/mesh_file.h"
 
 namespace locator {
@@ -23,6 +25,8 @@ namespace locator {
 struct MeshCacheOutcome {
   // The dataset's mesh file; empty without a cache directory.
   std::string path;
+  // The dataset's fingerprint (DatasetFingerprint), which names the file.
+  uint64_t fingerprint = 0;
   // Whether the mesh was mapped from `path` instead of triangulated.
   bool mapped = false;
   // Why an existing file was not used; empty otherwise.
@@ -41,6 +45,29 @@ Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out);
 // file (a failure goes to outcome->save_error; the mesh is served anyway).
 Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
                       BuiltMesh* out, MeshCacheOutcome* outcome);
+
+// Maps the mesh file of the dataset with `fingerprint` in `cache_dir`,
+// filling *outcome (mapped, or why not in load_error). NotFound if there is
+// no file; IOError or InvalidArgument as MapMeshFile.
+Status MapCachedMesh(const std::string& cache_dir, uint64_t fingerprint,
+                     BuiltMesh* out, MeshCacheOutcome* outcome);
+
+// Generated datasets: a start can map the mesh of a generator spec without
+// generating its points first, through a key file in the cache directory,
+// "generated-<16 hex digits>.key" (an XXH3 digest of the spec's
+// CanonicalKey()), that holds the fingerprint of the points it generates.
+// The mesh file itself is still checked against that fingerprint.
+
+// The fingerprint recorded for `spec`; NotFound if none, InvalidArgument
+// if the key file is not one.
+Status FindGeneratedFingerprint(const std::string& cache_dir,
+                                const GeneratorSpec& spec,
+                                uint64_t* fingerprint);
+// Records that `spec` generates the dataset with `fingerprint` (atomically;
+// IOError naming the step that failed).
+Status RecordGeneratedFingerprint(const std::string& cache_dir,
+                                  const GeneratorSpec& spec,
+                                  uint64_t fingerprint);
 
 }  // namespace locator
 

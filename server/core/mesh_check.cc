@@ -1,6 +1,11 @@
 #include "server/core/mesh_check.h"
 
+#include <algorithm>
 #include <string>
+#include <thread>
+#include <vector>
+
+#include "server/core/orientation.h"
 
 namespace locator {
 namespace {
@@ -47,9 +52,10 @@ Status CheckVertices(const ServingMesh::Arrays& a) {
   return Status::OK();
 }
 
-Status CheckFaces(const ServingMesh::Arrays& a) {
+// Checks faces [begin, end).
+Status CheckFaces(const ServingMesh::Arrays& a, uint32_t begin, uint32_t end) {
   const size_t v = a.points.size(), faces = a.triangles.size();
-  for (uint32_t f = 0; f < faces; ++f) {
+  for (uint32_t f = begin; f < end; ++f) {
     const MeshTriangle& t = a.triangles[f];
     for (int i = 0; i < 3; ++i) {
       if ((t.corner[i] & kIndexMask) >= v) {
@@ -63,6 +69,37 @@ Status CheckFaces(const ServingMesh::Arrays& a) {
                          " is out of range");
       }
     }
+    // Barycentrics divide by the area: it must be positive.
+    if (Orientation(a.points[t.corner[0] & kIndexMask],
+                    a.points[t.corner[1] & kIndexMask],
+                    a.points[t.corner[2] & kIndexMask]) != Side::kLeft) {
+      return Violation(FaceName(f) + " is not counter-clockwise");
+    }
+  }
+  return Status::OK();
+}
+
+// CheckFaces over every face, in a slice per hardware thread (a mesh of
+// 10^7 points has 2 x 10^7 faces); the first violation by face order.
+Status CheckAllFaces(const ServingMesh::Arrays& a) {
+  constexpr size_t kMinFacesPerThread = size_t{1} << 20;
+  const auto faces = static_cast<uint32_t>(a.triangles.size());
+  const size_t threads = std::clamp<size_t>(
+      std::min<size_t>(std::thread::hardware_concurrency(), 8), 1,
+      std::max<size_t>(faces / kMinFacesPerThread, 1));
+  std::vector<Status> results(threads);
+  std::vector<std::thread> workers;
+  const auto slice = [&](size_t k) {
+    return static_cast<uint32_t>(uint64_t{faces} * k / threads);
+  };
+  for (size_t k = 1; k < threads; ++k) {
+    workers.emplace_back(
+        [&, k] { results[k] = CheckFaces(a, slice(k), slice(k + 1)); });
+  }
+  results[0] = CheckFaces(a, 0, slice(1));
+  for (std::thread& worker : workers) worker.join();
+  for (Status& result : results) {
+    if (!result.ok()) return result;
   }
   return Status::OK();
 }
@@ -100,7 +137,7 @@ Status CheckMeshArrays(const ServingMesh::Arrays& a) {
   if (a.in_domain == 0 || a.in_domain > a.triangles.size()) {
     return Violation("no in-domain triangle, or more than triangles");
   }
-  if (Status s = CheckFaces(a); !s.ok()) return s;
+  if (Status s = CheckAllFaces(a); !s.ok()) return s;
   return CheckHull(a);
 }
 

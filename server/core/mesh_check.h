@@ -4,11 +4,12 @@
 // checksum and fingerprint, which vouch that the mesh is the triangulation
 // a build of the dataset wrote).
 //
-// It checks bounds, not geometry: a file forged with a recomputed checksum
-// can still hold a mesh whose triangles overlap, which would give wrong
-// answers or make walks wander, but never read outside the arrays. The
-// mesh cache directory is trusted as the binary is. Linear scans only:
-// ~0.1 s per 10^7 points.
+// It checks bounds and each triangle's own orientation, not how triangles
+// fit together: a file forged with a recomputed checksum can still hold a
+// mesh whose triangles overlap or whose neighbours disagree, which would
+// give wrong answers or make walks wander, but never read outside the
+// arrays or divide by a zero area. The mesh cache directory is trusted as
+// the binary is. Linear scans only.
 //
 // Thread-safety: a pure function.
 
@@ -23,7 +24,8 @@ namespace locator {
 // OK if: at least 3 vertices, 1 in-domain face and 3 hull edges, and
 // in_domain at most the faces; ids and values one per vertex; every
 // coordinate and the box finite; every id below input_points + V
-// (constraint points follow the input points); every corner a vertex;
+// (constraint points follow the input points); every corner a vertex and
+// every triangle strictly counter-clockwise (CGAL's exact orientation);
 // every neighbour a face or a position in the hull; every hull entry an
 // edge of a face whose neighbour field names that entry back, each edge
 // ending where the one before it starts (a closed ring). Otherwise

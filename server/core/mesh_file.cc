@@ -40,7 +40,8 @@ struct Header {
   uint64_t holes;
   double box[4];  // min_x, min_y, max_x, max_y
   uint64_t payload_checksum;
-  uint64_t reserved[9];      // zero
+  uint64_t duplicates_merged;
+  uint64_t reserved[8];      // zero
   uint64_t header_checksum;  // of every byte before it
 };
 static_assert(sizeof(Header) == kMeshFileHeaderBytes);
@@ -167,6 +168,7 @@ Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
   h.digest = a.digest;
   h.constraints = facts.constraints;
   h.holes = facts.holes;
+  h.duplicates_merged = facts.duplicates_merged;
   h.box[0] = a.box.min_x;
   h.box[1] = a.box.min_y;
   h.box[2] = a.box.max_x;
@@ -236,6 +238,7 @@ Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
   MeshFacts f;
   f.constraints = h.constraints;
   f.holes = h.holes;
+  f.duplicates_merged = h.duplicates_merged;
   const auto segments = [&bytes](uint64_t offset, uint64_t count) {
     const auto s = SectionAt<Segment>(bytes, offset, count);
     return std::vector<Segment>(s.begin(), s.end());

@@ -7,9 +7,10 @@
 //   header     256 bytes: magic "locmesh\0", format version, byte-order
 //              mark, the dataset fingerprint the mesh was built from, the
 //              file's length, every section's element count, the dataset
-//              facts (input points, digest, constraints, holes, bounding
-//              box), an XXH3-64 checksum of everything after the header, and
-//              last an XXH3-64 checksum of the header's other bytes.
+//              facts (input points, digest, constraints, holes, duplicates
+//              merged, bounding box), an XXH3-64 checksum of everything after
+//              the header, and last an XXH3-64 checksum of the header's other
+//              bytes.
 //   sections   triangles (24 B each), points (16 B), values (8 B, none
 //              without values), public ids (4 B), hull edges (4 B), then the
 //              domain outline's boundary and breakline segments and the edge
@@ -56,8 +57,9 @@ struct MeshFacts {
   static constexpr size_t kEdgeSampleSize = 3000;
   static constexpr size_t kOutlineSize = 3000;
 
-  uint64_t constraints = 0;  // constrained segments inserted
-  uint64_t holes = 0;        // out-of-domain regions inside the hull
+  uint64_t constraints = 0;        // constrained segments inserted
+  uint64_t duplicates_merged = 0;  // input points equal to an earlier one
+  uint64_t holes = 0;              // out-of-domain regions inside the hull
   // OutlineOf(t, kOutlineSize).
   DomainOutline outline;
   // mesh.SampleEdges(kEdgeSampleSize).

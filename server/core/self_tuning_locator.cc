@@ -50,9 +50,20 @@ SelfTuningLocator::SelfTuningLocator(const ServingMesh& mesh,
         options_.state_dir, tuner_.Fingerprint(name()));
     persistence_.state_path = store_->path();
   }
-  if (!RestoreState()) snapshot_.Publish(tuner_.Build(1));
+  const bool restored = RestoreState();
+  const bool defer_initial = !restored && options_.background;
+  if (defer_initial) {
+    initial_pending_ = true;
+    snapshot_.Publish(tuner_.CoarseSnapshot(1));
+  } else if (!restored) {
+    snapshot_.Publish(tuner_.Build(1));
+  }
   if (options_.background) {
     tuner_thread_ = std::thread([this] { TunerLoop(); });
+    if (defer_initial) {
+      requests_.fetch_add(1, std::memory_order_release);
+      requests_.notify_one();
+    }
   }
 }
 
@@ -167,6 +178,12 @@ void SelfTuningLocator::TunerLoop() {
     seen = requests_.load(std::memory_order_acquire);
     if (stopping_.load()) return;
     MutexLock lock(&tune_mu_);
+    if (initial_pending_) {
+      // Not a re-tune: the table the constructor would have built inline.
+      snapshot_.Publish(tuner_.Build(1));
+      initial_pending_ = false;
+      continue;
+    }
     RetuneLocked();
     if (store_ &&
         std::chrono::steady_clock::now() - last_save_ >= kMinSaveInterval) {
@@ -243,6 +260,7 @@ void SelfTuningLocator::PublishLocked() const {
 }
 
 void SelfTuningLocator::RetuneLocked() const {
+  initial_pending_ = false;  // the re-tune builds a full table
   const auto begin = std::chrono::steady_clock::now();
   StartRetuneLocked();
   size_t units = 0;

@@ -59,8 +59,12 @@ namespace locator {
 
 class SelfTuningLocator : public PointLocator {
  public:
-  // `mesh` must outlive the locator. Publishes an initial snapshot tuned for
-  // uniform traffic before returning.
+  // `mesh` must outlive the locator. Publishes an initial snapshot before
+  // returning: the saved state if there is one (options.state_dir), else
+  // the table planned for uniform traffic; in background mode a table with
+  // one start per coarse cell stands in for that one until the tuner thread
+  // has built it, so that construction costs O(cells) walks, not the
+  // budget's.
   SelfTuningLocator(const ServingMesh& mesh, const TuningOptions& options);
   ~SelfTuningLocator() override;
 
@@ -140,6 +144,9 @@ class SelfTuningLocator : public PointLocator {
   // Persistence; null store when nothing persists.
   std::unique_ptr<const TuningStateStore> store_;
   uint64_t saved_version_ GUARDED_BY(tune_mu_) = 1;  // 1: the untuned plan
+  // Background mode: the coarse stand-in is published; the tuner thread's
+  // first task is the table planned for uniform traffic (version 1 still).
+  mutable bool initial_pending_ GUARDED_BY(tune_mu_) = false;
   std::chrono::steady_clock::time_point last_save_ GUARDED_BY(tune_mu_);
   mutable Mutex persistence_mu_;
   PersistenceSummary persistence_ GUARDED_BY(persistence_mu_);

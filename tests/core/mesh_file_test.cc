@@ -63,6 +63,7 @@ void ExpectSameMesh(const BuiltMesh& a, const BuiltMesh& b) {
   EXPECT_EQ(x.digest, y.digest);
   EXPECT_EQ(a.facts.constraints, b.facts.constraints);
   EXPECT_EQ(a.facts.holes, b.facts.holes);
+  EXPECT_EQ(a.facts.duplicates_merged, b.facts.duplicates_merged);
   EXPECT_EQ(Bytes(a.facts.outline.boundary), Bytes(b.facts.outline.boundary));
   EXPECT_EQ(Bytes(a.facts.outline.breaklines),
             Bytes(b.facts.outline.breaklines));
@@ -113,6 +114,7 @@ TEST_F(MeshFileTest, FirstBuildTriangulatesAndWritesTheFile) {
   EXPECT_TRUE(CheckMeshArrays(built_.mesh->arrays()).ok());
   EXPECT_GT(built_.facts.constraints, 0u);
   EXPECT_EQ(built_.facts.holes, 1u);
+  EXPECT_EQ(built_.facts.duplicates_merged, 1u);
   EXPECT_FALSE(built_.facts.outline.boundary.empty());
   EXPECT_FALSE(built_.facts.outline.breaklines.empty());
 }
@@ -145,7 +147,8 @@ TEST_F(MeshFileTest, EnginesOnBuiltAndMappedMeshesAnswerAlike) {
   EXPECT_EQ(a.all_triangles, b.all_triangles);
   EXPECT_EQ(a.constraints, b.constraints);
   EXPECT_EQ(a.holes, b.holes);
-  EXPECT_EQ(a.duplicates_merged, b.duplicates_merged);
+  EXPECT_EQ(a.duplicates_merged, 1u);
+  EXPECT_EQ(b.duplicates_merged, 1u);
   EXPECT_EQ(a.triangulation_bytes, b.triangulation_bytes);
   EXPECT_EQ(Bytes(built->EdgeSample()), Bytes(mapped->EdgeSample()));
   // Points everywhere: inside, in the hole, outside the domain and the
@@ -245,6 +248,14 @@ const BadFile kBadFiles[] = {
        fuzz::ResealMeshFile(b, f);
      },
      "invalid mesh"},
+    {"clockwise_triangle",
+     [](std::string* b, uint64_t f) {
+       // Swap corners 0 and 1 of triangle 0 (bytes 0-3 and 4-7).
+       char* t = b->data() + kMeshFileHeaderBytes;
+       for (int i = 0; i < 4; ++i) std::swap(t[i], t[4 + i]);
+       fuzz::ResealMeshFile(b, f);
+     },
+     "invalid mesh: triangle 0 is not counter-clockwise"},
     {"in_domain_over_count",
      [](std::string* b, uint64_t f) {
        SetU64AndReseal(b, 96, uint64_t{1} << 40, f);
@@ -312,6 +323,66 @@ TEST(MeshFileSeedsTest, CommittedFuzzSeedsAreCurrentFiles) {
     }
     EXPECT_EQ(ReadMeshBytes(corpus + "/" + name), bytes) << name;
   }
+}
+
+TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
+  const auto key = [](const std::string& spec) {
+    GeneratorSpec g;
+    EXPECT_TRUE(ParseGeneratorSpec(spec, &g).ok()) << spec;
+    return g.CanonicalKey();
+  };
+  EXPECT_EQ(key("uniform:1000"), key("uniform:1000:1"));
+  EXPECT_EQ(key("clusters:1000:4"), key("clusters:1000:4:1"));
+  EXPECT_NE(key("uniform:1000:1"), key("uniform:1000:2"));
+  EXPECT_NE(key("uniform:1000:1"), key("uniform:1001:1"));
+  EXPECT_NE(key("clusters:1000:4:1"), key("clusters:1000:5:1"));
+  EXPECT_NE(key("uniform:1000:1"), key("clusters:1000:1:1"));
+  GeneratorSpec g;
+  EXPECT_THAT(ParseGeneratorSpec("uniform:0", &g).message(),
+              HasSubstr("N must be a positive integer"));
+  EXPECT_THAT(ParseGeneratorSpec("clusters:5:9", &g).message(),
+              HasSubstr("K must not exceed N"));
+}
+
+// A generator spec's mesh is found through its key file, without the
+// points; a missing or malformed key sends the caller to generate them.
+TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
+  test::ScratchDir dir;
+  GeneratorSpec spec;
+  ASSERT_TRUE(ParseGeneratorSpec("uniform:500:9", &spec).ok());
+  uint64_t fingerprint = 0;
+  EXPECT_EQ(FindGeneratedFingerprint(dir.path(), spec, &fingerprint).code(),
+            Status::Code::kNotFound);
+  EngineOptions options;
+  options.mesh_cache_dir = dir.path();
+  std::unique_ptr<Engine> built, mapped;
+  ASSERT_TRUE(Engine::Create(GenerateUniform(500, 9), options, &built).ok());
+  const MeshCacheOutcome& cache = built->dataset_info().mesh_cache;
+  ASSERT_TRUE(
+      RecordGeneratedFingerprint(dir.path(), spec, cache.fingerprint).ok());
+  ASSERT_TRUE(FindGeneratedFingerprint(dir.path(), spec, &fingerprint).ok());
+  EXPECT_EQ(fingerprint, cache.fingerprint);
+  ASSERT_TRUE(
+      Engine::CreateFromMeshFile(fingerprint, "uniform:500:9", options, &mapped)
+          .ok());
+  const DatasetInfo& info = mapped->dataset_info();
+  EXPECT_TRUE(info.mesh_cache.mapped);
+  EXPECT_EQ(info.source, "uniform:500:9");
+  EXPECT_EQ(info.input_points, 500u);
+  EXPECT_EQ(info.triangles, built->dataset_info().triangles);
+  EXPECT_EQ(Bytes(mapped->EdgeSample()), Bytes(built->EdgeSample()));
+  // Another fingerprint has no file; a key file that is not one is refused.
+  EXPECT_EQ(
+      Engine::CreateFromMeshFile(fingerprint + 1, "x", options, &mapped).code(),
+      Status::Code::kNotFound);
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    if (entry.path().extension() == ".key") {
+      WriteMeshBytes(entry.path().string(), "not a key\n");
+    }
+  }
+  EXPECT_THAT(
+      FindGeneratedFingerprint(dir.path(), spec, &fingerprint).message(),
+      HasSubstr("is not 16 hex digits and a newline"));
 }
 
 TEST(DatasetFingerprintTest, ChangesWithEveryInputOfTheTriangulation) {

@@ -13,6 +13,7 @@
 #include "server/core/self_tuning_locator.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
+#include "tests/testing/wait.h"
 
 namespace locator {
 namespace {
@@ -80,6 +81,30 @@ TEST_F(LearningTest, InitialSnapshotIsPublishedAtConstruction) {
   EXPECT_TRUE(s.hot_regions.empty());
   // Answers are right before any traffic was seen.
   test::ExpectAllAgree(*locator, t(), test::UniformQueries(box(), 2000, 1));
+}
+
+// In background mode construction publishes one start per coarse cell; the
+// tuner thread then publishes the table an inline locator starts with, as
+// the same version and without counting a re-tune.
+TEST_F(LearningTest, BackgroundModeBuildsTheFirstTableOnTheTunerThread) {
+  TuningOptions options;
+  const SelfTuningLocator inline_locator(t().mesh(), options);
+  const TuningSummary planned = inline_locator.Summary();
+  options.background = true;
+  const SelfTuningLocator locator(t().mesh(), options);
+  const TuningSummary first = locator.Summary();
+  EXPECT_EQ(first.snapshot_version, 1u);
+  EXPECT_LE(first.start_point_count, planned.start_point_count);
+  // Answers are right whichever table serves them.
+  test::ExpectAllAgree(locator, t(), test::UniformQueries(box(), 2000, 2));
+  ASSERT_TRUE(test::WaitUntil([&] {
+    return locator.Summary().start_point_count == planned.start_point_count;
+  })) << "the planned table was never published";
+  const TuningSummary built = locator.Summary();
+  EXPECT_EQ(built.snapshot_version, 1u);
+  EXPECT_EQ(built.retune_count, 0u);
+  EXPECT_EQ(built.memory_bytes, planned.memory_bytes);
+  test::ExpectAllAgree(locator, t(), test::UniformQueries(box(), 2000, 3));
 }
 
 TEST_F(LearningTest, MemoryStaysWithinAnExplicitBudget) {

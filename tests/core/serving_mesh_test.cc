@@ -125,10 +125,11 @@ TEST_P(ServingMeshTest, FacesWithCornersFindsEveryFaceFromAnyCorner) {
   }
   // Clockwise, or a vertex that does not exist: no face.
   const auto c = mesh().CornerIds(0);
-  const std::vector<std::array<uint32_t, 3>> bad = {
-      {c[0], c[2], c[1]}, {c[0], c[1], 1u << 30}};
-  EXPECT_EQ(mesh().FacesWithCorners(bad),
-            (std::vector<uint32_t>{ServingMesh::kNoFace, ServingMesh::kNoFace}));
+  const std::vector<std::array<uint32_t, 3>> bad = {{c[0], c[2], c[1]},
+                                                    {c[0], c[1], 1u << 30}};
+  EXPECT_EQ(
+      mesh().FacesWithCorners(bad),
+      (std::vector<uint32_t>{ServingMesh::kNoFace, ServingMesh::kNoFace}));
 }
 
 TEST_P(ServingMeshTest, WalksFromAnyStartGiveCgalsAnswers) {

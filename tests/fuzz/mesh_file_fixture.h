@@ -24,8 +24,8 @@
 
 namespace locator::fuzz {
 
-// 60 uniform points with values, inside a square ring with a square hole,
-// crossed by a breakline.
+// 60 uniform points (and a repeat of the first) with values, inside a square
+// ring with a square hole, crossed by a breakline.
 inline Dataset MeshFileFixtureDataset() {
   const auto height = [](const Point2& p) { return 3 * p.x - p.y; };
   const auto line = [&height](std::vector<Point2> points) {
@@ -34,6 +34,7 @@ inline Dataset MeshFileFixtureDataset() {
     return l;
   };
   Dataset d = GenerateUniform(60, 7);
+  d.points.push_back(d.points[0]);  // merged into point 0
   for (const Point2& p : d.points) d.values.push_back(height(p));
   d.constraints.rings.push_back(
       line({{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}}));

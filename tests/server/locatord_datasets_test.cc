@@ -266,6 +266,41 @@ TEST_F(LocatordDatasetsTest, ARestartMapsEveryDatasetsMeshFile) {
   ExpectAnswersAgree(*stub_, bedrock_, "bedrock");
 }
 
+// A generator spec's mesh is mapped on a restart without generating its
+// points, and still within --max-dataset-points.
+TEST(LocatordDatasetsStartupTest, AGeneratorSpecRestartsWithoutGenerating) {
+  ScratchDir cache;
+  const std::vector<std::string> flags = {"--mesh-cache", cache.path()};
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord("uniform:20000:3", flags, &server).ok());
+  EXPECT_FALSE(GetStats(*NewStub(*server)).dataset().mesh_cache().mapped());
+  server->SendSignal(SIGTERM);
+  ASSERT_EQ(server->WaitForExit(kExitTimeout), 0);
+
+  ASSERT_TRUE(StartLocatord("uniform:20000:3", flags, &server).ok());
+  const v1::DatasetStats stats = GetStats(*NewStub(*server)).dataset();
+  EXPECT_TRUE(stats.mesh_cache().mapped());
+  EXPECT_EQ(stats.input_points(), 20000u);
+  EXPECT_EQ(stats.source(), "uniform:20000:3");
+  EXPECT_THAT(server->StderrText(),
+              HasSubstr("found the mesh of uniform:20000:3 without "
+                        "generating it"));
+  EXPECT_THAT(server->StderrText(),
+              ::testing::Not(HasSubstr("loading dataset")));
+  server->SendSignal(SIGTERM);
+  ASSERT_EQ(server->WaitForExit(kExitTimeout), 0);
+
+  ASSERT_TRUE(ServerProcess::Spawn(
+                  LOCATORD_PATH,
+                  {"--dataset", "uniform:20000:3", "--mesh-cache", cache.path(),
+                   "--max-dataset-points", "1000", "--listen", "127.0.0.1:0"},
+                  &server)
+                  .ok());
+  EXPECT_EQ(server->WaitForExit(kExitTimeout), 1);
+  EXPECT_THAT(server->StderrText(),
+              HasSubstr("more than 1000 points (max_points limit)"));
+}
+
 TEST(LocatordDatasetsStartupTest, MaxDatasetPointsIsATotal) {
   std::unique_ptr<ServerProcess> server;
   ASSERT_TRUE(ServerProcess::Spawn(LOCATORD_PATH,
