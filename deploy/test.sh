@@ -20,7 +20,7 @@
 #
 # Environment knobs (defaults are what CI runs):
 #   BUILD_DIR=build  LOCATOR_CI_SANITIZERS=1  LOCATOR_CI_FUZZ=1
-#   LOCATOR_CI_SOAK=1  LOCATOR_FUZZ_SECONDS=30  LOCATOR_SOAK_SECONDS=60
+#   LOCATOR_CI_SOAK=1  LOCATOR_FUZZ_SECONDS=20  LOCATOR_SOAK_SECONDS=60
 # ccache is used when it is installed (it is not installed by this script).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,7 +29,8 @@ BUILD_DIR="${BUILD_DIR:-build}"
 SANITIZERS="${LOCATOR_CI_SANITIZERS:-1}"
 FUZZ="${LOCATOR_CI_FUZZ:-1}"
 SOAK="${LOCATOR_CI_SOAK:-1}"
-FUZZ_SECONDS="${LOCATOR_FUZZ_SECONDS:-30}"
+# Five fuzzers, two at a time: three rounds of this many seconds.
+FUZZ_SECONDS="${LOCATOR_FUZZ_SECONDS:-20}"
 SOAK_SECONDS="${LOCATOR_SOAK_SECONDS:-60}"
 JOBS="$(nproc)"
 # Sanitizer trees: -O1 (the sanitizers' own advice; half the compile time

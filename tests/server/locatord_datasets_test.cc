@@ -346,7 +346,7 @@ TEST(LocatordDatasetsStartupTest, HealthServesOnceTheLastDatasetServes) {
   ASSERT_TRUE(
       ServerProcess::Spawn(LOCATORD_PATH,
                            {"--dataset", "small=uniform:2000:1", "--dataset",
-                            "big=uniform:1000000:2", "--listen", "127.0.0.1:0"},
+                            "big=uniform:300000:2", "--listen", "127.0.0.1:0"},
                            &server)
           .ok());
   ASSERT_TRUE(server->WaitForListening().ok());

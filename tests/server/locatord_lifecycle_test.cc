@@ -39,11 +39,11 @@ TEST(LocatordStartupTest, HealthGoesFromNotServingToServing) {
   std::unique_ptr<ServerProcess> server;
   ASSERT_TRUE(ServerProcess::Spawn(
                   LOCATORD_PATH,
-                  {"--dataset", "uniform:1000000:3", "--listen", "127.0.0.1:0"},
+                  {"--dataset", "uniform:300000:3", "--listen", "127.0.0.1:0"},
                   &server)
                   .ok());
   ASSERT_TRUE(server->WaitForListening().ok());
-  // Loading a million points takes far longer than these two probes, but
+  // Loading 3 x 10^5 points takes far longer than these two probes, but
   // either one observing the loading state is enough.
   HealthStatus health = HealthStatus::kUnknown;
   const grpc::Status probe = server->CheckHealth(&health);
