@@ -254,10 +254,11 @@ TEST_F(StatusHttpTest, AnHttpAddressInUseExitsOne) {
 }
 
 // Everything the HTTP side serves, for a locatord serving a dataset file,
-// with a state dir, and `flags`.
+// with a state dir and a mesh cache, and `flags`.
 struct HttpOutputs {
   std::string dataset_path;
   std::string state_dir;
+  std::string mesh_cache;
   std::string text;  // every body, one after another
   JsonValue stats;
 };
@@ -266,9 +267,12 @@ void ReadHttpOutputs(const std::vector<std::string>& flags,
                      HttpOutputs* outputs) {
   const TestDatasetFile dataset;
   const test::ScratchDir state_dir;
+  const test::ScratchDir mesh_cache;
   outputs->dataset_path = dataset.path();
   outputs->state_dir = state_dir.path();
-  std::vector<std::string> all = {"--state-dir", state_dir.path()};
+  outputs->mesh_cache = mesh_cache.path();
+  std::vector<std::string> all = {"--state-dir", state_dir.path(),
+                                  "--mesh-cache", mesh_cache.path()};
   all.insert(all.end(), flags.begin(), flags.end());
   std::unique_ptr<LocatordWithHttp> server;
   const Status started = LocatordWithHttp::Start(dataset.path(), all, &server);
@@ -290,8 +294,10 @@ TEST(StatusHttpRedactTest, WithRedactNoHttpOutputShowsAServerPath) {
   ASSERT_NO_FATAL_FAILURE(ReadHttpOutputs({"--redact"}, &outputs));
   EXPECT_THAT(outputs.text, Not(HasSubstr(outputs.dataset_path)));
   EXPECT_THAT(outputs.text, Not(HasSubstr(outputs.state_dir)));
+  EXPECT_THAT(outputs.text, Not(HasSubstr(outputs.mesh_cache)));
   EXPECT_EQ(outputs.stats["dataset"]["source"].string(), "");
   EXPECT_EQ(outputs.stats["tuning"]["persistence"]["state_path"].string(), "");
+  EXPECT_EQ(outputs.stats["dataset"]["mesh_cache"]["path"].string(), "");
 }
 
 // The test above would pass vacuously if the paths never showed.
@@ -300,6 +306,7 @@ TEST(StatusHttpRedactTest, WithoutRedactStatsShowThePaths) {
   ASSERT_NO_FATAL_FAILURE(ReadHttpOutputs({}, &outputs));
   EXPECT_THAT(outputs.text, HasSubstr(outputs.dataset_path));
   EXPECT_THAT(outputs.text, HasSubstr(outputs.state_dir));
+  EXPECT_THAT(outputs.text, HasSubstr(outputs.mesh_cache));
   EXPECT_EQ(outputs.stats["dataset"]["source"].string(), outputs.dataset_path);
 }
 
