@@ -87,7 +87,8 @@ TEST_F(LearningTest, InitialSnapshotIsPublishedAtConstruction) {
 // tuner thread then publishes the table an inline locator starts with, as
 // the same version and without counting a re-tune.
 TEST_F(LearningTest, BackgroundModeBuildsTheFirstTableOnTheTunerThread) {
-  TuningOptions options;
+  // No re-tunes: the queries below would otherwise trigger one.
+  TuningOptions options = Frozen(TuningOptions());
   const SelfTuningLocator inline_locator(t().mesh(), options);
   const TuningSummary planned = inline_locator.Summary();
   options.background = true;
