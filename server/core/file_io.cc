@@ -7,6 +7,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cinttypes>
+#include <cstdio>
 #include <system_error>
 #include <utility>
 
@@ -172,6 +174,16 @@ Status WriteFileAtomically(const std::string& path,
                            ": " + ErrorText(errno));
   }
   return Status::OK();
+}
+
+std::string DigestNamedPath(const std::string& dir, std::string_view prefix,
+                            uint64_t digest, std::string_view suffix) {
+  char hex[17];
+  std::snprintf(hex, sizeof(hex), "%016" PRIx64, digest);
+  std::string path = dir;
+  if (!path.empty() && path.back() != '/') path.push_back('/');
+  path.append(prefix).append(hex).append(suffix);
+  return path;
 }
 
 MappedFile::~MappedFile() {

@@ -9,6 +9,7 @@
 #define LOCATOR_CORE_FILE_IO_H_
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <string>
@@ -36,6 +37,12 @@ Status WriteFileAtomically(const std::string& path, std::string_view bytes);
 // without first concatenating them in memory).
 Status WriteFileAtomically(const std::string& path,
                            std::span<const std::string_view> pieces);
+
+// "DIR/PREFIX<digest as 16 hex digits>SUFFIX": the file in `dir` named by a
+// 64-bit digest (just the name for an empty `dir`; one '/' when `dir` ends
+// in one).
+std::string DigestNamedPath(const std::string& dir, std::string_view prefix,
+                            uint64_t digest, std::string_view suffix);
 
 // A regular file mapped read-only and shared (MAP_SHARED: processes mapping
 // the same file share its pages). Unmapped when destroyed. Move-only.

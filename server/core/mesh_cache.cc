@@ -38,25 +38,18 @@ void ReturnFreedMemory() {
 #endif
 }
 
-// "DIR/PREFIX<16 hex digits of value>SUFFIX".
-std::string PathIn(const std::string& dir, const char* prefix, uint64_t value,
-                   const char* suffix) {
-  char hex[17];
-  std::snprintf(hex, sizeof(hex), "%016" PRIx64, value);
-  return dir + "/" + prefix + hex + suffix;
-}
-
-std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
-  return PathIn(dir, "mesh-", fingerprint, ".mesh");
-}
-
 std::string GeneratedKeyPath(const std::string& dir,
                              const GeneratorSpec& spec) {
   const std::string key = spec.CanonicalKey();
-  return PathIn(dir, "generated-", XXH3_64bits(key.data(), key.size()), ".key");
+  return DigestNamedPath(dir, "generated-", XXH3_64bits(key.data(), key.size()),
+                         ".key");
 }
 
 }  // namespace
+
+std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
+  return DigestNamedPath(dir, "mesh-", fingerprint, ".mesh");
+}
 
 Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out) {
   std::unique_ptr<Triangulation> t;

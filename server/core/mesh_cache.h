@@ -35,6 +35,10 @@ struct MeshCacheOutcome {
   std::string save_error;
 };
 
+// The mesh file of the dataset with `fingerprint` in `dir`
+// (DigestNamedPath: "mesh-<16 hex digits>.mesh").
+std::string MeshFilePath(const std::string& dir, uint64_t fingerprint);
+
 // Triangulates `dataset` with CGAL, derives its serving mesh and facts, and
 // frees CGAL's triangulation. InvalidArgument as Triangulation::Build.
 Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out);

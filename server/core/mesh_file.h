@@ -20,7 +20,8 @@
 // the magic, byte order and version match; the header's checksum matches;
 // it was made for the expected fingerprint; its length is what the counts
 // say; the payload's checksum matches; and every index in it stays inside
-// the arrays (CheckMeshArrays), as does every coordinate finite. The
+// the arrays, every triangle is strictly counter-clockwise and every
+// coordinate finite (CheckMeshArrays). The
 // checksums and the fingerprint vouch that the mesh is the triangulation a
 // build of that dataset wrote; the bounds checks make sure that no bytes,
 // however made, lead a query outside the arrays.

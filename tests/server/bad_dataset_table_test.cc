@@ -14,8 +14,6 @@
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
-#include <cinttypes>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -24,6 +22,7 @@
 
 #include "server/core/dataset.h"
 #include "server/core/dataset_fingerprint.h"
+#include "server/core/mesh_cache.h"
 #include "server/core/mesh_file.h"
 #include "tests/server/dataset_table.h"
 
@@ -314,10 +313,7 @@ std::string MeshCacheCsv() {
 std::string MeshFileNameOf(const std::string& csv) {
   Dataset dataset;
   EXPECT_TRUE(ParseXyzText(csv, "mesh_cache.csv", &dataset).ok());
-  char name[32];
-  std::snprintf(name, sizeof(name), "mesh-%016" PRIx64 ".mesh",
-                DatasetFingerprint(dataset));
-  return name;
+  return MeshFilePath("", DatasetFingerprint(dataset));
 }
 
 // A row serving MeshCacheCsv() with --mesh-cache beside a mesh file holding
