@@ -1,5 +1,6 @@
 #include "server/http/http_server.h"
 
+#include <atomic>
 #include <boost/asio/post.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
@@ -31,9 +32,10 @@ std::string Unbracketed(const std::string& host) {
 
 // One client connection: reads a request, hands it to the handler, writes
 // its reply, and repeats while the client keeps the connection alive. Owned
-// by the completion handlers and the reply function in flight
-// (shared_from_this), so it lives exactly as long as it has work pending.
-// Its members are only touched on the server's thread.
+// by the completion handlers in flight (shared_from_this) or, while the
+// handler works, by the server's awaiting_reply_, so it lives exactly as
+// long as it has work pending and never outlives the server. Its members
+// are only touched on the server's thread.
 class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
  public:
   Connection(HttpServer* server, tcp::socket socket)
@@ -111,25 +113,20 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
     request.body_too_large = body_too_large;
     if (!body_too_large) request.body = std::move(parser_->get().body());
     // An unread body leaves the stream mid-message: close after replying.
-    const bool keep_alive = message.keep_alive() && !body_too_large;
+    keep_alive_ = message.keep_alive() && !body_too_large;
     linger_ = body_too_large;
-    const bool head = message.method() == http::verb::head;
-    const unsigned version = message.version();
-    server_->handler_(
-        std::move(request), [self = shared_from_this(), keep_alive, head,
-                             version](HttpResponse reply) {
-          asio::post(self->stream_.get_executor(),
-                     [self, keep_alive, head, version,
-                      reply = std::move(reply)]() mutable {
-                       self->Write(std::move(reply), version, keep_alive, head);
-                     });
-        });
+    head_ = message.method() == http::verb::head;
+    version_ = message.version();
+    server_->handler_(std::move(request),
+                      server_->AwaitReply(shared_from_this()));
   }
 
-  void Write(HttpResponse reply, unsigned version, bool keep_alive, bool head) {
+ public:
+  // Sends the reply to the request last dispatched.
+  void Write(HttpResponse reply) {
     response_ = {};
-    response_.version(version);
-    response_.keep_alive(keep_alive);
+    response_.version(version_);
+    response_.keep_alive(keep_alive_);
     response_.result(reply.status);
     response_.set(http::field::server, "locatord");
     response_.set(http::field::cache_control, "no-store");
@@ -138,7 +135,7 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
     response_.body() = std::move(reply.body);
     response_.prepare_payload();
     // HEAD: the GET's headers, Content-Length included, and no body.
-    if (head) response_.body().clear();
+    if (head_) response_.body().clear();
     stream_.expires_after(kIdleTimeout);
     http::async_write(
         stream_, response_,
@@ -155,6 +152,7 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
         });
   }
 
+ private:
   // Reads and drops what the client still sends of a body that was not
   // read, until it closes, kMaxLingerBytes or kLingerTimeout: closing with
   // unread data would reset the connection, and the client could lose the
@@ -174,9 +172,71 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
   http::response<http::string_body> response_;  // kept alive while written
-  bool linger_ = false;  // the last request's body was not read
+  // Of the request last dispatched: how to answer it.
+  bool keep_alive_ = false;
+  bool head_ = false;
+  unsigned version_ = 11;
+  bool linger_ = false;  // its body was not read
   size_t lingered_ = 0;
 };
+
+// The state behind one reply function: answers its connection once, or
+// abandons it if destroyed unanswered. Any thread.
+class HttpServer::ReplyTicket {
+ public:
+  ReplyTicket(HttpServer* server, uint64_t id)
+      : server_(server), gate_(server->reply_gate_), id_(id) {}
+  ~ReplyTicket() {
+    if (!answered_.load()) {
+      gate_->Post([server = server_, id = id_] { server->Abandon(id); });
+    }
+  }
+  ReplyTicket(const ReplyTicket&) = delete;
+  ReplyTicket& operator=(const ReplyTicket&) = delete;
+
+  // Sends `response`, unless already answered.
+  void Answer(HttpResponse response) {
+    if (answered_.exchange(true)) return;
+    gate_->Post(
+        [server = server_, id = id_, response = std::move(response)]() mutable {
+          server->Answer(id, std::move(response));
+        });
+  }
+
+ private:
+  HttpServer* const server_;  // only dereferenced on the server's thread
+  const std::shared_ptr<ReplyGate> gate_;
+  const uint64_t id_;
+  std::atomic<bool> answered_{false};
+};
+
+void HttpServer::ReplyGate::Post(std::function<void()> work) {
+  MutexLock lock(&mu_);
+  if (io_context_ != nullptr) asio::post(*io_context_, std::move(work));
+}
+
+void HttpServer::ReplyGate::Close() {
+  MutexLock lock(&mu_);
+  io_context_ = nullptr;
+}
+
+HttpReply HttpServer::AwaitReply(std::shared_ptr<Connection> connection) {
+  const uint64_t id = next_reply_id_++;
+  awaiting_reply_.emplace(id, std::move(connection));
+  auto ticket = std::make_shared<ReplyTicket>(this, id);
+  return
+      [ticket](HttpResponse response) { ticket->Answer(std::move(response)); };
+}
+
+void HttpServer::Answer(uint64_t id, HttpResponse response) {
+  const auto found = awaiting_reply_.find(id);
+  if (found == awaiting_reply_.end()) return;
+  const std::shared_ptr<Connection> connection = std::move(found->second);
+  awaiting_reply_.erase(found);
+  connection->Write(std::move(response));
+}
+
+void HttpServer::Abandon(uint64_t id) { awaiting_reply_.erase(id); }
 
 std::optional<std::string_view> HttpRequest::Header(
     std::string_view name) const {
@@ -189,6 +249,7 @@ std::optional<std::string_view> HttpRequest::Header(
 HttpServer::HttpServer(size_t max_body_bytes, HttpHandler handler)
     : max_body_bytes_(max_body_bytes),
       handler_(std::move(handler)),
+      reply_gate_(std::make_shared<ReplyGate>(&io_context_)),
       acceptor_(io_context_),
       accept_retry_(io_context_) {}
 
@@ -232,6 +293,7 @@ Status HttpServer::Listen(const std::string& host, int port) {
 }
 
 HttpServer::~HttpServer() {
+  reply_gate_->Close();
   io_context_.stop();
   if (thread_.joinable()) thread_.join();
 }

@@ -19,8 +19,9 @@
 //
 // Thread-safety: the handler is called on the server's thread, one request
 // at a time, and must return quickly; the reply function may be called from
-// any thread, exactly once per request, and before the server is destroyed
-// (it holds the request's connection).
+// any thread, at most once per request, and may outlive the server: a reply
+// after the server is destroyed is dropped. A reply function destroyed
+// without being called closes the request's connection.
 
 #ifndef LOCATOR_SERVER_HTTP_HTTP_SERVER_H_
 #define LOCATOR_SERVER_HTTP_HTTP_SERVER_H_
@@ -31,15 +32,18 @@
 #include <boost/asio/steady_timer.hpp>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "common/mutex.h"
 #include "common/status.h"
 
 namespace locator {
@@ -68,7 +72,7 @@ struct HttpResponse {
   std::vector<std::pair<std::string, std::string>> headers = {};
 };
 
-// Answers one request; call exactly once, from any thread.
+// Answers one request; call once, from any thread (see above).
 using HttpReply = std::function<void(HttpResponse response)>;
 // Handles one request (see the thread-safety note above).
 using HttpHandler = std::function<void(HttpRequest request, HttpReply reply)>;
@@ -105,10 +109,33 @@ class HttpServer {
 
  private:
   class Connection;
+  class ReplyTicket;
+
+  // Lets reply functions on any thread post to the io_context while the
+  // server lives, and makes them drop their work once it is closed.
+  class ReplyGate {
+   public:
+    explicit ReplyGate(boost::asio::io_context* io_context)
+        : io_context_(io_context) {}
+    // Runs `work` on the server's thread, unless the gate is closed.
+    void Post(std::function<void()> work) EXCLUDES(mu_);
+    // After this, Post drops its work; called before the io_context stops.
+    void Close() EXCLUDES(mu_);
+
+   private:
+    Mutex mu_;
+    boost::asio::io_context* io_context_ GUARDED_BY(mu_);  // null: closed
+  };
 
   HttpServer(size_t max_body_bytes, HttpHandler handler);
   Status Listen(const std::string& host, int port);
   void Accept();
+  // Server's thread: keeps `connection` until its reply; returns the reply
+  // function that answers it.
+  HttpReply AwaitReply(std::shared_ptr<Connection> connection);
+  // Server's thread: answers, or closes, the connection awaiting reply `id`.
+  void Answer(uint64_t id, HttpResponse response);
+  void Abandon(uint64_t id);
 
   const size_t max_body_bytes_;
   const HttpHandler handler_;
@@ -117,6 +144,12 @@ class HttpServer {
   // it is destroyed.
   size_t open_connections_ = 0;
   boost::asio::io_context io_context_;
+  const std::shared_ptr<ReplyGate> reply_gate_;
+  // Connections waiting for their handler's reply, by reply id; only
+  // touched on the server's thread. After io_context_: their sockets are
+  // closed before it is destroyed.
+  std::unordered_map<uint64_t, std::shared_ptr<Connection>> awaiting_reply_;
+  uint64_t next_reply_id_ = 0;
   boost::asio::ip::tcp::acceptor acceptor_;
   boost::asio::steady_timer accept_retry_;
   int port_ = 0;

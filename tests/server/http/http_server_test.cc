@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/mutex.h"
 #include "tests/server/http/http_test_client.h"
 
 namespace locator {
@@ -31,7 +32,8 @@ class HttpServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
     // Echoes "METHOD PATH?QUERY BODY"; "/missing" is 404, a body over the
-    // limit 413, "/later" is answered from another thread.
+    // limit 413, "/later" is answered from another thread, "/held" is kept
+    // unanswered in held_ and "/dropped" is never answered.
     const Status started = HttpServer::Start(
         "127.0.0.1", 0, kMaxBody,
         [this](HttpRequest request, locator::HttpReply reply) {
@@ -40,6 +42,13 @@ class HttpServerTest : public ::testing::Test {
             reply(HttpResponse{413, "text/plain", "too large"});
             return;
           }
+          if (request.path == "/held") {
+            MutexLock lock(&held_mu_);
+            held_.push_back(std::move(reply));
+            held_arrived_.Signal();
+            return;
+          }
+          if (request.path == "/dropped") return;
           if (request.path == "/missing") {
             reply(HttpResponse{404, "text/plain", "no"});
             return;
@@ -60,6 +69,10 @@ class HttpServerTest : public ::testing::Test {
   }
 
   std::atomic<int> handled_{0};
+  Mutex held_mu_;
+  // Before server_: these reply functions outlive the server.
+  std::vector<locator::HttpReply> held_ GUARDED_BY(held_mu_);
+  CondVar held_arrived_;
   std::unique_ptr<HttpServer> server_;
 };
 
@@ -101,6 +114,36 @@ TEST_F(HttpServerTest, RepliesMayComeFromAnotherThread) {
     ASSERT_TRUE(SendHttp(server_->port(), "POST", "/later", &reply, "b").ok());
     EXPECT_EQ(reply.body, "POST /later? b");
   }
+}
+
+TEST_F(HttpServerTest, AReplyDroppedUnansweredClosesTheConnection) {
+  std::string received;
+  ASSERT_TRUE(RawExchange(server_->port(),
+                          "GET /dropped HTTP/1.1\r\nHost: x\r\n\r\n", &received)
+                  .ok());
+  EXPECT_EQ(received, "");
+}
+
+TEST_F(HttpServerTest, AReplyMayOutliveTheServer) {
+  // A client whose request is held, on a thread of its own: it sees the
+  // connection close when the server goes.
+  std::thread client([port = server_->port()] {
+    std::string received;
+    EXPECT_TRUE(
+        RawExchange(port, "GET /held HTTP/1.1\r\nHost: x\r\n\r\n", &received)
+            .ok());
+    EXPECT_EQ(received, "");
+  });
+  {
+    MutexLock lock(&held_mu_);
+    while (held_.empty()) held_arrived_.Wait(&held_mu_);
+  }
+  server_.reset();
+  client.join();
+  // Answered after the server is gone: dropped. The reply functions are
+  // destroyed after the server, too (held_ outlives server_).
+  MutexLock lock(&held_mu_);
+  held_.front()(HttpResponse{200, "text/plain", "late"});
 }
 
 TEST_F(HttpServerTest, ABodyOverTheLimitIsNotReadButAnswered) {

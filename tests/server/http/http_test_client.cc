@@ -28,6 +28,23 @@ Status Connect(int port, beast::tcp_stream* stream) {
   return Status::OK();
 }
 
+// Runs the asynchronous operation `start` begins on `stream` to its end,
+// within kTimeout: the synchronous calls would ignore the stream's expiry
+// and wait for ever for a server that never answers.
+template <class Start>
+beast::error_code Await(asio::io_context& io, beast::tcp_stream& stream,
+                        Start start, size_t* transferred = nullptr) {
+  beast::error_code result;
+  stream.expires_after(kTimeout);
+  start([&](beast::error_code error, size_t bytes) {
+    result = error;
+    if (transferred != nullptr) *transferred = bytes;
+  });
+  io.restart();
+  io.run();
+  return result;
+}
+
 std::string Lower(std::string_view text) {
   std::string lower(text);
   std::transform(lower.begin(), lower.end(), lower.begin(),
@@ -63,7 +80,9 @@ Status SendHttp(int port, std::string_view method, std::string_view target,
   parser.body_limit(64 << 20);
   // A HEAD reply has no body whatever its Content-Length says.
   parser.skip(request.method() == http::verb::head);
-  http::read(stream, buffer, parser, error);
+  error = Await(io, stream, [&](auto handler) {
+    http::async_read(stream, buffer, parser, handler);
+  });
   if (error) return Status::IOError("read: " + error.message());
   const auto& response = parser.get();
   reply->status = response.result_int();
@@ -87,8 +106,13 @@ Status RawExchange(int port, std::string_view raw, std::string* received) {
   received->clear();
   char chunk[4096];
   for (;;) {
-    stream.expires_after(kTimeout);
-    const size_t got = stream.read_some(asio::buffer(chunk), error);
+    size_t got = 0;
+    error = Await(
+        io, stream,
+        [&](auto handler) {
+          stream.async_read_some(asio::buffer(chunk), handler);
+        },
+        &got);
     received->append(chunk, got);
     if (error == asio::error::eof || error == asio::error::connection_reset) {
       return Status::OK();
