@@ -145,7 +145,7 @@ void AddEngineFlags(const ServerConfig& defaults, EngineFlags* flags,
       po::value(&flags->budget)
           ->default_value(std::to_string(tuning.budget_bytes)),
       "self-tuning: start table memory budget (bytes; B, KiB, MiB, GiB "
-      "suffix); 0 = 3% of the triangulation")(
+      "suffix); 0 = 10% of the triangulation")(
       "stats-interval-s",
       po::value(&flags->stats_interval_s)->default_value("0"),
       "log a stats line this often; 0 = never")(

@@ -3,8 +3,8 @@
 //
 // CSV header: mode,workload,n,strategy,mean_cost,mean_faces,
 // mean_comparisons,ns_per_query,extra_bytes,retunes_per_1e6,tune_cpu_share,
-// p50_ns,p999_ns,batch_ns_per_query (the last five are --scale figures, 0
-// where not measured). Mode is "paper",
+// p50_ns,p999_ns,batch_ns_per_query,full_ns_per_query (the last six are
+// --scale figures, 0 where not measured). Mode is "paper",
 // "paper-<domain kind>" (cdt, mesh, aniso: the paper's setting on a
 // non-Delaunay triangulation), "drift"
 // (workload "drift@<first query of the 500-query window>"), "scale", or
@@ -30,17 +30,21 @@ struct BenchRow {
   double mean_cost = 0;
   double mean_faces = 0;
   double mean_comparisons = 0;
-  double ns_per_query = 0;  // 0 when not timed
+  // --scale: a Locate() answering what CGAL's rows answer (location type,
+  // triangle and vertices: Detail::kLocation); 0 when not timed.
+  double ns_per_query = 0;
   size_t extra_bytes = 0;
   // Re-tunes per 10^6 located queries, and the share of the timed wall
   // time spent inside re-tunes (TuningSummary::tune_nanos).
   double retunes_per_million = 0;
   double tune_cpu_share = 0;
-  // Sampled single-locate latency (SampleLatency), and ns per point of one
-  // LocateMany() over the same queries.
+  // Sampled single-locate latency (SampleLatency), ns per point of one
+  // LocateMany() over the same queries (both Detail::kLocation), and ns per
+  // Locate() with the full answer (barycentrics and value too).
   double p50_ns = 0;
   double p999_ns = 0;
   double batch_ns_per_query = 0;
+  double full_ns_per_query = 0;
 };
 
 class BenchReport {

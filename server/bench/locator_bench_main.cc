@@ -3,14 +3,17 @@
 //   locator-bench --paper [--format csv|md] [--seeds 5] [--budget 64KiB]
 //                 [--domain cdt|mesh|aniso] [--verify]
 //   locator-bench --scale [--big] [--format csv|md] [--queries 100000]
+//                 [--workloads raster,1-cluster] [--strategies self-tuning]
 //
 // --scale runs the workloads of common/workload.h plus `raster` (a row-major
 // grid of queries over the bounding box, in row order) on uniform points,
 // and `clusters-data` (queries near the points) and `clusters-raster` on a
-// non-uniform dataset (clusters:<n>:20:1). Its rows also give re-tunes per
-// 10^6 located queries and the tuner's share of the timed wall time (from
-// the first timed locate to the last batch), a sampled single-locate p50
-// and p99.9 (one query in 64 timed on its own), and batch_ns_per_query:
+// non-uniform dataset (clusters:<n>:20:1). ns_per_query times what CGAL's
+// rows answer: the location (type, triangle, vertices), without
+// barycentrics or value, which full_ns_per_query adds. Its rows also give
+// re-tunes per 10^6 located queries and the tuner's share of the timed wall
+// time (from the first timed locate to the last), a sampled single-locate
+// p50 and p99.9 (one query in 64 timed on its own), and batch_ns_per_query:
 // ns per point of one LocateMany() over the same queries, in-process.
 //
 // A program that prints figures, never a test: compare strategies within one
@@ -31,10 +34,16 @@ namespace po = boost::program_options;
 
 namespace {
 
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+  return items;
+}
+
 std::vector<size_t> ParseSizes(const std::string& text) {
   std::vector<size_t> sizes;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
+  for (const std::string& item : SplitList(text)) {
     sizes.push_back(std::stoul(item));
   }
   return sizes;
@@ -45,7 +54,7 @@ std::vector<size_t> ParseSizes(const std::string& text) {
 int main(int argc, char** argv) {
   po::options_description desc(
       "locator-bench: in-process point-location benchmark\nOptions");
-  std::string format = "md", budget, sizes, domain;
+  std::string format = "md", budget, sizes, domain, workloads, strategies;
   locator::bench::PaperOptions paper;
   locator::bench::ScaleOptions scale;
   desc.add_options()("help,h", "print this help")(
@@ -61,12 +70,17 @@ int main(int argc, char** argv) {
       "sizes", po::value(&sizes),
       "comma-separated n values (default: the mode's own)")(
       "budget", po::value(&budget),
-      "self-tuning memory budget, e.g. 64KiB (default 3% of the "
+      "self-tuning memory budget, e.g. 64KiB (default 10% of the "
       "triangulation)")("queries",
                         po::value(&scale.queries)->default_value(100000),
                         "--scale: timed queries per workload")(
       "repeats", po::value(&scale.repeats)->default_value(5),
-      "--scale: timing repeats (median reported)");
+      "--scale: timing repeats (median reported)")(
+      "workloads", po::value(&workloads),
+      "--scale: only these workloads, comma-separated (default: all)")(
+      "strategies", po::value(&strategies),
+      "--scale: only these strategies, comma-separated (default: all; "
+      "CGAL's rows always run)");
   po::variables_map vm;
   try {
     po::store(po::parse_command_line(argc, argv, desc), vm);
@@ -99,6 +113,8 @@ int main(int argc, char** argv) {
     paper.domain = kind;
   }
   paper.verify = vm.count("verify") > 0;
+  scale.workloads = SplitList(workloads);
+  scale.strategies = SplitList(strategies);
   if (!sizes.empty()) {
     try {
       paper.sizes = scale.sizes = ParseSizes(sizes);

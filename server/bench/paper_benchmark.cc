@@ -79,7 +79,8 @@ Status RunStream(const PaperOptions& o, const Triangulation& t,
                  const std::string& strategy, const Stream& stream,
                  SizeResults* out, Disagreements* disagreements) {
   std::unique_ptr<PointLocator> locator;
-  if (Status s = MakePointLocator(strategy, t.mesh(), o.tuning, &locator); !s.ok()) {
+  if (Status s = MakePointLocator(strategy, t.mesh(), o.tuning, &locator);
+      !s.ok()) {
     return s;
   }
   const size_t total = stream.queries.size();

@@ -1,10 +1,12 @@
 #include "server/bench/scale_benchmark.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <random>
 #include <string>
+#include <string_view>
 
 #include "common/random.h"
 #include "common/workload.h"
@@ -72,6 +74,34 @@ std::vector<Point2> NearPointQueries(const Dataset& dataset,
   return queries;
 }
 
+bool Selected(const std::vector<std::string>& names, std::string_view name) {
+  return names.empty() ||
+         std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The --scale workloads on uniform points, then on the clustered dataset.
+std::vector<std::string> WorkloadNames(bool clustered) {
+  if (clustered) return {"clusters-data", "clusters-raster"};
+  std::vector<std::string> names;
+  for (WorkloadKind kind : AllWorkloadKinds()) {
+    names.emplace_back(WorkloadName(kind));
+  }
+  names.emplace_back("raster");
+  return names;
+}
+
+// InvalidArgument naming the first of `names` that is not in `known`.
+Status CheckNames(const std::vector<std::string>& names,
+                  const std::vector<std::string>& known, const char* what) {
+  for (const std::string& name : names) {
+    if (!Selected(known, name)) {
+      return Status::InvalidArgument(std::string("unknown ") + what + " '" +
+                                     name + "'");
+    }
+  }
+  return Status::OK();
+}
+
 // Times every strategy and CGAL's methods on `all` (its first o.warmup
 // queries warm the strategies up), adds their rows, and counts answers that
 // disagree with CGAL into *mismatches. With `record_build`, also the
@@ -90,6 +120,7 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
   LocateResult r;
   std::vector<LocateResult> batch(measured.size());
   for (const std::string& strategy : StrategyNames()) {
+    if (!Selected(o.strategies, strategy)) continue;
     auto start = std::chrono::steady_clock::now();
     std::unique_ptr<PointLocator> locator;
     const Status s = MakePointLocator(strategy, t.mesh(), o.tuning, &locator);
@@ -109,7 +140,9 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
       checker.Check(timed[i], r, reference[i]);
     }
     *mismatches += checker.mismatches();
-    const auto locate = [&](const Point2& q) { locator->Locate(q, &r); };
+    const auto locate = [&](const Point2& q) {
+      locator->Locate(q, &r, Detail::kLocation);
+    };
     BenchRow row{"scale",
                  workload,
                  n,
@@ -121,12 +154,14 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
                  0};
     const LatencySample latency = SampleLatency(timed, locate);
     row.batch_ns_per_query = MedianNsPerPoint(timed.size(), o.repeats, [&] {
-      locator->LocateMany(timed, batch.data());
+      locator->LocateMany(timed, batch.data(), Detail::kLocation);
     });
+    row.full_ns_per_query = MedianNsPerQuery(
+        timed, o.repeats, [&](const Point2& q) { locator->Locate(q, &r); });
     const double seconds = watch.Seconds();
     const TuningSummary after = locator->Summary();
     const double located = static_cast<double>(timed.size()) *
-                           (2 * static_cast<double>(o.repeats) + 2);
+                           (3 * static_cast<double>(o.repeats) + 2);
     row.retunes_per_million =
         1e6 * static_cast<double>(after.retune_count - before.retune_count) /
         located;
@@ -182,10 +217,23 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
 }  // namespace
 
 Status RunScale(const ScaleOptions& o, BenchReport* report) {
+  std::vector<std::string> known = WorkloadNames(false);
+  for (std::string& name : WorkloadNames(true)) known.push_back(name);
+  if (Status s = CheckNames(o.workloads, known, "workload"); !s.ok()) return s;
+  if (Status s = CheckNames(o.strategies, StrategyNames(), "strategy");
+      !s.ok()) {
+    return s;
+  }
   size_t mismatches = 0;
   const size_t count = o.warmup + o.queries;
   for (size_t n : o.sizes) {
     for (const bool clustered : {false, true}) {
+      const std::vector<std::string> names = WorkloadNames(clustered);
+      if (std::none_of(names.begin(), names.end(), [&](const std::string& w) {
+            return Selected(o.workloads, w);
+          })) {
+        continue;
+      }
       const Dataset dataset = clustered ? GenerateClusters(n, kClusterBlobs, 1)
                                         : GenerateUniform(n, 1);
       const std::string suffix = clustered ? "-clusters" : "";
@@ -217,6 +265,7 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
         workloads.emplace_back("raster", RasterQueries(box, count));
       }
       for (const auto& [workload, queries] : workloads) {
+        if (!Selected(o.workloads, workload)) continue;
         s = RunWorkload(o, *t, cgal, workload, queries, workload == "uniform",
                         report, &mismatches);
         if (!s.ok()) return s;

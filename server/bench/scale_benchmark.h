@@ -10,6 +10,7 @@
 #define LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "common/status.h"
@@ -25,10 +26,14 @@ struct ScaleOptions {
   // walk and CGAL without a hint are O(sqrt n) per query: fewer queries.
   size_t slow_queries = 2000;
   int repeats = 5;
+  // Only these workloads / strategies (names as in the report); empty: all.
+  std::vector<std::string> workloads;
+  std::vector<std::string> strategies;
   TuningOptions tuning;
 };
 
-// Fails with Internal if any answer disagrees with CGAL.
+// Fails with Internal if any answer disagrees with CGAL, InvalidArgument on
+// an unknown workload or strategy name.
 Status RunScale(const ScaleOptions& options, BenchReport* report);
 
 }  // namespace locator::bench

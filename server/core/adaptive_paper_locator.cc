@@ -35,11 +35,12 @@ AdaptivePaperLocator::AdaptivePaperLocator(const ServingMesh& mesh,
       fallback_(mesh),
       histogram_(GridGeometry(mesh.bounding_box(), options.grid_size)) {}
 
-void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
+void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result,
+                                  Detail detail) const {
   const Samples* s = samples_.Get();
   if (!s) {
     histogram_.Add(q);
-    fallback_.Locate(q, result);
+    fallback_.Locate(q, result, detail);
     if (warmup_seen_.fetch_add(1, std::memory_order_relaxed) + 1 ==
         options_.warmup_queries) {
       Tune();
@@ -50,7 +51,7 @@ void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
       std::any_of(s->regions.begin(), s->regions.end(),
                   [&q](const BoundingBox& r) { return r.Contains(q); });
   if (!in_region) {
-    fallback_.Locate(q, result);
+    fallback_.Locate(q, result, detail);
     return;
   }
   size_t best = 0;
@@ -63,7 +64,7 @@ void AdaptivePaperLocator::Locate(const Point2& q, LocateResult* result) const {
     }
   }
   result->cost = LocateCost();
-  WalkAndDescribe(mesh_, s->faces[best], q, result);
+  WalkAndDescribe(mesh_, s->faces[best], q, result, detail);
   result->cost.comparisons = static_cast<uint32_t>(s->points.size());
 }
 

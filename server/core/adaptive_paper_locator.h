@@ -35,7 +35,8 @@ class AdaptivePaperLocator : public PointLocator {
   // `mesh` must outlive the locator.
   AdaptivePaperLocator(const ServingMesh& mesh, const TuningOptions& options);
 
-  void Locate(const Point2& q, LocateResult* result) const override;
+  void Locate(const Point2& q, LocateResult* result,
+              Detail detail = Detail::kFull) const override;
   std::string_view name() const override { return "adaptive-paper"; }
   TuningSummary Summary() const override;
   void Retune() override EXCLUDES(tune_mu_);

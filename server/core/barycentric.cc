@@ -29,18 +29,15 @@ std::array<double, 3> ExactBarycentric(const Point2& a, const Point2& b,
   return {CGAL::to_double(ba), CGAL::to_double(bb), CGAL::to_double(bc)};
 }
 
-}  // namespace
-
-// Barycentric coordinates of q in (a, b, c); the location type then pins
-// the exact zeros and ones. In long double, because the cross products
-// square coordinate differences: in double they overflow beyond ~1e154 and
-// underflow below ~1e-154, and inf/inf or 0/0 would answer NaN. When the
-// area is within long double's rounding error of its terms (a needle
-// triangle spanning 1e-300..1e150), it may be 0 or have the wrong sign, so
-// the answer comes from ExactBarycentric instead.
-std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
-                                  const Point2& c, const Point2& q) {
-  using Real = long double;
+// Barycentric coordinates of q in (a, b, c) from cross products in `Real`,
+// into *result; false when Real cannot resolve them: when the area is
+// within Real's rounding error of its terms, or when a term leaves the
+// range where that error is relative (above kMaxMagnitude, below
+// kMinMagnitude), or a coordinate is not finite.
+template <class Real>
+bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
+                   const Point2& q, Real min_magnitude, Real max_magnitude,
+                   std::array<double, 3>* result) {
   auto cross = [](const Point2& o, const Point2& u, const Point2& v,
                   Real* magnitude) {
     const Real left = (Real{u.x} - o.x) * (Real{v.y} - o.y);
@@ -53,18 +50,41 @@ std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
   // Each difference and product rounds once: a relative error of a few
   // epsilon per term; 8 epsilon leaves a margin.
   constexpr Real kRelativeError = 8 * std::numeric_limits<Real>::epsilon();
-  if (!(std::abs(area) > kRelativeError * magnitude)) {
-    return ExactBarycentric(a, b, c, q);
+  if (!(magnitude >= min_magnitude && magnitude <= max_magnitude &&
+        std::abs(area) > kRelativeError * magnitude)) {
+    return false;
   }
   const Real ba = cross(q, b, c, nullptr) / area;
   const Real bb = cross(q, c, a, nullptr) / area;
-  const std::array<double, 3> result = {static_cast<double>(ba),
-                                        static_cast<double>(bb),
-                                        static_cast<double>(1 - ba - bb)};
-  for (const double coordinate : result) {
-    if (!std::isfinite(coordinate)) return ExactBarycentric(a, b, c, q);
+  *result = {static_cast<double>(ba), static_cast<double>(bb),
+             static_cast<double>(1 - ba - bb)};
+  for (const double coordinate : *result) {
+    if (!std::isfinite(coordinate)) return false;
   }
-  return result;
+  return true;
+}
+
+}  // namespace
+
+// Barycentric coordinates of q in (a, b, c); the location type then pins
+// the exact zeros and ones. The cross products square coordinate
+// differences, so in double they overflow beyond ~1e154 and underflow below
+// ~1e-154. Most triangles are well inside that range and take double;
+// the rest take long double, whose exponent range covers every double;
+// and when the area is within long double's rounding error of its terms (a
+// needle triangle spanning 1e-300..1e150), it may be 0 or have the wrong
+// sign, so the answer comes from ExactBarycentric.
+std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
+                                  const Point2& c, const Point2& q) {
+  std::array<double, 3> result;
+  // Terms of at least 2^-960 round with an error far above the subnormal
+  // range; at most 2^1020 leaves room for the sums.
+  if (BarycentricIn<double>(a, b, c, q, 0x1p-960, 0x1p1020, &result) ||
+      BarycentricIn<long double>(
+          a, b, c, q, 0, std::numeric_limits<long double>::max(), &result)) {
+    return result;
+  }
+  return ExactBarycentric(a, b, c, q);
 }
 
 std::array<double, 3> EdgeBarycentric(const std::array<Point2, 3>& corners,

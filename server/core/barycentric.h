@@ -1,6 +1,7 @@
 // Barycentric coordinates of a point in a triangle, robust over the whole
-// double range: long double arithmetic, and exact rationals where long
-// double cannot resolve the triangle's area.
+// double range: double arithmetic where its error is provably relative,
+// long double beyond that range, and exact rationals where long double
+// cannot resolve the triangle's area.
 //
 // Thread-safety: a pure function.
 

@@ -10,8 +10,11 @@ namespace locator {
 
 namespace {
 
-// Beyond about this many starts per vertex a cell's walk is already one face.
-constexpr double kStartsPerPointCap = 1.5;
+// Starts per vertex a cell may have: about 3 per triangle, so that a
+// query's sub-cell is mostly smaller than its triangle and the walk starts
+// in it (1.34 faces per query on a hot spot, against 1.70 at 1.5 per
+// vertex). Deeper cells buy little more and cost re-tunes their builds.
+constexpr double kStartsPerPointCap = 6;
 // Crossing ratios are clamped to [1 / kMaxCrossingRatio, kMaxCrossingRatio]:
 // a cell whose edges all run one way has no meaningful ratio.
 constexpr double kMaxCrossingRatio = 1e4;
@@ -33,11 +36,15 @@ HotRegionTuner::HotRegionTuner(const ServingMesh& mesh,
   // copy and hot flags, and the coarse table are paid first; what is left
   // buys sub-grid starts.
   const size_t fixed = fixed_bytes +
-                       grid.cells() * (3 * sizeof(double) + sizeof(char)) +
+                       grid.cells() * (5 * sizeof(double) + sizeof(char)) +
                        grid.cells() * StartTable::kBytesPerCell;
   leaf_budget_ =
       budget_ > fixed ? (budget_ - fixed) / StartTable::kBytesPerStart : 0;
   for (const Point2& p : mesh.arrays().points) points_[grid.CellOf(p)] += 1;
+  cbrt_points_.resize(points_.size());
+  for (size_t c = 0; c < points_.size(); ++c) {
+    cbrt_points_[c] = std::cbrt(points_[c]);
+  }
 }
 
 void HotRegionTuner::MeasureCrossingRatios() {
@@ -80,10 +87,15 @@ SubGrid HotRegionTuner::ShapeOf(size_t c, uint32_t r) const {
   // Minimising q / columns + 1 / rows (the crossings of a walk within a
   // sub-cell, in units of the cell's height) at columns * rows = r * r gives
   // columns / rows = q.
+  // Every re-tune shapes every cell a few times: round by conversion, not
+  // by a libm call (the values are positive and below 2^64).
+  const auto round = [](double x) {
+    return static_cast<double>(static_cast<uint64_t>(x + 0.5));
+  };
   const double starts = static_cast<double>(r) * r;
-  const double columns = std::clamp(
-      std::round(std::sqrt(starts * crossing_ratio_[c])), 1.0, starts);
-  const double rows = std::max(1.0, std::round(starts / columns));
+  const double columns =
+      std::clamp(round(std::sqrt(starts * crossing_ratio_[c])), 1.0, starts);
+  const double rows = std::max(1.0, round(starts / columns));
   return SubGrid{static_cast<uint32_t>(columns), static_cast<uint32_t>(rows)};
 }
 
@@ -121,8 +133,13 @@ std::vector<uint32_t> HotRegionTuner::PlanLevels(
     const std::vector<double>& weight) const {
   const size_t cells = grid_.cells();
   std::vector<double> desire(cells), cap(cells), starts(cells, 0.0);
+  double weight_factor = 0;
   for (size_t c = 0; c < cells; ++c) {
-    desire[c] = std::cbrt(std::pow(weight[c] * std::sqrt(points_[c]), 2.0));
+    // (w * sqrt(P))^(2/3); cells without traffic share one weight.
+    if (c == 0 || weight[c] != weight[c - 1]) {
+      weight_factor = std::cbrt(weight[c] * weight[c]);
+    }
+    desire[c] = weight_factor * cbrt_points_[c];
     cap[c] = kStartsPerPointCap * points_[c] + 1;
   }
   // Water-filling: scale desires to the budget, pin the cells that hit
@@ -163,8 +180,10 @@ std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
   if (!table_) return significant;
   for (size_t c = 0; c < counts_.size(); ++c) {
     const double expected = planned_share_[c] * total;
-    significant[c] = std::abs(counts_[c] - expected) >
-                     kSignificance * std::sqrt(expected + 1);
+    // |count - expected| > kSignificance * sqrt(expected + 1), squared.
+    const double departure = counts_[c] - expected;
+    significant[c] =
+        departure * departure > kSignificance * kSignificance * (expected + 1);
   }
   return significant;
 }
@@ -202,16 +221,28 @@ double HotRegionTuner::ExpectedWalk(const std::vector<double>& weight,
                                     const std::vector<uint32_t>& levels) const {
   double walk = 0;
   for (size_t c = 0; c < weight.size(); ++c) {
-    // sqrt(P / S) for a sub-grid of the ideal shape, times how much more
-    // this shape's walks cross: (q * rows + columns) / (2 * sqrt(q * S)).
-    const SubGrid shape = ShapeOf(c, levels[c]);
-    const double q = crossing_ratio_[c];
-    const double starts = static_cast<double>(shape.cells());
-    const double distortion =
-        (q * shape.rows + shape.columns) / (2 * std::sqrt(q * starts));
-    walk += weight[c] * std::sqrt(points_[c] / starts) * distortion;
+    const bool current = c < levels_.size() && levels[c] == levels_[c];
+    walk += weight[c] * (current ? walk_terms_[c] : WalkTerm(c, levels[c]));
   }
   return walk;
+}
+
+double HotRegionTuner::WalkTerm(size_t c, uint32_t r) const {
+  // The distortion of a shape is (q * rows + columns) / (2 * sqrt(q * S)).
+  const SubGrid shape = ShapeOf(c, r);
+  const double q = crossing_ratio_[c];
+  const double starts = static_cast<double>(shape.cells());
+  const double distortion =
+      (q * shape.rows + shape.columns) / (2 * std::sqrt(q * starts));
+  return std::sqrt(points_[c] / starts) * distortion;
+}
+
+void HotRegionTuner::SetCurrentLevels(std::vector<uint32_t> levels) {
+  levels_ = std::move(levels);
+  walk_terms_.resize(levels_.size());
+  for (size_t c = 0; c < levels_.size(); ++c) {
+    walk_terms_[c] = WalkTerm(c, levels_[c]);
+  }
 }
 
 std::vector<double> HotRegionTuner::Shares(double total) const {
@@ -251,7 +282,7 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::SnapshotOf(
   snapshot->memory_bytes = snapshot->table->MemoryBytes() +
                            snapshot->hot.capacity() +
                            snapshot->histogram.capacity() * sizeof(double) +
-                           2 * cells * sizeof(double);  // counts_, points_
+                           4 * cells * sizeof(double);  // the tuner's arrays
   return snapshot;
 }
 
@@ -290,7 +321,7 @@ bool HotRegionTuner::BuildStep(size_t max_units, size_t* units) {
   if (!builder_ || !builder_->Step(max_units, units)) return !builder_;
   table_ = builder_->Finish();
   builder_.reset();
-  levels_ = std::move(building_levels_);
+  SetCurrentLevels(std::move(building_levels_));
   planned_share_ = std::move(building_share_);
   return true;
 }
@@ -363,7 +394,7 @@ Status HotRegionTuner::Restore(
   }
   builder_.reset();  // it may borrow the table replaced here
   table_ = std::make_shared<StartTable>(grid_, shapes, faces);
-  levels_ = state.levels;
+  SetCurrentLevels(state.levels);
   counts_ = state.histogram;
   planned_share_ = state.planned_share;
   seen_traffic_ = state.seen_traffic;

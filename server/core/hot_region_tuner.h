@@ -72,10 +72,12 @@ class HotRegionTuner {
   static constexpr double kPlanFill = 0.9;
   static constexpr double kMinGain = 0.05;
   static constexpr double kSignificance = 3.0;
-  // Bookkeeping per coarse cell: histogram shards, our counts and point
-  // counts, the snapshot's histogram copy and hot flag, the table's cell.
+  // Bookkeeping per coarse cell: histogram shards (counts and what was
+  // drained), our counts, point counts and their cube roots, the current
+  // table's walk terms, the snapshot's histogram copy and hot flag, the
+  // table's cell.
   static constexpr size_t kBytesPerCoarseCell =
-      QueryHistogram::kShards * sizeof(uint32_t) + 3 * sizeof(double) + 1 +
+      2 * QueryHistogram::kShards * sizeof(uint32_t) + 5 * sizeof(double) + 1 +
       StartTable::kBytesPerCell;
 
   // The memory budget for `mesh` under `options`, in bytes.
@@ -136,9 +138,15 @@ class HotRegionTuner {
   std::vector<uint32_t> KeepStableCells(
       std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
   // The model's expected walk length (up to a constant) under `weight` for
-  // per-cell levels `levels`.
+  // per-cell levels `levels`: the sum of weight[c] * WalkTerm(c, levels[c]),
+  // with the current table's terms from walk_terms_.
   double ExpectedWalk(const std::vector<double>& weight,
                       const std::vector<uint32_t>& levels) const;
+  // The walk from a start of cell c at level r: sqrt(P / S) for a sub-grid
+  // of the ideal shape, times how much more this shape's walks cross.
+  double WalkTerm(size_t c, uint32_t r) const;
+  // Makes `levels` the current table's levels (levels_, walk_terms_).
+  void SetCurrentLevels(std::vector<uint32_t> levels);
   // The sub-grid that level r buys in coarse cell c: about r * r sub-cells
   // shaped by the cell's crossing ratio (1 x 1 for r = 1).
   SubGrid ShapeOf(size_t c, uint32_t r) const;
@@ -158,7 +166,8 @@ class HotRegionTuner {
   size_t leaf_budget_;  // starts the plan may place beyond the coarse cells
   bool seen_traffic_ = false;
   std::vector<double> counts_;
-  std::vector<double> points_;  // vertices per coarse cell
+  std::vector<double> points_;       // vertices per coarse cell
+  std::vector<double> cbrt_points_;  // their cube roots (for PlanLevels)
   // Edges crossed per unit width / per unit height, times the cell's
   // width / height: a walk across the cell's width crosses this many times
   // as many edges as one across its height.
@@ -166,6 +175,7 @@ class HotRegionTuner {
   bool crossing_measured_ = false;
   std::shared_ptr<const StartTable> table_;  // the last one built
   std::vector<uint32_t> levels_;             // the levels table_ was built at
+  std::vector<double> walk_terms_;     // WalkTerm(c, levels_[c]) for every c
   std::vector<double> planned_share_;  // traffic shares table_ was planned for
   // The build in progress (null when none), and what it was planned at.
   std::unique_ptr<StartTable::Builder> builder_;

@@ -20,7 +20,8 @@ uint32_t CubeRootCeil(size_t n) {
 JumpAndWalkLocator::JumpAndWalkLocator(const ServingMesh& mesh)
     : mesh_(mesh), m_(CubeRootCeil(mesh.num_vertices())) {}
 
-void JumpAndWalkLocator::Locate(const Point2& q, LocateResult* result) const {
+void JumpAndWalkLocator::Locate(const Point2& q, LocateResult* result,
+                                Detail detail) const {
   const size_t n = mesh_.num_faces();
   auto best = static_cast<uint32_t>(ThreadRandom() % n);
   double best_d2 = SquaredDistance(mesh_.CornerPoint(best, 0), q);
@@ -33,7 +34,7 @@ void JumpAndWalkLocator::Locate(const Point2& q, LocateResult* result) const {
     }
   }
   result->cost = LocateCost();
-  WalkAndDescribe(mesh_, best, q, result);
+  WalkAndDescribe(mesh_, best, q, result, detail);
   result->cost.comparisons = m_;
 }
 

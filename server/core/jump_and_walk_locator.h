@@ -22,7 +22,8 @@ class JumpAndWalkLocator : public PointLocator {
   // `mesh` must outlive the locator.
   explicit JumpAndWalkLocator(const ServingMesh& mesh);
 
-  void Locate(const Point2& q, LocateResult* result) const override;
+  void Locate(const Point2& q, LocateResult* result,
+              Detail detail = Detail::kFull) const override;
   std::string_view name() const override { return "jump-and-walk"; }
   TuningSummary Summary() const override { return TuningSummary(); }
 

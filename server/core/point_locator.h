@@ -74,8 +74,10 @@ class PointLocator {
  public:
   virtual ~PointLocator() = default;
 
-  // Locates the finite point q. Precondition: IsFinite(q) (callers validate).
-  virtual void Locate(const Point2& q, LocateResult* result) const = 0;
+  // Locates the finite point q, filling only `detail`. Precondition:
+  // IsFinite(q) (callers validate).
+  virtual void Locate(const Point2& q, LocateResult* result,
+                      Detail detail = Detail::kFull) const = 0;
 
   // Locates queries[i] into results[i] for every i; same preconditions.
   // Strategies override it to amortise per-call work over the batch, to
@@ -83,8 +85,10 @@ class PointLocator {
   // when that is nearer (callers sort batches along a space-filling curve).
   virtual void LocateMany(std::span<const Point2> queries,
                           LocateResult* results,
-                          Detail /*detail*/ = Detail::kFull) const {
-    for (size_t i = 0; i < queries.size(); ++i) Locate(queries[i], &results[i]);
+                          Detail detail = Detail::kFull) const {
+    for (size_t i = 0; i < queries.size(); ++i) {
+      Locate(queries[i], &results[i], detail);
+    }
   }
 
   // The strategy's name as accepted by MakePointLocator().

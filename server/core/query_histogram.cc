@@ -4,18 +4,12 @@
 
 namespace locator {
 
-namespace {
-
-// The shard of the calling thread: threads are dealt out round-robin the
-// first time they count, so up to kShards threads never share a counter.
-int ThreadShard() {
+int QueryHistogram::ThreadShard() {
   static std::atomic<int> next{0};
   thread_local const int shard =
-      next.fetch_add(1, std::memory_order_relaxed) % QueryHistogram::kShards;
+      next.fetch_add(1, std::memory_order_relaxed) % kShards;
   return shard;
 }
-
-}  // namespace
 
 GridGeometry::GridGeometry(const BoundingBox& box, int size)
     : box_(box), size_(size < 1 ? 1 : size) {
@@ -37,6 +31,7 @@ QueryHistogram::QueryHistogram(const GridGeometry& grid) : grid_(grid) {
   constexpr size_t kPerLine = 64 / sizeof(std::atomic<uint32_t>);
   stride_ = (grid_.cells() + kPerLine - 1) / kPerLine * kPerLine;
   counts_.reset(new std::atomic<uint32_t>[stride_ * kShards]);
+  drained_.reset(new uint32_t[stride_ * kShards]());
   for (size_t i = 0; i < stride_ * kShards; ++i) {
     counts_[i].store(0, std::memory_order_relaxed);
   }
@@ -44,7 +39,9 @@ QueryHistogram::QueryHistogram(const GridGeometry& grid) : grid_(grid) {
 
 void QueryHistogram::AddToCell(size_t cell) {
   const int shard = ThreadShard();
-  counts_[shard * stride_ + cell].fetch_add(1, std::memory_order_relaxed);
+  std::atomic<uint32_t>& counter = counts_[shard * stride_ + cell];
+  counter.store(counter.load(std::memory_order_relaxed) + 1,
+                std::memory_order_relaxed);
   Track& track = tracks_[shard];
   const uint32_t last = track.last.load(std::memory_order_relaxed);
   if (last == cell) return;
@@ -71,16 +68,17 @@ void QueryHistogram::Drain(std::vector<double>* into) {
   into->resize(grid_.cells(), 0.0);
   for (int s = 0; s < kShards; ++s) {
     for (size_t c = 0; c < grid_.cells(); ++c) {
-      // Most cells of clustered traffic are empty: read before writing.
-      std::atomic<uint32_t>& counter = counts_[s * stride_ + c];
-      if (counter.load(std::memory_order_relaxed) == 0) continue;
-      (*into)[c] += counter.exchange(0, std::memory_order_relaxed);
+      const size_t i = s * stride_ + c;
+      const uint32_t now = counts_[i].load(std::memory_order_relaxed);
+      (*into)[c] += now - drained_[i];
+      drained_[i] = now;
     }
   }
 }
 
 size_t QueryHistogram::MemoryBytes() const {
-  return stride_ * kShards * sizeof(std::atomic<uint32_t>);
+  return stride_ * kShards *
+         (sizeof(std::atomic<uint32_t>) + sizeof(uint32_t));
 }
 
 }  // namespace locator

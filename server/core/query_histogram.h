@@ -3,12 +3,16 @@
 //
 // QueryHistogram owns kShards arrays of relaxed-atomic counters. Each thread
 // counts into one shard (picked once per thread), so two threads locating at
-// once never write the same cache line; Drain() sums and resets the shards.
+// once never write the same cache line. A count is a relaxed load and store,
+// not a read-modify-write (which would stall every locate): the counters
+// only grow, and Drain() returns what each gained since the last drain.
+// Threads beyond kShards share shards, and two of them counting the same
+// cell at the same instant may lose one count; the tuner needs shares, not
+// exact counts.
 // Each shard also remembers its last cell and counts the moves between cells
 // by direction (CellSteps), so that a sweeping scan can be told from a hot
 // spot: a row-order raster moves right ~31 times for every move left.
-// Counts are approximate under concurrent Drain() only in the sense that a
-// count lands either in this drain or the next; none is lost.
+// A count made during a Drain() lands in this drain or the next.
 //
 // Thread-safety: Add() from any number of threads; Drain() from one thread at
 // a time (the tuner), concurrently with Add().
@@ -76,13 +80,16 @@ class QueryHistogram {
 
   explicit QueryHistogram(const GridGeometry& grid);
 
+  // The calling thread's shard: threads are dealt out round-robin the first
+  // time they ask, so up to kShards threads never share one.
+  static int ThreadShard();
+
   const GridGeometry& grid() const { return grid_; }
   // Counts one query at p (relaxed; never blocks).
   void Add(const Point2& p) { AddToCell(grid_.CellOf(p)); }
   // The same, for a caller that already knows p's cell.
   void AddToCell(size_t cell);
-  // Adds every count since the last Drain() into `into` (size cells()) and
-  // resets them.
+  // Adds every count since the last Drain() into `into` (size cells()).
   void Drain(std::vector<double>* into);
   // The moves counted since the last call, and resets them.
   CellSteps DrainSteps();
@@ -98,6 +105,9 @@ class QueryHistogram {
 
   GridGeometry grid_;
   std::unique_ptr<std::atomic<uint32_t>[]> counts_;  // kShards * cells
+  // counts_ as the last Drain() read them (only Drain() touches it); the
+  // difference wraps correctly in uint32_t.
+  std::unique_ptr<uint32_t[]> drained_;
   size_t stride_;  // cells rounded up to a cache line
   Track tracks_[kShards];
 };

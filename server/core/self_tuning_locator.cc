@@ -95,7 +95,8 @@ bool SelfTuningLocator::LocateIn(const TuningSnapshot& snap, const Point2& q,
   return !snap.hot[cell];
 }
 
-void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
+void SelfTuningLocator::Account(uint64_t queries, uint64_t cold,
+                                uint64_t tune_queries) const {
   const uint64_t located =
       located_.fetch_add(queries, std::memory_order_relaxed);
   if (located / kSweepWindow != (located + queries) / kSweepWindow) {
@@ -117,8 +118,16 @@ void SelfTuningLocator::Account(uint64_t queries, uint64_t cold) const {
     return;
   }
   if (due || building_.load(std::memory_order_relaxed)) {
-    TuneInline(due, queries);
+    TuneInline(due, tune_queries);
   }
+}
+
+bool SelfTuningLocator::AccountNow(uint64_t pending) const {
+  if (pending >= kAccountBatch || building_.load(std::memory_order_relaxed)) {
+    return true;
+  }
+  const uint64_t total = since_tune_.load(std::memory_order_relaxed) + pending;
+  return total % kColdCheckEvery == 0 || total == options_.retune_every;
 }
 
 bool SelfTuningLocator::Due(uint64_t before, uint64_t now) const {
@@ -139,8 +148,21 @@ bool SelfTuningLocator::Due(uint64_t before, uint64_t now) const {
               kColdShareTrigger * static_cast<double>(kColdCheckEvery));
 }
 
-void SelfTuningLocator::Locate(const Point2& q, LocateResult* result) const {
-  Account(1, LocateIn(*snapshot_.Get(), q, result) ? 1 : 0);
+void SelfTuningLocator::Locate(const Point2& q, LocateResult* result,
+                               Detail detail) const {
+  const bool cold = LocateIn(*snapshot_.Get(), q, result, detail);
+  PendingQueries& pending = pending_[QueryHistogram::ThreadShard()];
+  const uint32_t queries = pending.queries.load(std::memory_order_relaxed) + 1;
+  const uint32_t cold_queries =
+      pending.cold.load(std::memory_order_relaxed) + (cold ? 1 : 0);
+  if (!AccountNow(queries)) {
+    pending.queries.store(queries, std::memory_order_relaxed);
+    pending.cold.store(cold_queries, std::memory_order_relaxed);
+    return;
+  }
+  pending.queries.store(0, std::memory_order_relaxed);
+  pending.cold.store(0, std::memory_order_relaxed);
+  Account(queries, cold_queries, /*tune_queries=*/1);
 }
 
 void SelfTuningLocator::LocateMany(std::span<const Point2> queries,
@@ -151,7 +173,7 @@ void SelfTuningLocator::LocateMany(std::span<const Point2> queries,
   for (size_t i = 0; i < queries.size(); ++i) {
     cold += LocateIn(snap, queries[i], &results[i], detail, &chain);
   }
-  Account(queries.size(), cold);
+  Account(queries.size(), cold, queries.size());
 }
 
 void SelfTuningLocator::TuneInline(bool start, uint64_t queries) const {
@@ -182,7 +204,10 @@ void SelfTuningLocator::TunerLoop() {
       // Not a re-tune: the table the constructor would have built inline.
       snapshot_.Publish(tuner_.Build(1));
       initial_pending_ = false;
-      continue;
+      // A re-tune that came due meanwhile was folded into this request.
+      if (since_tune_.load(std::memory_order_relaxed) < options_.retune_every) {
+        continue;
+      }
     }
     RetuneLocked();
     if (store_ &&
@@ -299,8 +324,14 @@ TuningSummary SelfTuningLocator::Summary() const {
   MutexLock lock(&persistence_mu_);
   s.persistence = persistence_;
   // Fallbacks first: each is in located_ before it is in fallback_queries_.
-  s.fallback_queries = fallback_queries_.load(std::memory_order_relaxed);
-  s.hot_queries = located_.load(std::memory_order_relaxed) - s.fallback_queries;
+  uint64_t fallback = fallback_queries_.load(std::memory_order_relaxed);
+  uint64_t located = located_.load(std::memory_order_relaxed);
+  for (const PendingQueries& pending : pending_) {
+    fallback += pending.cold.load(std::memory_order_relaxed);
+    located += pending.queries.load(std::memory_order_relaxed);
+  }
+  s.fallback_queries = fallback;
+  s.hot_queries = located >= fallback ? located - fallback : 0;
   s.tune_nanos = tune_nanos_.load(std::memory_order_relaxed);
   s.max_tune_units_per_query =
       max_units_per_query_.load(std::memory_order_relaxed);

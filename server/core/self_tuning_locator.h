@@ -68,7 +68,8 @@ class SelfTuningLocator : public PointLocator {
   SelfTuningLocator(const ServingMesh& mesh, const TuningOptions& options);
   ~SelfTuningLocator() override;
 
-  void Locate(const Point2& q, LocateResult* result) const override;
+  void Locate(const Point2& q, LocateResult* result,
+              Detail detail = Detail::kFull) const override;
   // One snapshot load and one update of the shared counters per call;
   // each walk starts from the previous answer when the previous query is
   // nearer than the table's start.
@@ -85,6 +86,10 @@ class SelfTuningLocator : public PointLocator {
   static constexpr size_t kTuneUnitsPerQuery = 32;
   // Queries per sweep judgement.
   static constexpr uint64_t kSweepWindow = 1024;
+  // Single locates reach the shared counters in batches of up to this many
+  // per histogram shard: a query then costs no atomic read-modify-write
+  // beyond its histogram count.
+  static constexpr uint64_t kAccountBatch = 64;
 
  private:
   // Publishes the stored state if there is a usable one; true if it did.
@@ -105,8 +110,15 @@ class SelfTuningLocator : public PointLocator {
                 LocateResult* result, Detail detail = Detail::kFull,
                 Chain* chain = nullptr) const;
   // Counts `queries` located (`cold` of them in cold cells) since the last
-  // re-tune, and starts one or advances the pending one.
-  void Account(uint64_t queries, uint64_t cold) const EXCLUDES(tune_mu_);
+  // re-tune, and starts one or advances the pending one (inline: by the
+  // work of `tune_queries` queries).
+  void Account(uint64_t queries, uint64_t cold, uint64_t tune_queries) const
+      EXCLUDES(tune_mu_);
+  // Whether a shard's `pending` single locates go through Account() now:
+  // at kAccountBatch, where Due() may judge (so that one thread's re-tunes
+  // come exactly when they would per query), and while an inline build is
+  // pending (each query advances it).
+  bool AccountNow(uint64_t pending) const;
   // Whether the call that took the re-tune counter from `before` to `now`
   // makes a re-tune due; judges the cold block it completes.
   bool Due(uint64_t before, uint64_t now) const;
@@ -160,6 +172,15 @@ class SelfTuningLocator : public PointLocator {
   // re-tunes do not reset), and those in cold cells.
   mutable std::atomic<uint64_t> located_{0};
   mutable std::atomic<uint64_t> fallback_queries_{0};
+  // Single locates of one histogram shard not yet accounted (see
+  // AccountNow()). Relaxed loads and stores, no read-modify-write: threads
+  // beyond kShards that share a shard may rarely lose a count, which only
+  // delays a re-tune.
+  struct alignas(64) PendingQueries {
+    std::atomic<uint32_t> queries{0};
+    std::atomic<uint32_t> cold{0};
+  };
+  mutable PendingQueries pending_[QueryHistogram::kShards];
 
   // Background mode: Account() bumps requests_, the thread re-tunes.
   mutable std::atomic<uint64_t> requests_{0};

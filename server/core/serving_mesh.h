@@ -120,6 +120,8 @@ class ServingMesh {
     return a_.triangles[f].neighbor[i];
   }
   static bool IsHull(uint32_t neighbor) { return neighbor & kHullBit; }
+  // A hint that face f's record is about to be read.
+  void PrefetchFace(uint32_t f) const { __builtin_prefetch(&a_.triangles[f]); }
   bool IsConstrained(uint32_t f, int i) const {
     return a_.triangles[f].corner[i] & kConstrainedBit;
   }

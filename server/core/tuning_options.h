@@ -28,7 +28,7 @@ struct TuningOptions {
   // self-tuning: memory budget of the start table. 0 means
   // budget_fraction of the triangulation's bytes.
   size_t budget_bytes = 0;
-  double budget_fraction = 0.03;
+  double budget_fraction = 0.1;
   // self-tuning: histogram weight kept per re-tune (older traffic fades).
   double decay = 0.25;
   // self-tuning: re-tune from a background thread (the server) instead of

@@ -17,6 +17,9 @@
 //                                                false beyond the hull
 //   int EntryIndex(Face next, Face from)         the edge of next shared
 //                                                with from
+//   void Prefetch(Face f)                        a hint that the walk may
+//                                                step from f to any of its
+//                                                neighbours next
 //
 // Thread-safety: stateless apart from a thread-local random generator.
 
@@ -55,6 +58,7 @@ BasicWalkOutcome<typename Topology::Face> VisibilityWalk(
   int entry = -1;
   for (;;) {
     ++out.faces_visited;
+    topology.Prefetch(f);
     // The entry edge is known to be kLeft; the others are tested in a
     // random order and the walk leaves through the first kRight one.
     Side side[3] = {Side::kLeft, Side::kLeft, Side::kLeft};

@@ -7,9 +7,10 @@ namespace locator {
 WalkLocator::WalkLocator(const ServingMesh& mesh)
     : mesh_(mesh), start_(mesh.DefaultStart()) {}
 
-void WalkLocator::Locate(const Point2& q, LocateResult* result) const {
+void WalkLocator::Locate(const Point2& q, LocateResult* result,
+                         Detail detail) const {
   result->cost = LocateCost();
-  WalkAndDescribe(mesh_, start_, q, result);
+  WalkAndDescribe(mesh_, start_, q, result, detail);
 }
 
 TuningSummary WalkLocator::Summary() const {

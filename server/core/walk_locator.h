@@ -16,7 +16,8 @@ class WalkLocator : public PointLocator {
   // `mesh` must outlive the locator.
   explicit WalkLocator(const ServingMesh& mesh);
 
-  void Locate(const Point2& q, LocateResult* result) const override;
+  void Locate(const Point2& q, LocateResult* result,
+              Detail detail = Detail::kFull) const override;
   std::string_view name() const override { return "walk"; }
   TuningSummary Summary() const override;
 

@@ -33,6 +33,9 @@ TuningOptions FastLearning() {
   TuningOptions options;
   options.warmup_queries = 500;
   options.retune_every = 500;
+  // A table small enough that inline builds (kTuneUnitsPerQuery starts per
+  // query) end within retune_every queries, so every interval re-tunes.
+  options.budget_fraction = 0.03;
   return options;
 }
 
@@ -268,12 +271,13 @@ class BrokenLocator : public PointLocator {
   BrokenLocator(const PointLocator& inner, Fault fault)
       : inner_(inner), fault_(fault) {}
 
-  void Locate(const Point2& q, LocateResult* r) const override {
+  void Locate(const Point2& q, LocateResult* r,
+              Detail detail = Detail::kFull) const override {
     if (fault_ == Fault::kShifted) {
-      inner_.Locate({q.x + 0.01, q.y}, r);
+      inner_.Locate({q.x + 0.01, q.y}, r, detail);
       return;
     }
-    inner_.Locate(q, r);
+    inner_.Locate(q, r, detail);
     if (fault_ == Fault::kBarycentric) r->barycentric[0] += 1e-6;
     if (fault_ == Fault::kWrongType && r->type == LocationType::kFace) {
       r->type = LocationType::kEdge;

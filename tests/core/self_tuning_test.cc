@@ -127,7 +127,8 @@ TEST_F(LearningTest, MemoryStaysWithinAnExplicitBudget) {
 }
 
 TEST_F(LearningTest, MemoryStaysWithinTheDefaultBudgetFraction) {
-  const double budget = 0.03 * static_cast<double>(t().MemoryBytes());
+  const double budget =
+      TuningOptions().budget_fraction * static_cast<double>(t().MemoryBytes());
   auto locator = MakeLocator("self-tuning", t());
   ASSERT_NE(locator, nullptr);
   EXPECT_LE(double(locator->Summary().memory_bytes), budget);
