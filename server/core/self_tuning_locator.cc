@@ -79,11 +79,13 @@ SelfTuningLocator::~SelfTuningLocator() {
 bool SelfTuningLocator::LocateIn(const TuningSnapshot& snap, const Point2& q,
                                  LocateResult* result, Detail detail,
                                  Chain* chain) const {
+  uint32_t lookups = 0;
+  uint32_t start = snap.table->Start(q, &lookups);
+  // The start's record loads while the query is counted.
+  mesh_.PrefetchFace(start);
   const size_t cell = histogram_.grid().CellOf(q);
   histogram_.AddToCell(cell);
   result->cost = LocateCost();
-  uint32_t lookups = 0;
-  uint32_t start = snap.table->Start(q, &lookups);
   if (chain && chain->valid &&
       SquaredDistance(chain->query, q) <
           SquaredDistance(mesh_.CornerPoint(start, 0), q)) {
