@@ -150,10 +150,28 @@ bool SelfTuningLocator::Due(uint64_t before, uint64_t now) const {
               kColdShareTrigger * static_cast<double>(kColdCheckEvery));
 }
 
+void SelfTuningLocator::PrefetchStarts(const TuningSnapshot& snap,
+                                       const Point2& next, const Point2& second,
+                                       const Point2& third) const {
+  // Each stage reads only what the previous query's call fetched.
+  const StartTable& table = *snap.table;
+  uint32_t lookups = 0;
+  Prefetch(table.Slot(third, &lookups));
+  mesh_.PrefetchFace(table.Start(second, &lookups));
+  mesh_.PrefetchCorners(table.Start(next, &lookups));
+}
+
 void SelfTuningLocator::Locate(const Point2& q, LocateResult* result,
                                Detail detail) const {
-  const bool cold = LocateIn(*snapshot_.Get(), q, result, detail);
-  PendingQueries& pending = pending_[QueryHistogram::ThreadShard()];
+  const TuningSnapshot& snap = *snapshot_.Get();
+  ShardState& pending = shards_[QueryHistogram::ThreadShard()];
+  Point2 step;
+  if (pending.lookahead.Observe(q, &step)) {
+    PrefetchStarts(snap, Point2{q.x + step.x, q.y + step.y},
+                   Point2{q.x + 2 * step.x, q.y + 2 * step.y},
+                   Point2{q.x + 3 * step.x, q.y + 3 * step.y});
+  }
+  const bool cold = LocateIn(snap, q, result, detail);
   const uint32_t queries = pending.queries.load(std::memory_order_relaxed) + 1;
   const uint32_t cold_queries =
       pending.cold.load(std::memory_order_relaxed) + (cold ? 1 : 0);
@@ -173,6 +191,9 @@ void SelfTuningLocator::LocateMany(std::span<const Point2> queries,
   uint64_t cold = 0;
   Chain chain;
   for (size_t i = 0; i < queries.size(); ++i) {
+    if (i + 3 < queries.size()) {
+      PrefetchStarts(snap, queries[i + 1], queries[i + 2], queries[i + 3]);
+    }
     cold += LocateIn(snap, queries[i], &results[i], detail, &chain);
   }
   Account(queries.size(), cold, queries.size());
@@ -328,7 +349,7 @@ TuningSummary SelfTuningLocator::Summary() const {
   // Fallbacks first: each is in located_ before it is in fallback_queries_.
   uint64_t fallback = fallback_queries_.load(std::memory_order_relaxed);
   uint64_t located = located_.load(std::memory_order_relaxed);
-  for (const PendingQueries& pending : pending_) {
+  for (const ShardState& pending : shards_) {
     fallback += pending.cold.load(std::memory_order_relaxed);
     located += pending.queries.load(std::memory_order_relaxed);
   }

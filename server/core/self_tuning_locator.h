@@ -50,6 +50,7 @@
 #include "server/core/hot_region_tuner.h"
 #include "server/core/point_locator.h"
 #include "server/core/query_histogram.h"
+#include "server/core/scan_lookahead.h"
 #include "server/core/serving_mesh.h"
 #include "server/core/snapshot_slot.h"
 #include "server/core/tuning_options.h"
@@ -68,11 +69,14 @@ class SelfTuningLocator : public PointLocator {
   SelfTuningLocator(const ServingMesh& mesh, const TuningOptions& options);
   ~SelfTuningLocator() override;
 
+  // When the thread's queries advance by a constant step (a raster row, a
+  // sampled profile), also prefetches the starts of the next ones.
   void Locate(const Point2& q, LocateResult* result,
               Detail detail = Detail::kFull) const override;
   // One snapshot load and one update of the shared counters per call;
   // each walk starts from the previous answer when the previous query is
-  // nearer than the table's start.
+  // nearer than the table's start, and the next queries' starts are
+  // prefetched while it walks.
   void LocateMany(std::span<const Point2> queries, LocateResult* results,
                   Detail detail = Detail::kFull) const override;
   std::string_view name() const override { return "self-tuning"; }
@@ -109,6 +113,11 @@ class SelfTuningLocator : public PointLocator {
   bool LocateIn(const TuningSnapshot& snap, const Point2& q,
                 LocateResult* result, Detail detail = Detail::kFull,
                 Chain* chain = nullptr) const;
+  // Prefetches what the walks for the next three queries read first, in
+  // three stages that each use what the previous call fetched: third's
+  // table slot, second's start face, next's start corners.
+  void PrefetchStarts(const TuningSnapshot& snap, const Point2& next,
+                      const Point2& second, const Point2& third) const;
   // Counts `queries` located (`cold` of them in cold cells) since the last
   // re-tune, and starts one or advances the pending one (inline: by the
   // work of `tune_queries` queries).
@@ -172,15 +181,17 @@ class SelfTuningLocator : public PointLocator {
   // re-tunes do not reset), and those in cold cells.
   mutable std::atomic<uint64_t> located_{0};
   mutable std::atomic<uint64_t> fallback_queries_{0};
-  // Single locates of one histogram shard not yet accounted (see
-  // AccountNow()). Relaxed loads and stores, no read-modify-write: threads
-  // beyond kShards that share a shard may rarely lose a count, which only
-  // delays a re-tune.
-  struct alignas(64) PendingQueries {
+  // Per histogram shard, in one cache line: its single locates not yet
+  // accounted (see AccountNow()), and the scan its queries may be making.
+  // Relaxed loads and stores, no read-modify-write: threads beyond kShards
+  // that share a shard may rarely lose a count, which only delays a
+  // re-tune, or spoil a prediction.
+  struct alignas(64) ShardState {
     std::atomic<uint32_t> queries{0};
     std::atomic<uint32_t> cold{0};
+    ScanLookahead lookahead;
   };
-  mutable PendingQueries pending_[QueryHistogram::kShards];
+  mutable ShardState shards_[QueryHistogram::kShards];
 
   // Background mode: Account() bumps requests_, the thread re-tunes.
   mutable std::atomic<uint64_t> requests_{0};

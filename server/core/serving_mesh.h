@@ -39,6 +39,7 @@
 
 #include "common/geometry.h"
 #include "server/core/locate_result.h"
+#include "server/core/prefetch.h"
 
 namespace locator {
 
@@ -121,7 +122,11 @@ class ServingMesh {
   }
   static bool IsHull(uint32_t neighbor) { return neighbor & kHullBit; }
   // A hint that face f's record is about to be read.
-  void PrefetchFace(uint32_t f) const { __builtin_prefetch(&a_.triangles[f]); }
+  void PrefetchFace(uint32_t f) const { Prefetch(&a_.triangles[f]); }
+  // A hint that f's corners are about to be read; reads f's record.
+  void PrefetchCorners(uint32_t f) const {
+    for (int i = 0; i < 3; ++i) Prefetch(&CornerPoint(f, i));
+  }
   bool IsConstrained(uint32_t f, int i) const {
     return a_.triangles[f].corner[i] & kConstrainedBit;
   }

@@ -77,6 +77,12 @@ class StartTable {
 
   // The start face for q; adds the table reads made to *lookups.
   Face Start(const Point2& q, uint32_t* lookups) const {
+    return *Slot(q, lookups);
+  }
+  // Where Start() reads q's start, found with one read (of q's coarse
+  // cell), so that a caller can prefetch it; adds the reads Start() makes
+  // to *lookups.
+  const Face* Slot(const Point2& q, uint32_t* lookups) const {
     const double gx = grid_.GridX(q.x);
     const double gy = grid_.GridY(q.y);
     const int cx = static_cast<int>(gx);
@@ -84,7 +90,7 @@ class StartTable {
     const Cell& cell = cells_[static_cast<size_t>(cy) * grid_.size() + cx];
     if (!cell.leaves) {
       *lookups += 1;
-      return cell.face;
+      return &cell.face;
     }
     *lookups += 2;
     const uint32_t columns = cell.sub_grid.columns;
@@ -93,7 +99,7 @@ class StartTable {
     uint32_t sy = static_cast<uint32_t>((gy - cy) * rows);
     if (sx >= columns) sx = columns - 1;
     if (sy >= rows) sy = rows - 1;
-    return cell.leaves[size_t{sy} * columns + sx];
+    return &cell.leaves[size_t{sy} * columns + sx];
   }
 
   const GridGeometry& grid() const { return grid_; }

@@ -265,6 +265,32 @@ TEST_F(LearningTest, RasterAfterAHotSpotRetunesABoundedNumberOfTimes) {
   EXPECT_LE(MeanCost(*locator, std::span(cluster).last(1000)), 6.0);
 }
 
+TEST_F(LearningTest, ScansLeavingTheBoxAgree) {
+  // Constant-step lines (what the scan look-ahead predicts and prefetches
+  // for) that run out of the hull and on towards the largest doubles, where
+  // the predicted points overflow to infinity.
+  const Point2 centre{(box().min_x + box().max_x) / 2,
+                      (box().min_y + box().max_y) / 2};
+  std::vector<Point2> scans;
+  for (const double step : {box().width() / 97, 1e306, 5e306}) {
+    for (int k = 0; k < 300 && centre.x + k * step < 1.7e308; ++k) {
+      scans.push_back({centre.x + k * step, centre.y - k * step / 3});
+    }
+  }
+  auto locator = MakeLocator("self-tuning", t());
+  ASSERT_NE(locator, nullptr);
+  test::ExpectAllAgree(*locator, t(), scans);
+  // A batch prefetches its next queries' starts too, and agrees.
+  std::vector<LocateResult> batch(scans.size());
+  locator->LocateMany(scans, batch.data());
+  LocateResult single;
+  for (size_t i = 0; i < scans.size(); ++i) {
+    locator->Locate(scans[i], &single);
+    EXPECT_EQ(batch[i].triangle_id, single.triangle_id) << "query " << i;
+    EXPECT_EQ(batch[i].type, single.type) << "query " << i;
+  }
+}
+
 TEST_F(LearningTest, NoQueryPaysForAWholeRebuild) {
   // The default budget at 50K points is tens of thousands of starts: a
   // hot spot's first re-tune rebuilds most of them, over many queries.
