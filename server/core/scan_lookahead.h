@@ -11,7 +11,8 @@
 // Thread-safety: Observe() may be called from any thread. The state is
 // relaxed atomics; callers that share one instance (threads beyond a
 // locator's shards) may spoil each other's predictions, nothing more.
-// Invariant: step_ is the last difference between observed queries.
+// Invariant: (step_x_, step_y_) is the last difference between observed
+// queries, (x_, y_) the last query.
 
 #ifndef LOCATOR_CORE_SCAN_LOOKAHEAD_H_
 #define LOCATOR_CORE_SCAN_LOOKAHEAD_H_
@@ -27,8 +28,8 @@ class ScanLookahead {
  public:
   // Records q. True when the step from the previous query repeats the one
   // before it (to a relative 1e-6, so that a grid's rounded coordinates
-  // qualify) and is not zero; then *next and *after are q plus one and two
-  // such steps.
+  // qualify) and is finite and not zero; then *step is that step, so that
+  // the next queries are predicted at q + k * *step.
   bool Observe(const Point2& q, Point2* step) {
     const double dx = q.x - x_.load(std::memory_order_relaxed);
     const double dy = q.y - y_.load(std::memory_order_relaxed);
