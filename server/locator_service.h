@@ -86,6 +86,9 @@ class LocatorService final : public v1::Locator::CallbackService {
  public:
   explicit LocatorService(const LocatorServiceOptions& options);
 
+  // Who may call what (the tokens), for what else the server answers.
+  const AccessPolicy& access_policy() const { return access_; }
+
   // The datasets served.
   DatasetRegistry& datasets() { return registry_; }
   const DatasetRegistry& datasets() const { return registry_; }
@@ -151,10 +154,6 @@ class LocatorService final : public v1::Locator::CallbackService {
   // against the cell limit and the dataset's interpolation.
   grpc::Status GridSpec(const Admission& call, const v1::GridRequest& request,
                         RasterSpec* spec) const;
-  // The whole of a Grid on an admitted call as one message (header and every
-  // row), rendered on the calling thread: the HTTP/JSON form.
-  grpc::Status RunGrid(const Admission& call, const v1::GridRequest& request,
-                       v1::GridResponse* response) const;
   // The deadline a call without one is held to (see BatchLocator).
   CallDeadline DefaultDeadline() const {
     return batch_locator_.DefaultDeadline();

@@ -42,20 +42,4 @@ grpc::Status LocatorService::GridSpec(const Admission& call,
   return ToGrpcStatus(status);
 }
 
-grpc::Status LocatorService::RunGrid(const Admission& call,
-                                     const v1::GridRequest& request,
-                                     v1::GridResponse* response) const {
-  RasterSpec spec;
-  if (grpc::Status refused = GridSpec(call, request, &spec); !refused.ok()) {
-    return refused;
-  }
-  ToGridHeader(spec, call.engine->dataset_info().crs,
-               response->mutable_header());
-  response->set_first_row(0);
-  response->set_rows(spec.height);
-  response->mutable_values()->Resize(static_cast<int>(spec.cells()), 0);
-  return ToGrpcStatus(call.engine->RenderRows(
-      spec, 0, spec.height, response->mutable_values()->mutable_data()));
-}
-
 }  // namespace locator

@@ -86,6 +86,17 @@ struct ServerConfig {
   // --http-cors-origin, repeatable: the exact origins (scheme://host[:port])
   // whose pages may call the HTTP server; empty: CORS is off.
   std::vector<std::string> http_cors_origins;
+  // --http-max-grid-cells: an HTTP :grid of more cells gets
+  // RESOURCE_EXHAUSTED (its answer is one JSON text, ~20 bytes per cell).
+  uint64_t http_max_grid_cells = uint64_t{1} << 20;
+  // HTTP connections open at once (not a flag), and
+  // --http-max-connections-per-address: those one client address may hold
+  // open; more get 503.
+  size_t http_max_connections = 512;
+  size_t http_max_connections_per_address = 64;
+  // --http-public-status: /api/stats and /api/edges answer without a
+  // token even when tokens are required.
+  bool http_public_status = false;
 
   bool http_enabled() const { return !http_host.empty(); }
 };

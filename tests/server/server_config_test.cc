@@ -142,7 +142,9 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
        {"--tls-cert", "--tls-client-ca", "--token-file", "--admin-token-file",
         "--redact", "--max-concurrent-streams", "--min-ping-interval-ms",
         "--default-deadline-ms", "--max-dataset-points", "--http-listen",
-        "--state-dir", "--http-max-body-bytes", "--http-cors-origin"}) {
+        "--state-dir", "--http-max-body-bytes", "--http-cors-origin",
+        "--http-max-grid-cells", "--http-max-connections-per-address",
+        "--http-public-status"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
 }
@@ -179,6 +181,12 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--http-cors-origin", "http://example.com/"},
       {"--http-cors-origin", "https://*.example.com"},
       {"--http-cors-origin", "ftp://example.com"},
+      {"--http-max-grid-cells", "0"},
+      {"--http-max-grid-cells", "3000000000"},
+      {"--http-max-grid-cells", "1e6"},
+      {"--http-max-connections-per-address", "0"},
+      {"--http-max-connections-per-address", "513"},
+      {"--http-max-connections-per-address", "many"},
       {"--max-dataset-points", "2"},
       {"--max-dataset-points", "5000000000"},
       {"--max-concurrent-streams", "0"},
@@ -271,6 +279,23 @@ TEST(ServerConfigTest, HttpFlagsMapToTheConfig) {
   EXPECT_EQ(config.http_cors_origins,
             (std::vector<std::string>{"https://maps.example.org",
                                       "http://localhost:8000"}));
+}
+
+TEST(ServerConfigTest, HttpLimitAndStatusFlagsMapToTheConfig) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({}, &config).ok());
+  EXPECT_EQ(config.http_max_grid_cells, uint64_t{1} << 20);
+  EXPECT_EQ(config.http_max_connections, 512u);
+  EXPECT_EQ(config.http_max_connections_per_address, 64u);
+  EXPECT_FALSE(config.http_public_status);
+  ASSERT_TRUE(Parse({"--http-max-grid-cells", "250000",
+                     "--http-max-connections-per-address", "512",
+                     "--http-public-status"},
+                    &config)
+                  .ok());
+  EXPECT_EQ(config.http_max_grid_cells, 250000u);
+  EXPECT_EQ(config.http_max_connections_per_address, 512u);
+  EXPECT_TRUE(config.http_public_status);
 }
 
 TEST(ServerConfigTest, MeshCacheMustBeADirectory) {
