@@ -383,6 +383,14 @@ std::vector<Refusal> Refusals() {
   tiny_cells.set_cell_size(1e-3);
   add("GridCellSizeOverCellLimit", grid, tiny_cells, "grid",
       Code::RESOURCE_EXHAUSTED, "1000 x 1000 = 1000000 cells");
+  // 1e-300 and the columns it makes (1 / 1e-300 in double) read in their
+  // shortest exact form, not as 300 digits.
+  v1::GridRequest minute_cells = GridRequestFor(box, 0, 0);
+  minute_cells.set_cell_size(1e-300);
+  add("GridOfMinuteCellSize", grid, minute_cells, "grid",
+      Code::RESOURCE_EXHAUSTED,
+      "cell_size 1e-300 makes a grid of 9.999999999999999e+299 x "
+      "9.999999999999999e+299 cells");
   v1::GridRequest natural_grid = GridRequestFor(box, 4, 4, "lake");
   natural_grid.set_interpolation(v1::INTERPOLATION_NATURAL_NEIGHBOR);
   add("GridNaturalNeighborOnConstraints", grid, natural_grid, "grid",
