@@ -81,6 +81,7 @@ Reactor* AdmitThen(LocatorService* service,
 LocatorService::LocatorService(const LocatorServiceOptions& options)
     : default_deadline_(options.default_deadline),
       max_profile_crossings_(options.max_profile_crossings),
+      max_profile_samples_(options.max_profile_samples),
       max_grid_cells_(options.max_grid_cells),
       redact_(options.access.redact),
       access_(options.access.data_token, options.access.admin_token),

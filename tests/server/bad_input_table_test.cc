@@ -326,6 +326,27 @@ grpc::Status LocateWithHugeCrs(const Env& env) {
   return status;
 }
 
+// A Profile across the dataset asking for `samples` evenly spaced samples;
+// when it succeeds, they must all be there.
+std::function<grpc::Status(const Env&)> ProfileWithSamples(uint32_t samples) {
+  return [samples](const Env& env) {
+    v1::ProfileRequest request;
+    for (const Point2& p : {Point2{10.25, 20.5}, Point2{30.5, 20.25}}) {
+      v1::Point* vertex = request.add_vertices();
+      vertex->set_x(p.x);
+      vertex->set_y(p.y);
+    }
+    request.set_samples(samples);
+    grpc::ClientContext context;
+    v1::ProfileResponse response;
+    const grpc::Status status = env.stub.Profile(&context, request, &response);
+    if (status.ok()) {
+      EXPECT_EQ(response.samples_size(), static_cast<int>(samples));
+    }
+    return status;
+  };
+}
+
 std::vector<CallRow> CallRows() {
   using std::chrono::milliseconds;
   const double big = 1e308;
@@ -391,6 +412,12 @@ std::vector<CallRow> CallRows() {
        "the request names crs '+proj=longlat +ellps=wgs84 +towgs84=" +
            std::string(44, '0') +
            "...' (10485760 bytes) but the dataset has none"},
+      {"ProfileAtDefaultSampleLimit", "Profile of 10^5 samples (the limit)",
+       kLimits, ProfileWithSamples(100'000), Code::OK, ""},
+      {"ProfileOverDefaultSampleLimit", "Profile of 10^6 samples", kLimits,
+       ProfileWithSamples(1'000'000), Code::RESOURCE_EXHAUSTED,
+       "a profile of 1000000 samples exceeds this server's limit of 100000 "
+       "samples per request (locatord --max-profile-samples)"},
       {"BatchAtPointLimit", "LocateBatch of 1000 points (the limit)", kLimits,
        BatchCall(Queries(1000)), Code::OK, ""},
       {"BatchOverPointLimit", "LocateBatch of 1001 points (limit 1000)",
