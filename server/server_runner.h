@@ -54,6 +54,14 @@ class ServerRunner {
           interceptors,
       std::unique_ptr<ServerRunner>* runner);
 
+  // The methods a server Start()ed with the protobuf services named
+  // `services` (e.g. "locator.v1.Locator") answers, as
+  // "/package.Service/Method": theirs, and those of the health and
+  // reflection services Start() adds. A name that is not a generated
+  // service linked into the program adds none.
+  static std::vector<std::string> MethodsServed(
+      const std::vector<std::string_view>& services);
+
   ServerRunner(const ServerRunner&) = delete;
   ServerRunner& operator=(const ServerRunner&) = delete;
 
