@@ -104,12 +104,19 @@ Status ServerRunner::Start(
                            Credentials(config.transport.tls), &port);
   builder.SetMaxReceiveMessageSize(static_cast<int>(config.max_message_bytes));
   builder.SetMaxSendMessageSize(static_cast<int>(config.max_message_bytes));
+  // gRPC sets SO_REUSEPORT by default, so a second server could bind the
+  // same port and silently take a share of the connections. Without it, an
+  // address in use fails here.
+  builder.AddChannelArgument(GRPC_ARG_ALLOW_REUSEPORT, 0);
   SetConnectionLimits(config.transport, &builder);
   for (grpc::Service* service : services) builder.RegisterService(service);
   builder.experimental().SetInterceptorCreators(std::move(interceptors));
   created->server_ = builder.BuildAndStart();
   if (created->server_ == nullptr || port == 0) {
-    return Status::Unavailable("cannot listen on " + config.ListenAddress());
+    return Status::Unavailable(
+        "cannot listen on " + config.ListenAddress() +
+        ": the address is in use or not this machine's (gRPC's error above "
+        "says which)");
   }
   created->SetServing(false);
   std::cout << program << " listening on " << config.listen_host << ":" << port
