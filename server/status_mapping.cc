@@ -49,10 +49,13 @@ grpc::StatusCode ToGrpcCode(Refusal refusal) {
 }  // namespace
 
 grpc::Status ToGrpcStatus(const Status& status) {
+  return ToGrpcStatus(status, status.message());
+}
+
+grpc::Status ToGrpcStatus(const Status& status, std::string_view message) {
   if (status.ok()) return grpc::Status::OK;
-  return grpc::Status(
-      ToGrpcCode(status.code()),
-      TruncatedMessage(status.message(), kMaxStatusMessageBytes));
+  return grpc::Status(ToGrpcCode(status.code()),
+                      TruncatedMessage(message, kMaxStatusMessageBytes));
 }
 
 grpc::Status ToGrpcStatus(Refusal refusal, const std::string& message) {

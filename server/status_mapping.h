@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "common/status.h"
 
@@ -32,6 +33,8 @@ inline constexpr size_t kMaxStatusMessageBytes = 1024;
 // ResourceExhausted and Unavailable to their namesakes; Internal and IOError
 // to INTERNAL.
 grpc::Status ToGrpcStatus(const Status& status);
+// The same with `message` instead of status's own (OK stays OK).
+grpc::Status ToGrpcStatus(const Status& status, std::string_view message);
 
 // Why the service refuses a call before doing any of its work.
 enum class Refusal {
