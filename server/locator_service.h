@@ -64,6 +64,8 @@ struct LocatorServiceOptions {
   // A Profile whose line crosses more triangle edges (in holes too) fails
   // with RESOURCE_EXHAUSTED.
   uint64_t max_profile_crossings = 1'000'000;
+  // A Profile asking for more samples fails with RESOURCE_EXHAUSTED.
+  uint32_t max_profile_samples = 100'000;
   // A Grid of more cells fails with RESOURCE_EXHAUSTED.
   uint64_t max_grid_cells = uint64_t{1} << 24;
   // The deadline of a LocateBatch or LocateStream whose client set none
@@ -211,6 +213,7 @@ class LocatorService final : public v1::Locator::CallbackService {
 
   const std::chrono::milliseconds default_deadline_;
   const uint64_t max_profile_crossings_;
+  const uint32_t max_profile_samples_;
   const uint64_t max_grid_cells_;
   const bool redact_;
   const AccessPolicy access_;

@@ -183,6 +183,7 @@ int Main(int argc, char** argv) {
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points,
       .max_profile_crossings = config.serving.max_profile_crossings,
+      .max_profile_samples = config.serving.max_profile_samples,
       .max_grid_cells = config.serving.max_grid_cells,
       .default_deadline = config.serving.transport.default_deadline,
       .access = config.access,

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/gis/ogr_dataset_spec.h"
+#include "common/input_text.h"
 #include "server/core/dataset.h"
 #include "server/status_mapping.h"
 
@@ -50,8 +51,8 @@ grpc::Status ReloadPolicy::Resolve(const std::string& requested,
   *spec = ResolveInReloadDir(requested);
   if (spec->empty()) {
     return ToGrpcStatus(Refusal::kPermissionDenied,
-                        "dataset '" + requested +
-                            "' is not a file in this server's reload dir");
+                        "dataset " + QuotedInput(requested) +
+                            " is not a file in this server's reload dir");
   }
   return grpc::Status::OK;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
+#include "common/input_text.h"
 #include "server/proto_convert.h"
 #include "server/surface_convert.h"
 
@@ -17,8 +18,8 @@ Status TransformerFor(const Engine& engine, const std::string& request_crs,
   const std::string& dataset_crs = engine.dataset_info().crs;
   if (dataset_crs.empty()) {
     return Status::InvalidArgument(
-        "the request names CRS '" + request_crs +
-        "' but the dataset has none; send points in the dataset's own "
+        "the request names CRS " + QuotedInput(request_crs) +
+        " but the dataset has none; send points in the dataset's own "
         "coordinates (no crs)");
   }
   return gis::CrsTransformer::ForThread(request_crs, dataset_crs, out);

@@ -27,6 +27,7 @@ struct ServingFlags {
   std::string threads;
   std::string max_batch_points;
   std::string max_profile_crossings;
+  std::string max_profile_samples;
   std::string max_grid_cells;
   TransportFlags transport;
 };
@@ -77,6 +78,11 @@ void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
           ->default_value(std::to_string(defaults.max_profile_crossings)),
       "a Profile whose line crosses more triangle edges (holes included) "
       "fails with RESOURCE_EXHAUSTED")(
+      "max-profile-samples",
+      po::value(&flags->max_profile_samples)
+          ->default_value(std::to_string(defaults.max_profile_samples)),
+      "a Profile asking for more evenly spaced samples fails with "
+      "RESOURCE_EXHAUSTED")(
       "max-grid-cells",
       po::value(&flags->max_grid_cells)
           ->default_value(std::to_string(defaults.max_grid_cells)),
@@ -113,6 +119,13 @@ Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
   if (Status status =
           ParseCountAs("max-profile-crossings", flags.max_profile_crossings, 1,
                        uint64_t{1} << 40, &config->max_profile_crossings);
+      !status.ok()) {
+    return status;
+  }
+  // A reply holds the samples in one protobuf repeated field.
+  if (Status status = ParseCountAs(
+          "max-profile-samples", flags.max_profile_samples, 1,
+          std::numeric_limits<int>::max(), &config->max_profile_samples);
       !status.ok()) {
     return status;
   }

@@ -38,6 +38,10 @@ struct ServingConfig {
   // --max-profile-crossings: a Profile whose line crosses more triangle
   // edges gets RESOURCE_EXHAUSTED.
   uint64_t max_profile_crossings = 1'000'000;
+  // --max-profile-samples: a Profile asking for more samples gets
+  // RESOURCE_EXHAUSTED. A sample is ~50 bytes of reply (~150 in JSON), so
+  // the default's reply stays far inside the default message limit.
+  uint32_t max_profile_samples = 100'000;
   // --max-grid-cells: a Grid of more cells gets RESOURCE_EXHAUSTED.
   uint64_t max_grid_cells = uint64_t{1} << 24;
   // TLS, connection limits, keepalive and the default deadline.

@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include "common/input_text.h"
+
 namespace locator {
 namespace {
 
@@ -62,9 +64,9 @@ Status GridShape(const v1::GridRequest& request, RasterSpec* spec) {
   const double rows = std::ceil(box.height() / cell);
   constexpr double kMaxSide = std::numeric_limits<uint32_t>::max();
   if (!(columns <= kMaxSide) || !(rows <= kMaxSide)) {
-    return Status::ResourceExhausted(
-        "cell_size " + std::to_string(cell) + " makes a grid of " +
-        std::to_string(columns) + " x " + std::to_string(rows) + " cells");
+    return Status::ResourceExhausted("cell_size " + NumberText(cell) +
+                                     " makes a grid of " + NumberText(columns) +
+                                     " x " + NumberText(rows) + " cells");
   }
   spec->width = static_cast<uint32_t>(std::max(columns, 1.0));
   spec->height = static_cast<uint32_t>(std::max(rows, 1.0));

@@ -1,5 +1,7 @@
 #include "common/gis/proj_objects.h"
 
+#include "common/input_text.h"
+
 namespace locator::gis {
 namespace {
 
@@ -7,19 +9,9 @@ struct ContextDeleter {
   void operator()(PJ_CONTEXT* ctx) const { proj_context_destroy(ctx); }
 };
 
-// Messages quote at most this much of a CRS (a WKT can be kilobytes).
-constexpr size_t kQuotedCrsChars = 80;
-
 }  // namespace
 
-std::string QuotedCrs(std::string_view crs) {
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on
-  // "'" + std::string(...).
-  std::string quoted = "'";
-  quoted.append(crs.substr(0, kQuotedCrsChars));
-  quoted.append(crs.size() > kQuotedCrsChars ? "...'" : "'");
-  return quoted;
-}
+std::string QuotedCrs(std::string_view crs) { return QuotedInput(crs); }
 
 PJ_CONTEXT* ThreadProjContext() {
   thread_local std::unique_ptr<PJ_CONTEXT, ContextDeleter> context(

@@ -30,7 +30,8 @@ PJ_CONTEXT* ThreadProjContext();
 // PROJ's message for the last error on the calling thread's context.
 std::string LastProjError();
 
-// `crs` in quotes for a message, cut short when long (a WKT).
+// `crs` for a message, as QuotedInput() shows client text: in quotes, cut
+// short when long (a WKT).
 std::string QuotedCrs(std::string_view crs);
 
 // Creates the CRS `crs` names ("EPSG:32633", WKT or a PROJ string; "+proj="

@@ -10,6 +10,7 @@
 
 #include "server/http/api_error.h"
 #include "server/metrics/metrics_text.h"
+#include "server/server_runner.h"
 
 namespace locator {
 namespace {
@@ -36,7 +37,8 @@ StatusServer::StatusServer(LocatorService* service, HttpOptions options)
     : service_(service),
       options_(std::move(options)),
       registry_(std::make_shared<prometheus::Registry>()),
-      rpc_metrics_(registry_.get()),
+      rpc_metrics_(registry_.get(), ServerRunner::MethodsServed(
+                                        {v1::Locator::service_full_name()})),
       engine_collector_(std::make_shared<EngineCollector>([service] {
         std::vector<DatasetStatsSample> samples;
         for (const auto& slot : service->datasets().slots()) {

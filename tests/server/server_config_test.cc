@@ -38,6 +38,7 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   EXPECT_EQ(config.serving.ListenAddress(), "127.0.0.1:50051");
   EXPECT_EQ(config.serving.max_message_bytes, 64u << 20);
   EXPECT_EQ(config.serving.max_batch_points, 1'000'000u);
+  EXPECT_EQ(config.serving.max_profile_samples, 100'000u);
   EXPECT_GE(config.serving.threads, 1u);
   EXPECT_EQ(config.engine.strategy, "self-tuning");
   EXPECT_TRUE(config.engine.tuning.background);
@@ -105,6 +106,8 @@ TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
                                "3",
                                "--max-batch-points",
                                "1000",
+                               "--max-profile-samples",
+                               "2500",
                                "--max-message-bytes",
                                "8MiB",
                                "--stats-interval-s",
@@ -125,6 +128,7 @@ TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
   EXPECT_TRUE(config.engine.tuning.background);
   EXPECT_EQ(config.serving.threads, 3u);
   EXPECT_EQ(config.serving.max_batch_points, 1000u);
+  EXPECT_EQ(config.serving.max_profile_samples, 2500u);
   EXPECT_EQ(config.serving.max_message_bytes, 8u << 20);
   EXPECT_EQ(config.stats_interval_s, 2.5);
   EXPECT_EQ(config.retune_interval_s, 30);
@@ -144,7 +148,7 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
         "--default-deadline-ms", "--max-dataset-points", "--http-listen",
         "--state-dir", "--http-max-body-bytes", "--http-cors-origin",
         "--http-max-grid-cells", "--http-max-connections-per-address",
-        "--http-public-status"}) {
+        "--http-public-status", "--max-profile-samples"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
 }
@@ -164,6 +168,9 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--max-message-bytes", "100"},
       {"--max-message-bytes", "4GiB"},
       {"--max-batch-points", "0"},
+      {"--max-profile-samples", "0"},
+      {"--max-profile-samples", "-5"},
+      {"--max-profile-samples", "2147483648"},
       {"--stats-interval-s", "-1"},
       {"--retune-interval-s", "nan"},
       {"--listen", "50051"},
