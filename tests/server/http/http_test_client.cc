@@ -16,7 +16,9 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 using tcp = asio::ip::tcp;
 
-constexpr auto kTimeout = std::chrono::seconds(10);
+// Long enough for a slow server (sanitizers, a loaded machine) to answer;
+// only a server that never answers waits this long.
+constexpr auto kTimeout = std::chrono::seconds(120);
 
 // Connects `stream` from the loopback address `from` to 127.0.0.1:port.
 Status Connect(int port, beast::tcp_stream* stream,
