@@ -2,39 +2,21 @@
 // rings, and the crossings between constraints (see triangulation_builder.h).
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <numeric>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
+#include "server/core/number_text.h"
 #include "server/core/triangulation.h"
 #include "server/core/triangulation_builder.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
-
-namespace {
-
-double Distance(const Point2& a, const Point2& b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
-
-}  // namespace
-
-std::string Triangulation::Builder::PointText(const Point2& p) {
-  // The shortest text that reads back as the same double.
-  const auto shortest = [](double v) {
-    char text[32];
-    const auto [end, error] = std::to_chars(text, text + sizeof(text), v);
-    return std::string(text, error == std::errc() ? end : text);
-  };
-  return "(" + shortest(p.x) + ", " + shortest(p.y) + ")";
-}
 
 Status Triangulation::Builder::InsertPoints() {
   const std::vector<Point2>& pts = dataset_.points;
@@ -207,11 +189,12 @@ Status Triangulation::Builder::NameCrossings() {
       const auto [where, fresh] = claimed.emplace(v, k);
       if (fresh && !created) continue;
       if (fresh) {
-        const double ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
-        const double av = Distance(FromCgal(a->point()), FromCgal(v->point()));
-        const double w = ab > 0 ? std::min(1.0, av / ab) : 0.0;
+        // In Wide: the distances and the values may reach +-DBL_MAX.
+        const Wide ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
+        const Wide av = Distance(FromCgal(a->point()), FromCgal(v->point()));
+        const Wide w = ab > 0 ? std::min(Wide{1}, av / ab) : 0;
         v->info() = VertexInfo{static_cast<int64_t>(t_.by_input_.size()),
-                               (1 - w) * a->info().value + w * b->info().value};
+                               Lerp(a->info().value, b->info().value, w)};
         t_.by_input_.push_back(v);
         continue;
       }

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "server/core/number_text.h"
 #include "server/core/triangulation.h"
 #include "server/core/triangulation_builder.h"
 
