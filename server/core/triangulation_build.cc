@@ -117,7 +117,8 @@ Status Triangulation::Builder::InsertPolylines(
     const std::string& what) {
   for (size_t l = 0; l < lines.size(); ++l) {
     const Polyline& line = lines[l];
-    const std::string name = what + " " + std::to_string(l);
+    const std::string name =
+        line.name.empty() ? what + " " + std::to_string(l) : line.name;
     if (!line.values.empty() && line.values.size() != line.points.size()) {
       return Status::InvalidArgument(
           name + " has " + std::to_string(line.values.size()) + " values for " +
@@ -131,7 +132,9 @@ Status Triangulation::Builder::InsertPolylines(
     std::vector<Vertex_handle> vertices;
     for (size_t k = 0; k < line.points.size(); ++k) {
       const Point2& p = line.points[k];
-      const std::string point = name + " point " + std::to_string(k);
+      const std::string point =
+          line.name.empty() ? name + " point " + std::to_string(k)
+                            : "point " + std::to_string(k) + " of " + name;
       if (!IsFinite(p)) {
         return Status::InvalidArgument(point + " has a non-finite coordinate");
       }
@@ -147,8 +150,15 @@ Status Triangulation::Builder::InsertPolylines(
     }
     const size_t segments = closed ? vertices.size() : vertices.size() - 1;
     for (size_t k = 0; k < segments; ++k) {
+      // "ring 0 segment 2", or after the source's own name: "segment 2 of
+      // the exterior ring at a.wkt:3", and for a polyline of one segment (a
+      // .poly segment) that name alone.
+      const std::string segment =
+          line.name.empty() ? name + " segment " + std::to_string(k)
+          : segments == 1   ? name
+                            : "segment " + std::to_string(k) + " of " + name;
       AddSegment(vertices[k], vertices[(k + 1) % vertices.size()], kind,
-                 name + " segment " + std::to_string(k));
+                 segment);
     }
   }
   return Status::OK();
