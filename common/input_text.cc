@@ -56,6 +56,10 @@ std::string NumberText(double value) {
   return std::string(buffer, written.ptr);
 }
 
+std::string PointText(const Point2& p) {
+  return "(" + NumberText(p.x) + ", " + NumberText(p.y) + ")";
+}
+
 std::string TruncatedMessage(std::string_view message, size_t max_bytes) {
   if (message.size() <= max_bytes) return std::string(message);
   std::string cut(Utf8Prefix(message, max_bytes - 3));

@@ -16,6 +16,8 @@
 #include <string>
 #include <string_view>
 
+#include "common/geometry.h"
+
 namespace locator {
 
 // The most bytes of a string QuotedInput() shows.
@@ -30,6 +32,9 @@ std::string QuotedInput(std::string_view text);
 // The shortest text that reads back as exactly `value` ("0.1", "1e-300",
 // "-1.7976931348623157e+308", "inf", "nan").
 std::string NumberText(double value);
+
+// "(x, y)", each coordinate as NumberText() shows it.
+std::string PointText(const Point2& p);
 
 // `message` if it has at most `max_bytes` bytes; otherwise its first bytes
 // (never half a UTF-8 character) followed by "...", `max_bytes` in all

@@ -224,6 +224,7 @@ Status ReadBreakline(const Where& where, GIntBig fid, const OGRGeometry& g,
       if (line.points.size() < 2) {
         return where.Bad(fid, "a breakline with fewer than 2 points");
       }
+      line.name = where.Feature(fid);
       out->push_back(std::move(line));
       return Status::OK();
     }
@@ -246,9 +247,15 @@ Status ReadBreakline(const Where& where, GIntBig fid, const OGRGeometry& g,
 Status ReadDomain(const Where& where, GIntBig fid, const OGRGeometry& g,
                   std::vector<Polyline>* out) {
   switch (wkbFlatten(g.getGeometryType())) {
-    case wkbPolygon:
+    case wkbPolygon: {
+      size_t index = 0;  // 0: the exterior ring
       for (const OGRLinearRing* ring : *g.toPolygon()) {
         Polyline polyline;
+        polyline.name =
+            where.Feature(fid) +
+            (index == 0 ? ", exterior ring"
+                        : ", interior ring " + std::to_string(index));
+        ++index;
         if (Status status = AppendCurve(where, fid, *ring, false, &polyline);
             !status.ok()) {
           return status;
@@ -264,6 +271,7 @@ Status ReadDomain(const Where& where, GIntBig fid, const OGRGeometry& g,
         out->push_back(std::move(polyline));
       }
       return Status::OK();
+    }
     case wkbMultiPolygon:
       for (const OGRPolygon* part : *g.toMultiPolygon()) {
         if (Status status = ReadDomain(where, fid, *part, out); !status.ok()) {
