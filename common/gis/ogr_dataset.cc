@@ -24,9 +24,16 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
   for (const std::string& option : spec.open_options) {
     open_options.AddString(option.c_str());
   }
+  const char* const only_driver[] = {spec.driver.c_str(), nullptr};
+  if (!spec.driver.empty() &&
+      GDALGetDriverByName(spec.driver.c_str()) == nullptr) {
+    return Status::InvalidArgument(spec.source + ": no GDAL driver '" +
+                                   spec.driver + "' (driver=)");
+  }
   CPLErrorReset();
   out->reset(GDALDataset::Open(spec.source.c_str(),
-                               GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr,
+                               GDAL_OF_VECTOR | GDAL_OF_READONLY,
+                               spec.driver.empty() ? nullptr : only_driver,
                                open_options.List(), nullptr));
   if (*out != nullptr) return Status::OK();
   VSIStatBufL stat;
@@ -34,7 +41,9 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
     return Status::NotFound(spec.source + ": no such file or directory");
   }
   return Status::InvalidArgument(
-      spec.source + ": not a readable OGR vector source: " + LastGdalError());
+      spec.source + ": not a readable OGR vector source" +
+      (spec.driver.empty() ? "" : " for driver " + spec.driver) + ": " +
+      LastGdalError());
 }
 
 std::string LayerNames(GDALDataset& source) {

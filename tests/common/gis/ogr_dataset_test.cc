@@ -353,5 +353,15 @@ TEST_F(OgrDatasetErrorTest, ACorruptGeoPackageFailsNamingTheFeature) {
   EXPECT_TRUE(d.points.empty());
 }
 
+TEST_F(OgrDatasetErrorTest, TheDriverOptionOpensWithThatDriverOnly) {
+  Dataset d;
+  ASSERT_TRUE(Load(geojson_ + "?driver=GeoJSON", &d).ok());
+  EXPECT_EQ(d.points.size(), kPoints.size());
+  ExpectError(geojson_ + "?driver=GPKG", Status::Code::kInvalidArgument,
+              geojson_ + ": not a readable OGR vector source for driver GPKG");
+  ExpectError(geojson_ + "?driver=Nonesuch", Status::Code::kInvalidArgument,
+              geojson_ + ": no GDAL driver 'Nonesuch' (driver=)");
+}
+
 }  // namespace
 }  // namespace locator::gis
