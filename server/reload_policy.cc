@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/gis/ogr_dataset_spec.h"
+#include "common/gis/untrusted_ogr_spec.h"
 #include "common/input_text.h"
 #include "server/core/dataset.h"
 #include "server/status_mapping.h"
@@ -30,6 +31,24 @@ bool IsInside(const fs::path& path, const fs::path& dir) {
   return dir_end == dir.end() && path_at != path.end();
 }
 
+// "dataset 'REQUESTED'", cut short: a request's text is echoed, not copied.
+std::string DatasetQuoted(std::string_view requested) {
+  return "dataset " + QuotedInput(requested);
+}
+
+grpc::Status NotInReloadDir(const std::string& requested) {
+  return ToGrpcStatus(
+      Refusal::kPermissionDenied,
+      DatasetQuoted(requested) + " is not a file in this server's reload dir");
+}
+
+// `driver` as a spec option value (%-encoded: "ESRI Shapefile").
+std::string DriverOption(std::string_view driver) {
+  std::string encoded = "driver=";
+  for (const char c : driver) encoded += c == ' ' ? "%20" : std::string(1, c);
+  return encoded;
+}
+
 }  // namespace
 
 ReloadPolicy::ReloadPolicy(std::string configured_dataset,
@@ -48,38 +67,68 @@ grpc::Status ReloadPolicy::Resolve(const std::string& requested,
                         "this server reloads only its configured dataset "
                         "(start it with --reload-dir to allow others)");
   }
-  *spec = ResolveInReloadDir(requested);
-  if (spec->empty()) {
-    return ToGrpcStatus(Refusal::kPermissionDenied,
-                        "dataset " + QuotedInput(requested) +
-                            " is not a file in this server's reload dir");
-  }
-  return grpc::Status::OK;
+  return ResolveInReloadDir(requested, spec);
 }
 
-std::string ReloadPolicy::ResolveInReloadDir(
-    const std::string& requested) const {
+grpc::Status ReloadPolicy::ResolveInReloadDir(const std::string& requested,
+                                              std::string* spec) const {
   std::string_view points;
   std::string_view wkt;
   if (SplitWktConstraintsSpec(requested, &points, &wkt)) {
-    const std::string points_spec = ResolveInReloadDir(std::string(points));
+    std::string points_spec;
+    if (grpc::Status status =
+            ResolveInReloadDir(std::string(points), &points_spec);
+        !status.ok()) {
+      return status;
+    }
     const std::string wkt_file = FileInReloadDir(std::string(wkt));
-    if (points_spec.empty() || wkt_file.empty()) return "";
-    return points_spec + "+" + wkt_file;
+    if (wkt_file.empty()) return NotInReloadDir(requested);
+    *spec = points_spec + "+" + wkt_file;
+    return grpc::Status::OK;
   }
-  if (IsGeneratorSpec(requested)) return requested;
-  // A GIS spec's options ride along; its source must be a file in the dir.
-  const gis::OgrSpecParts parts = gis::IsOgrDatasetSpec(requested)
-                                      ? gis::SplitOgrDatasetSpec(requested)
-                                      : gis::OgrSpecParts{"", requested, ""};
-  const std::string file = FileInReloadDir(std::string(parts.source));
-  if (file.empty()) return "";
+  if (IsGeneratorSpec(requested)) {
+    *spec = requested;
+    return grpc::Status::OK;
+  }
+  if (gis::IsOgrDatasetSpec(requested)) return ResolveOgrSpec(requested, spec);
+  *spec = FileInReloadDir(requested);
   // A file that reads others (mesh.ele reads mesh.node) is allowed only when
   // they are inside the dir too.
-  for (const std::string& companion : DatasetCompanionFiles(file)) {
-    if (FileInReloadDir(companion).empty()) return "";
+  for (const std::string& companion : DatasetCompanionFiles(*spec)) {
+    if (FileInReloadDir(companion).empty()) spec->clear();
   }
-  return std::string(parts.prefix) + file + std::string(parts.options);
+  return spec->empty() ? NotInReloadDir(requested) : grpc::Status::OK;
+}
+
+grpc::Status ReloadPolicy::ResolveOgrSpec(const std::string& requested,
+                                          std::string* spec) const {
+  // The options are checked before the file, so that a refusal says
+  // nothing about which files exist.
+  gis::OgrDatasetSpec parsed;
+  if (Status status = gis::ParseOgrDatasetSpec(requested, &parsed);
+      !status.ok()) {
+    return ToGrpcStatus(status);
+  }
+  if (Status status = gis::CheckUntrustedOgrOptions(parsed); !status.ok()) {
+    return ToGrpcStatus(Refusal::kPermissionDenied,
+                        DatasetQuoted(requested) + ": " + status.message());
+  }
+  const gis::OgrSpecParts parts = gis::SplitOgrDatasetSpec(requested);
+  const std::string file = FileInReloadDir(std::string(parts.source));
+  if (file.empty()) return NotInReloadDir(requested);
+  std::string driver;
+  if (Status status = gis::UntrustedOgrDriver(parsed, file, &driver);
+      !status.ok()) {
+    return ToGrpcStatus(Refusal::kPermissionDenied,
+                        DatasetQuoted(requested) + ": " + status.message());
+  }
+  // The load may open the file with this driver only.
+  *spec = std::string(parts.prefix) + file + std::string(parts.options);
+  if (parsed.driver.empty()) {
+    spec->push_back(parts.options.empty() ? '?' : '&');
+    spec->append(DriverOption(driver));
+  }
+  return grpc::Status::OK;
 }
 
 std::string ReloadPolicy::FileInReloadDir(const std::string& requested) const {
