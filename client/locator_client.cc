@@ -103,7 +103,7 @@ grpc::Status LocatorClient::Retune(v1::RetuneResponse* response) {
 grpc::Status LocatorClient::Reload(const std::string& spec,
                                    v1::ReloadResponse* response) {
   v1::ReloadRequest request;
-  request.set_dataset(spec);
+  request.set_spec(spec);
   request.set_name(scope_.dataset);
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);

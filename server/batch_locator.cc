@@ -31,7 +31,7 @@ struct BatchLocator::Call {
   CallControl control;
   const v1::LocateBatchRequest* request = nullptr;
   v1::LocateBatchResponse* response = nullptr;
-  BatchColumns columns;
+  BatchAnswerColumns columns;
   LocateBatchFn locate_batch;
   std::function<bool()> keep_going;
   std::atomic<size_t> shards_left{0};
@@ -116,7 +116,7 @@ void BatchLocator::Run(const v1::LocateBatchRequest& request,
   call->control = std::move(control);
   call->request = &request;
   call->response = response;
-  call->columns = SizeBatchColumns(request, points, response);
+  call->columns = SizeBatchAnswerColumns(request, points, response);
   call->locate_batch = std::move(locate_batch);
   call->shards_left.store(shards, std::memory_order_relaxed);
 

@@ -326,9 +326,13 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
       this, context, AccessPolicy::Scope::kAdmin, request->name(),
       [&](Admission call) {
         DatasetSlot* dataset = call.dataset;
+        std::string requested;
+        if (Status bad = FromReloadRequest(*request, &requested); !bad.ok()) {
+          return FinishNow(context, ToGrpcStatus(bad));
+        }
         std::string spec;
         if (grpc::Status denied =
-                dataset->reload_policy().Resolve(request->dataset(), &spec);
+                dataset->reload_policy().Resolve(requested, &spec);
             !denied.ok()) {
           return FinishNow(context, denied);
         }
@@ -336,10 +340,10 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
         // The reload thread finishes the call; the admission it holds until
         // then keeps a drain waiting for the build.
         const Status started = dataset->StartReload(
-            spec, [this, reactor, response, requested = request->dataset(),
-                   spec, call = std::move(call)](const Status& status,
-                                                 std::shared_ptr<Engine> engine,
-                                                 uint64_t generation) {
+            spec,
+            [this, reactor, response, requested, spec, call = std::move(call)](
+                const Status& status, std::shared_ptr<Engine> engine,
+                uint64_t generation) {
               if (status.ok()) {
                 ToReloadResponse(OutputStats(*engine), generation, response);
                 response->mutable_dataset()->set_name(call.dataset->name());

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "common/gis/crs_info.h"
+#include "common/input_text.h"
 
 namespace locator {
 namespace {
@@ -118,10 +119,10 @@ void ToLocateResponse(const LocateResult& result,
   cost->set_total(result.cost.total());
 }
 
-BatchColumns SizeBatchColumns(const v1::LocateBatchRequest& request,
-                              size_t points,
-                              v1::LocateBatchResponse* response) {
-  BatchColumns columns;
+BatchAnswerColumns SizeBatchAnswerColumns(const v1::LocateBatchRequest& request,
+                                          size_t points,
+                                          v1::LocateBatchResponse* response) {
+  BatchAnswerColumns columns;
   columns.types = ResizedColumn(response->mutable_types(), points);
   columns.triangle_ids =
       ResizedColumn(response->mutable_triangle_ids(), points);
@@ -141,7 +142,7 @@ BatchColumns SizeBatchColumns(const v1::LocateBatchRequest& request,
 }
 
 uint64_t WriteBatchAnswers(std::span<const LocateResult> results, size_t offset,
-                           const BatchColumns& columns) {
+                           const BatchAnswerColumns& columns) {
   constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
   uint64_t cost_sum = 0;
   for (size_t i = 0; i < results.size(); ++i) {
@@ -224,6 +225,21 @@ void ToGetStatsResponse(const EngineStats& stats,
   v1::MemoryStats* memory = response->mutable_memory();
   memory->set_triangulation_bytes(info.triangulation_bytes);
   memory->set_tuning_bytes(stats.tuning.memory_bytes);
+}
+
+Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec) {
+  // The one reader of the deprecated field.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  const std::string& legacy = request.dataset();
+#pragma GCC diagnostic pop
+  if (!request.spec().empty() && !legacy.empty() && legacy != request.spec()) {
+    return Status::InvalidArgument(
+        "spec " + QuotedInput(request.spec()) + " and the deprecated dataset " +
+        QuotedInput(legacy) + " differ; send the spec in spec alone");
+  }
+  *spec = request.spec().empty() ? legacy : request.spec();
+  return Status::OK();
 }
 
 void ToReloadResponse(const EngineStats& stats, uint64_t generation,

@@ -32,7 +32,7 @@ void ToLocateResponse(const LocateResult& result, v1::LocateResponse* response);
 
 // The columns of a LocateBatchResponse, sized for a whole batch, as raw
 // arrays so that several threads can each fill their own slice.
-struct BatchColumns {
+struct BatchAnswerColumns {
   int* types = nullptr;
   int64_t* triangle_ids = nullptr;
   uint32_t* costs = nullptr;
@@ -44,13 +44,14 @@ struct BatchColumns {
 
 // Sizes `response`'s columns for `points` answers, including the optional
 // columns `request` asks for, and returns them.
-BatchColumns SizeBatchColumns(const v1::LocateBatchRequest& request,
-                              size_t points, v1::LocateBatchResponse* response);
+BatchAnswerColumns SizeBatchAnswerColumns(const v1::LocateBatchRequest& request,
+                                          size_t points,
+                                          v1::LocateBatchResponse* response);
 
 // Writes `results` as answers [offset, offset + results.size()) of `columns`;
 // returns the sum of their costs.
 uint64_t WriteBatchAnswers(std::span<const LocateResult> results, size_t offset,
-                           const BatchColumns& columns);
+                           const BatchAnswerColumns& columns);
 
 // Fills `tuning` from `summary`; the histogram only if `include_histogram`.
 void ToTuningStats(const TuningSummary& summary, bool include_histogram,
@@ -62,6 +63,11 @@ void ToTuningStats(const TuningSummary& summary, bool include_histogram,
 // /metrics) is made from its result.
 void ToGetStatsResponse(const EngineStats& stats,
                         v1::GetStatsResponse* response);
+
+// The spec a Reload asks to load: `spec`, or the deprecated `dataset` of
+// clients from before `spec` existed. InvalidArgument when both are set and
+// differ.
+Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec);
 
 // Fills `response` for a Reload that made the engine with `stats` serve as
 // `generation`.

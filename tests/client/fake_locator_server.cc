@@ -196,7 +196,7 @@ class FakeLocatorServer::Service final : public v1::Locator::Service {
   grpc::Status Reload(grpc::ServerContext*, const v1::ReloadRequest* request,
                       v1::ReloadResponse* response) override {
     Record(&last_reload_, *request);
-    response->mutable_dataset()->set_source(request->dataset());
+    response->mutable_dataset()->set_source(request->spec());
     response->set_generation(2);
     return grpc::Status::OK;
   }

@@ -92,7 +92,7 @@ TEST_F(LocatorCliScopeTest, AdminCommandsSendTheDataset) {
   const BinaryResult reload =
       Run(LOCATOR_PATH, {"--dataset", "bedrock", "reload", "bedrock.gpkg"});
   EXPECT_EQ(server_->last_reload().name(), "bedrock");
-  EXPECT_EQ(server_->last_reload().dataset(), "bedrock.gpkg");
+  EXPECT_EQ(server_->last_reload().spec(), "bedrock.gpkg");
   EXPECT_THAT(reload.out, HasSubstr("dataset      bedrock.gpkg\n"));
   Run(LOCATOR_PATH, {"reload"});
   EXPECT_EQ(server_->last_reload().name(), "");

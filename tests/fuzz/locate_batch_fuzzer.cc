@@ -280,8 +280,8 @@ void CheckAnswer(const Fixture& f, const Point2& q, const LocateResult& got) {
 void CheckColumns(const v1::LocateBatchRequest& request,
                   std::span<const LocateResult> results) {
   v1::LocateBatchResponse batch;
-  const BatchColumns columns =
-      SizeBatchColumns(request, results.size(), &batch);
+  const BatchAnswerColumns columns =
+      SizeBatchAnswerColumns(request, results.size(), &batch);
   WriteBatchAnswers(results, 0, columns);
   for (size_t i = 0; i < results.size(); ++i) {
     v1::LocateResponse unary;

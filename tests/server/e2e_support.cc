@@ -193,7 +193,7 @@ grpc::Status Reload(v1::Locator::Stub& stub, const std::string& dataset,
                     v1::ReloadResponse* response, const std::string& name) {
   grpc::ClientContext context;
   v1::ReloadRequest request;
-  request.set_dataset(dataset);
+  request.set_spec(dataset);
   request.set_name(name);
   return stub.Reload(&context, request, response);
 }

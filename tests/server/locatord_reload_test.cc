@@ -57,6 +57,29 @@ TEST(LocatordReloadTest, TheNewDatasetIsServedExactly) {
   ExpectAnswersAgree(*stub, second);
 }
 
+TEST(LocatordReloadTest, AClientOfTheDeprecatedDatasetFieldStillReloads) {
+  const TestDatasetFile first;
+  ScratchDir dir;
+  const std::string second = dir.path() + "/second.csv";
+  WriteUniformCsv(second, 2000, 9);
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(
+      StartLocatord(first.path(), {"--reload-dir", dir.path()}, &server).ok());
+  auto stub = NewStub(*server);
+
+  v1::ReloadRequest request;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  request.set_dataset(second);
+#pragma GCC diagnostic pop
+  v1::ReloadResponse response;
+  grpc::ClientContext context;
+  const grpc::Status status = stub->Reload(&context, request, &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.dataset().source(), second);
+  EXPECT_EQ(response.dataset().input_points(), 2000u);
+}
+
 TEST(LocatordReloadTest, ABadFileKeepsTheOldDatasetServing) {
   const TestDatasetFile first;
   ScratchDir dir;
