@@ -4,6 +4,11 @@
 //                 [--domain cdt|mesh|aniso] [--verify]
 //   locator-bench --scale [--big] [--format csv|md] [--queries 100000]
 //                 [--workloads raster,1-cluster] [--strategies self-tuning]
+//   locator-bench --build [--sizes 1000000] [--threads 1,2] [--repeats 3]
+//                 [--verify] [--format csv|md]
+//
+// --build times points in memory to a mesh ready to serve: today's CGAL
+// build against the tiled build on each thread count (build_benchmark.h).
 //
 // --scale runs the workloads of common/workload.h plus `raster` (a row-major
 // grid of queries over the bounding box, in row order) on uniform points,
@@ -23,9 +28,11 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "server/bench/bench_report.h"
+#include "server/bench/build_benchmark.h"
 #include "server/bench/paper_benchmark.h"
 #include "server/bench/scale_benchmark.h"
 #include "server/core/byte_size.h"
@@ -54,19 +61,25 @@ std::vector<size_t> ParseSizes(const std::string& text) {
 int main(int argc, char** argv) {
   po::options_description desc(
       "locator-bench: in-process point-location benchmark\nOptions");
-  std::string format = "md", budget, sizes, domain, workloads, strategies;
+  std::string format = "md", budget, sizes, domain, workloads, strategies,
+              threads = "1,2";
   locator::bench::PaperOptions paper;
   locator::bench::ScaleOptions scale;
   desc.add_options()("help,h", "print this help")(
       "paper", "reproduce the paper's Tables 1-4 (+ uniform, mixed, drift)")(
       "scale", "ns per locate at n = 100K and 1M vs CGAL")(
+      "build", "seconds to a mesh ready to serve: CGAL vs tiled (n = 1M)")(
+      "threads", po::value(&threads)->default_value("1,2"),
+      "--build: the tiled build's thread counts, comma-separated")(
       "big", "with --scale: also n = 4M")(
       "format", po::value(&format)->default_value("md"), "csv | md")(
       "seeds", po::value(&paper.seeds)->default_value(5),
       "--paper: datasets per n")(
       "domain", po::value(&domain),
       "--paper on a non-Delaunay kind: cdt | mesh | aniso")(
-      "verify", "--paper: check every answer against CGAL's locate()")(
+      "verify",
+      "--paper: check every answer against CGAL's locate(); --build: check "
+      "the tiled mesh is the CGAL build's and canonical")(
       "sizes", po::value(&sizes),
       "comma-separated n values (default: the mode's own)")(
       "budget", po::value(&budget),
@@ -75,7 +88,8 @@ int main(int argc, char** argv) {
                         po::value(&scale.queries)->default_value(100000),
                         "--scale: timed queries per workload")(
       "repeats", po::value(&scale.repeats)->default_value(5),
-      "--scale: timing repeats (median reported)")(
+      "--scale, --build: timing repeats (median reported; --build: 3 unless "
+      "given)")(
       "workloads", po::value(&workloads),
       "--scale: only these workloads, comma-separated (default: all)")(
       "strategies", po::value(&strategies),
@@ -89,7 +103,8 @@ int main(int argc, char** argv) {
     std::cerr << "locator-bench: " << e.what() << "\n" << desc;
     return 2;
   }
-  if (vm.count("help") || (!vm.count("paper") && !vm.count("scale")) ||
+  if (vm.count("help") ||
+      (!vm.count("paper") && !vm.count("scale") && !vm.count("build")) ||
       (format != "csv" && format != "md")) {
     std::cerr << desc;
     return vm.count("help") ? 0 : 2;
@@ -124,6 +139,31 @@ int main(int argc, char** argv) {
     }
   } else if (vm.count("big")) {
     scale.sizes.push_back(4000000);
+  }
+
+  if (vm.count("build")) {
+    locator::bench::BuildOptions build;
+    try {
+      if (!sizes.empty()) build.sizes = ParseSizes(sizes);
+      build.threads.clear();
+      for (const size_t t : ParseSizes(threads)) {
+        if (t == 0) throw std::invalid_argument("0 threads");
+        build.threads.push_back(static_cast<unsigned>(t));
+      }
+    } catch (const std::exception&) {
+      std::cerr << "locator-bench: bad --sizes '" << sizes << "' or --threads '"
+                << threads << "'\n";
+      return 2;
+    }
+    if (!vm["repeats"].defaulted()) build.repeats = scale.repeats;
+    build.verify = vm.count("verify") > 0;
+    build.csv = format == "csv";
+    const locator::Status s = locator::bench::RunBuild(build, std::cout);
+    if (!s.ok()) {
+      std::cerr << "locator-bench: " << s.ToString() << "\n";
+      return 1;
+    }
+    return 0;
   }
 
   locator::bench::BenchReport report;

@@ -1,7 +1,9 @@
 #include "server/core/engine.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "server/core/hilbert.h"
@@ -39,8 +41,12 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
   BuiltMesh built;
+  const unsigned threads =
+      options.build_threads > 0
+          ? options.build_threads
+          : std::max(1u, std::thread::hardware_concurrency());
   Status s = BuildOrMapMesh(dataset, options.mesh_cache_dir, &built,
-                            &e->info_.mesh_cache);
+                            &e->info_.mesh_cache, threads);
   if (!s.ok()) return s;
   e->info_.source = std::move(dataset.source);
   e->info_.crs = std::move(dataset.crs);

@@ -3,9 +3,9 @@
 // point the service and tools use; it exposes plain types only (no CGAL).
 //
 // Owns: the serving mesh (shared with nothing else once Create() returns),
-// the strategy, and what Create() derived from CGAL's triangulation before
-// freeing it, or read from the mesh file (dataset facts, edge sample,
-// domain outline).
+// the strategy, and what Create() derived with the mesh (from CGAL's
+// triangulation before freeing it, or from the tiles) or read from the
+// mesh file (dataset facts, edge sample, domain outline).
 //
 // Thread-safety: all const methods and Retune() may be called concurrently.
 // Invariant: the mesh is immutable once Create() returns; every query
@@ -54,6 +54,10 @@ struct EngineOptions {
   // file there instead of triangulating, or writes it after triangulating.
   // Empty: always triangulate, write nothing.
   std::string mesh_cache_dir;
+  // Threads that triangulate a dataset without constraints, in tiles
+  // (tiling/tiled_build.h); 0: one per hardware thread. The mesh and its
+  // ids do not depend on it. Constrained datasets are built on one.
+  unsigned build_threads = 0;
 };
 
 struct DatasetInfo {
@@ -101,9 +105,11 @@ class Engine {
   // Edges per list of domain_outline().
   static constexpr size_t kOutlineSize = MeshFacts::kOutlineSize;
 
-  // Triangulates `dataset`, derives the serving mesh, sets up the strategy
-  // on it and frees CGAL's triangulation; or, with options.mesh_cache_dir,
-  // maps the mesh from the dataset's file there (see BuildOrMapMesh). Fails
+  // Triangulates `dataset` (TriangulateMesh: in tiles on
+  // options.build_threads threads without constraints, with CGAL with
+  // them), derives the serving mesh and sets up the strategy on it; or,
+  // with options.mesh_cache_dir, maps the mesh from the dataset's file
+  // there (see BuildOrMapMesh). Fails
   // with InvalidArgument for fewer than 3 distinct or all-collinear points,
   // or an unknown strategy.
   static Status Create(Dataset dataset, const EngineOptions& options,

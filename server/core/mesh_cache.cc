@@ -10,6 +10,7 @@
 #include "common/freed_memory.h"
 #include "server/core/dataset_fingerprint.h"
 #include "server/core/file_io.h"
+#include "server/core/tiling/tiled_build.h"
 #include "server/core/triangulation.h"
 
 #define XXH_INLINE_ALL
@@ -31,7 +32,17 @@ std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
   return DigestNamedPath(dir, "mesh-", fingerprint, ".mesh");
 }
 
-Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out) {
+Status TriangulateMesh(const Dataset& dataset, unsigned threads,
+                       BuiltMesh* out) {
+  if (dataset.constraints.empty()) {
+    TiledBuildOptions options;
+    options.threads = threads;
+    const Status s =
+        BuildTiledMesh(dataset.points, dataset.values, options, out);
+    // The tiles' CGAL triangulations were many small blocks, now freed.
+    ReturnFreedMemory();
+    return s;
+  }
   std::unique_ptr<Triangulation> t;
   if (Status s = Triangulation::Build(dataset, &t); !s.ok()) return s;
   out->mesh = t->shared_mesh();
@@ -62,13 +73,16 @@ Status MapCachedMesh(const std::string& cache_dir, uint64_t fingerprint,
 }
 
 Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
-                      BuiltMesh* out, MeshCacheOutcome* outcome) {
+                      BuiltMesh* out, MeshCacheOutcome* outcome,
+                      unsigned build_threads) {
   *outcome = MeshCacheOutcome();
-  if (cache_dir.empty()) return TriangulateMesh(dataset, out);
+  if (cache_dir.empty()) return TriangulateMesh(dataset, build_threads, out);
   const uint64_t fingerprint = DatasetFingerprint(dataset);
   Status status = MapCachedMesh(cache_dir, fingerprint, out, outcome);
   if (status.ok()) return status;
-  if (status = TriangulateMesh(dataset, out); !status.ok()) return status;
+  if (status = TriangulateMesh(dataset, build_threads, out); !status.ok()) {
+    return status;
+  }
   if (const Status saved = WriteMeshFile(outcome->path, fingerprint, *out);
       !saved.ok()) {
     outcome->save_error = saved.message();

@@ -39,16 +39,20 @@ struct MeshCacheOutcome {
 // (DigestNamedPath: "mesh-<16 hex digits>.mesh").
 std::string MeshFilePath(const std::string& dir, uint64_t fingerprint);
 
-// Triangulates `dataset` with CGAL, derives its serving mesh and facts, and
-// frees CGAL's triangulation. InvalidArgument as Triangulation::Build.
-Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out);
+// Triangulates `dataset` and derives its serving mesh and facts: a plain
+// point set in tiles on `threads` threads (tiling/tiled_build.h), a
+// constrained one with CGAL, whose triangulation is freed. The same points
+// give the same mesh either way. InvalidArgument as Triangulation::Build.
+Status TriangulateMesh(const Dataset& dataset, unsigned threads,
+                       BuiltMesh* out);
 
 // With an empty `cache_dir`, TriangulateMesh. Otherwise maps the dataset's
 // file in `cache_dir` if it is sound; if there is none, or it is unusable
 // (the reason goes to outcome->load_error), triangulates and writes the
 // file (a failure goes to outcome->save_error; the mesh is served anyway).
 Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
-                      BuiltMesh* out, MeshCacheOutcome* outcome);
+                      BuiltMesh* out, MeshCacheOutcome* outcome,
+                      unsigned build_threads = 1);
 
 // Maps the mesh file of the dataset with `fingerprint` in `cache_dir`,
 // filling *outcome (mapped, or why not in load_error). NotFound if there is

@@ -49,7 +49,9 @@
 
 namespace locator {
 
-inline constexpr uint32_t kMeshFileVersion = 1;
+// 2: corners rotated to the smallest id first, the hull ring from the edge
+// ending at the smallest id, ties in the triangle order by rotated ids.
+inline constexpr uint32_t kMeshFileVersion = 2;
 inline constexpr size_t kMeshFileHeaderBytes = 256;
 
 // What the engine keeps of a triangulation besides its serving mesh.

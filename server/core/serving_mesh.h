@@ -5,7 +5,8 @@
 // touches, in plain arrays with 32-bit indices:
 //
 //   triangles  F records of 24 bytes: corner[3], neighbor[3]. Corners are
-//              counter-clockwise. Edge i is opposite corner i and runs from
+//              counter-clockwise, corner 0 the one with the smallest
+//              public id. Edge i is opposite corner i and runs from
 //              corner Ccw(i) to corner Cw(i), the triangle on its left.
 //              The top bit of corner[i] is set when edge i is a constrained
 //              edge (breakline, boundary, .poly segment or mesh edge).
@@ -13,14 +14,18 @@
 //              kHullBit | its position in hull().
 //   points     V vertex coordinates; values V doubles (empty without values);
 //              ids V public vertex ids (the stable ids of Triangulation).
-//   hull       the hull edges, counter-clockwise, as Edge(face, i) codes.
+//   hull       the hull edges as Edge(face, i) codes, in a ring where each
+//              edge ends where the one before it starts, from the edge
+//              ending at the hull vertex with the smallest public id.
 //
 // Order: triangles are numbered in-domain first, so that a triangle's index
 // is its public triangle id (0..num_triangles()-1, stable: the same input
 // always gives the same ids); the finite faces outside the domain follow
 // (num_triangles()..num_faces()-1). Within each group, and for vertices,
 // the order is the Hilbert curve over the bounding box (of centroids for
-// triangles), so that neighbours are near in memory.
+// triangles; ties by the corners' public ids; for vertices, by id), so that
+// neighbours are near in memory. So the mesh of a triangulation does not
+// depend on how it was built (CGAL in Triangulation, or tiles).
 //
 // The arrays are views: a mesh owns them through an opaque storage (vectors
 // after a build), so a mesh can also be served from a mapped file.

@@ -81,6 +81,12 @@ uint64_t Triangulation::VertexDigest() const {
   return hash.digest();
 }
 
+int Triangulation::MeshIndex(Face_handle f, int i) const {
+  const int64_t id = f->vertex(i)->info().id;
+  const std::array<uint32_t, 3> ids = mesh_->CornerIds(MeshFace(f));
+  return ids[0] == id ? 0 : ids[1] == id ? 1 : 2;
+}
+
 std::array<uint32_t, 3> Triangulation::CornerIds(Face_handle f) const {
   std::array<uint32_t, 3> ids;
   for (int i = 0; i < 3; ++i) {
@@ -142,8 +148,10 @@ LocateResult Triangulation::ReferenceLocate(const Point2& q) const {
       break;
     }
   }
-  // CGAL's face, described by the serving mesh (the same triangle there).
+  // CGAL's face, described by the serving mesh (the same triangle there,
+  // its corners rotated).
   uint32_t face = MeshFace(f);
+  if (type != LocationType::kFace) li = MeshIndex(f, li);
   if (type == LocationType::kOutsideConvexHull) {
     mesh_->NearestVisibleHullEdge(&face, &li, q);
   }

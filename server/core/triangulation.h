@@ -111,6 +111,9 @@ class Triangulation {
   uint32_t MeshFace(Face_handle f) const {
     return static_cast<uint32_t>(f->info() >= 0 ? f->info() : -2 - f->info());
   }
+  // The index in mesh() of f's corner i, and so of its edge i: the mesh
+  // rotates each face so that its corner 0 has the smallest id.
+  int MeshIndex(Face_handle f, int i) const;
   // The serving mesh derived from this triangulation; it may outlive it.
   const ServingMesh& mesh() const { return *mesh_; }
   std::shared_ptr<const ServingMesh> shared_mesh() const { return mesh_; }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/input_text.h"
+#include "server/core/tiling/build_checks.h"
 #include "server/core/triangulation.h"
 #include "server/core/triangulation_builder.h"
 #include "server/core/wide_math.h"
@@ -21,14 +22,8 @@ namespace locator {
 Status Triangulation::Builder::InsertPoints() {
   const std::vector<Point2>& pts = dataset_.points;
   const size_t n = pts.size();
-  for (size_t i = 0; i < n; ++i) {
-    if (!IsFinite(pts[i])) {
-      return Status::InvalidArgument("point " + std::to_string(i) +
-                                     " has a non-finite coordinate");
-    }
-  }
-  if (!dataset_.values.empty() && dataset_.values.size() != n) {
-    return Status::InvalidArgument("dataset values and points differ in size");
+  if (Status s = CheckPointCoordinates(pts, dataset_.values.size()); !s.ok()) {
+    return s;
   }
 
   // Merge repeated points before CGAL sees them: CGAL's range insert would
@@ -56,22 +51,14 @@ Status Triangulation::Builder::InsertPoints() {
   }
   std::vector<uint32_t>().swap(order);
 
-  if (distinct.size() < 3) {
-    return Status::InvalidArgument(
-        "dataset has " + std::to_string(distinct.size()) +
-        " distinct point(s); a triangulation needs at least 3 that are not "
-        "all collinear");
-  }
-  const CgalPoint& a = distinct[0].first;
-  const CgalPoint& b = distinct[1].first;
   const bool all_collinear =
+      distinct.size() >= 3 &&
       std::all_of(distinct.begin() + 2, distinct.end(), [&](const auto& p) {
-        return CGAL::orientation(a, b, p.first) == CGAL::COLLINEAR;
+        return CGAL::orientation(distinct[0].first, distinct[1].first,
+                                 p.first) == CGAL::COLLINEAR;
       });
-  if (all_collinear) {
-    return Status::InvalidArgument(
-        "all " + std::to_string(distinct.size()) +
-        " distinct points are collinear; no triangle can be formed");
+  if (Status s = CheckTriangulable(distinct.size(), all_collinear); !s.ok()) {
+    return s;
   }
 
   t_.has_values_ = !dataset_.values.empty();

@@ -1,5 +1,6 @@
 #include "tests/core/locator_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -47,10 +48,14 @@ bool TypeFromSides(const CGAL::Orientation side[3], LocationType* type,
 }  // namespace
 
 TriangleIndex::TriangleIndex(const Triangulation& t) : ids_(t.num_triangles()) {
+  // CGAL's faces, rotated as the serving mesh rotates every face: the
+  // smallest id first.
   const auto& dt = t.cgal();
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     if (!t.InDomain(f)) continue;
-    for (int i = 0; i < 3; ++i) ids_[f->info()][i] = f->vertex(i)->info().id;
+    const std::array<uint32_t, 3> ids = t.CornerIds(f);
+    const size_t r = std::min_element(ids.begin(), ids.end()) - ids.begin();
+    for (int i = 0; i < 3; ++i) ids_[f->info()][i] = ids[(i + r) % 3];
   }
 }
 

@@ -25,7 +25,8 @@ namespace locator::test {
 // Barycentric coordinates of answers inside the hull sum to 1 within this.
 constexpr double kBarycentricTolerance = 1e-9;
 
-// The vertex ids of every triangle, by stable triangle id.
+// The vertex ids of every triangle, by stable triangle id, counter-clockwise
+// from the smallest (as the serving mesh orders corners).
 class TriangleIndex {
  public:
   explicit TriangleIndex(const Triangulation& t);

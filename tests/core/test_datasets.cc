@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <utility>
 
@@ -45,6 +47,77 @@ Dataset PointsDataset(std::vector<Point2> points) {
   ds.points = std::move(points);
   ds.source = "points";
   return ds;
+}
+
+Dataset CocircularDataset() {
+  constexpr int64_t kRadius = 5525;
+  Dataset ds;
+  for (int64_t s = 1; s <= 3; ++s) {
+    const int64_t r = s * kRadius;
+    for (int64_t x = -r; x <= r; ++x) {
+      const int64_t y2 = r * r - x * x;
+      const auto y = static_cast<int64_t>(std::llround(std::sqrt(double(y2))));
+      for (const int64_t candidate : {y - 1, y, y + 1}) {
+        if (candidate < 0 || candidate * candidate != y2) continue;
+        ds.points.push_back({double(x), double(candidate)});
+        if (candidate > 0) ds.points.push_back({double(x), double(-candidate)});
+      }
+    }
+  }
+  for (const Point2& p :
+       {Point2{0, 0}, Point2{100, 7}, Point2{-4000, 3000}, Point2{9000, -1}}) {
+    ds.points.push_back(p);
+  }
+  ds.source = "cocircular";
+  return ds;
+}
+
+Dataset LinesDataset(size_t n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  Dataset ds;
+  const size_t per_line = std::max<size_t>(n / 8, 2);
+  for (size_t i = 0; i < per_line; ++i) {
+    const double t = double(i) / double(per_line - 1);
+    for (const double slope : {0.25, 0.5, 1.0, 2.0}) {
+      ds.points.push_back({t, slope * t / 2});  // a fan from the origin
+    }
+    ds.points.push_back({t, 0.9});      // a horizontal line
+    ds.points.push_back({t, 1.0});      // the top of the hull
+    ds.points.push_back({0, t});        // the left side of the hull
+    ds.points.push_back({1, 0.5 * t});  // part of the right side
+  }
+  for (int i = 0; i < 5; ++i) {
+    ds.points.push_back(
+        {UniformDouble(rng, 0.1, 0.9), UniformDouble(rng, 0.1, 0.8)});
+  }
+  ds.source = "lines";
+  return ds;
+}
+
+Dataset WithRepeats(Dataset dataset, int copies, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const size_t n = dataset.points.size();
+  for (int c = 0; c < copies; ++c) {
+    std::vector<size_t> order(n);
+    for (size_t i = 0; i < n; ++i) order[i] = i;
+    std::shuffle(order.begin(), order.end(), rng);
+    for (const size_t i : order) {
+      dataset.points.push_back(dataset.points[i]);
+      if (dataset.has_values()) dataset.values.push_back(dataset.values[i]);
+    }
+  }
+  dataset.source += "+repeats";
+  return dataset;
+}
+
+std::vector<std::array<uint32_t, 3>> TriangleSet(const ServingMesh& mesh) {
+  std::vector<std::array<uint32_t, 3>> triangles(mesh.num_faces());
+  for (uint32_t f = 0; f < mesh.num_faces(); ++f) {
+    triangles[f] = mesh.CornerIds(f);
+    std::sort(triangles[f].begin(), triangles[f].end());
+  }
+  std::sort(triangles.begin(), triangles.end());
+  return triangles;
 }
 
 std::unique_ptr<Triangulation> BuildTriangulation(const Dataset& dataset) {

@@ -7,6 +7,7 @@
 #ifndef LOCATOR_TESTS_CORE_TEST_DATASETS_H_
 #define LOCATOR_TESTS_CORE_TEST_DATASETS_H_
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "server/core/dataset.h"
 #include "server/core/locate_result.h"
 #include "server/core/point_locator.h"
+#include "server/core/serving_mesh.h"
 #include "server/core/triangulation.h"
 #include "server/core/tuning_options.h"
 
@@ -41,6 +43,23 @@ Dataset DenseClusterDataset(size_t sparse, size_t dense, double side,
 
 // A dataset from raw points (no values).
 Dataset PointsDataset(std::vector<Point2> points);
+
+// The integer points of the circles x^2 + y^2 = (s * 5525)^2 for s = 1, 2,
+// 3 (180 points each: 5525 = 5^2 * 13 * 17 has many), their centre and a
+// few points between: large sets of exactly co-circular points.
+Dataset CocircularDataset();
+
+// `n` points on a few lines (a fan through the origin, two parallels, the
+// axes, with repeats of the lines' own spacing) plus a handful off them:
+// collinear runs everywhere, on the hull too.
+Dataset LinesDataset(size_t n, uint64_t seed);
+
+// `dataset` with every point repeated `copies` times more (values too),
+// the repeats shuffled in after their first occurrence.
+Dataset WithRepeats(Dataset dataset, int copies, uint64_t seed);
+
+// The triangles of `mesh` as sorted triples of public vertex ids, sorted.
+std::vector<std::array<uint32_t, 3>> TriangleSet(const ServingMesh& mesh);
 
 // Triangulates `dataset`; nullptr (and a test failure) if that fails.
 std::unique_ptr<Triangulation> BuildTriangulation(const Dataset& dataset);
