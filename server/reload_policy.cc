@@ -68,9 +68,9 @@ std::string ReloadPolicy::ResolveInReloadDir(
   }
   if (IsGeneratorSpec(requested)) return requested;
   // A GIS spec's options ride along; its source must be a file in the dir.
-  const gis::OgrSpecParts parts = gis::IsOgrDatasetSpec(requested)
-                                      ? gis::SplitOgrDatasetSpec(requested)
-                                      : gis::OgrSpecParts{"", requested, ""};
+  const gis::SpecParts parts = gis::IsOgrDatasetSpec(requested)
+                                   ? gis::SplitOgrDatasetSpec(requested)
+                                   : gis::SpecParts{"", requested, ""};
   const std::string file = FileInReloadDir(std::string(parts.source));
   if (file.empty()) return "";
   // A file that reads others (mesh.ele reads mesh.node) is allowed only when
