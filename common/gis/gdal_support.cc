@@ -1,7 +1,11 @@
 #include "common/gis/gdal_support.h"
 
+#include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_string.h>
 #include <gdal.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
 
 #include <mutex>
 
@@ -15,6 +19,38 @@ void RegisterGdalDrivers() {
 std::string LastGdalError() {
   const char* message = CPLGetLastErrorMsg();
   return message != nullptr && *message != '\0' ? message : "no detail";
+}
+
+std::string SpatialRefToWkt(const OGRSpatialReference& srs) {
+  char* wkt = nullptr;
+  const char* const options[] = {"FORMAT=WKT2_2019", nullptr};
+  srs.exportToWkt(&wkt, options);
+  std::string out = wkt == nullptr ? "" : wkt;
+  CPLFree(wkt);
+  return out;
+}
+
+Status UserCrsToWkt(const std::string& crs, std::string* wkt) {
+  OGRSpatialReference srs;
+  const char* const options[] = {"ALLOW_NETWORK_ACCESS=NO",
+                                 "ALLOW_FILE_ACCESS=NO", nullptr};
+  CPLErrorReset();
+  if (srs.SetFromUserInput(crs.c_str(), options) != OGRERR_NONE) {
+    return Status::InvalidArgument("unknown CRS '" + crs +
+                                   "': " + LastGdalError());
+  }
+  *wkt = SpatialRefToWkt(srs);
+  return Status::OK();
+}
+
+std::vector<std::string> GdalFileList(GDALDataset& dataset) {
+  std::vector<std::string> files;
+  char** list = dataset.GetFileList();
+  for (char** file = list; file != nullptr && *file != nullptr; ++file) {
+    files.emplace_back(*file);
+  }
+  CSLDestroy(list);
+  return files;
 }
 
 }  // namespace locator::gis

@@ -1,5 +1,6 @@
 // What every GDAL user in locator_gis needs: the drivers registered once per
-// process, and GDAL's last error message for a Status.
+// process, GDAL's last error message for a Status, CRSs as WKT and the files
+// a dataset reads.
 //
 // Thread-safety: both functions may be called from any thread (registration
 // runs once; GDAL's error state is per thread).
@@ -8,6 +9,12 @@
 #define LOCATOR_COMMON_GIS_GDAL_SUPPORT_H_
 
 #include <string>
+#include <vector>
+
+#include "common/status.h"
+
+class GDALDataset;
+class OGRSpatialReference;
 
 namespace locator::gis {
 
@@ -17,6 +24,18 @@ void RegisterGdalDrivers();
 // The message of the calling thread's last GDAL error, or "no detail" when
 // GDAL left none.
 std::string LastGdalError();
+
+// `srs` as WKT2 (2019).
+std::string SpatialRefToWkt(const OGRSpatialReference& srs);
+
+// The CRS `crs` names (EPSG:NNNN, WKT or a PROJ string, as gdal_translate
+// -a_srs takes it) as WKT2, read without file or network access.
+// InvalidArgument "unknown CRS '...'" with GDAL's message otherwise.
+Status UserCrsToWkt(const std::string& crs, std::string* wkt);
+
+// The files `dataset` reads (GDALDataset::GetFileList: the main file and
+// its side-cars, a VRT's sources), in GDAL's order.
+std::vector<std::string> GdalFileList(GDALDataset& dataset);
 
 }  // namespace locator::gis
 
