@@ -11,8 +11,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/gis/crs_info.h"
@@ -380,6 +384,46 @@ TEST_F(LasDatasetTest, EmptyFilesAndThePointLimit) {
   status = LoadLasDataset(dir_.path() + "/missing.las", &ds);
   EXPECT_EQ(status.code(), Status::Code::kNotFound);
   EXPECT_THAT(status.message(), StartsWith(dir_.path() + "/missing.las: "));
+}
+
+// The committed fuzz seeds (tests/fuzz/corpus/las_fuzzer/) are the files
+// the writer makes now. With LOCATOR_WRITE_FUZZ_SEEDS=1 in the environment
+// this test writes them afresh (after a change of the writer).
+TEST(LasFuzzSeedsTest, CommittedFuzzSeedsAreCurrentFiles) {
+  LasFileOptions keys = Options(2, 1);
+  keys.geo_keys = testing::ProjectedGeoKeys(32633);
+  LasFileOptions evlr = Options(4, 6);
+  evlr.wkt = "EPSG:4326";
+  evlr.wkt_in_evlr = true;
+  LasFileOptions extra = Options(4, 10);
+  extra.record_length = 70;
+  extra.wkt = "EPSG:32633";
+  extra.user_vlr = "user data";
+  LasFileOptions waves = Options(3, 5);
+  waves.geo_keys = {1, 1, 0, 2, 1024, 0, 1, 2, 2048, 0, 1, 4326};
+  const std::pair<std::string, std::string> seeds[] = {
+      {"las10_format0.las", testing::LasBytes(Tile(), Options(0, 0))},
+      {"las12_format1_geokeys.las", testing::LasBytes(Tile(), keys)},
+      {"las13_format5_geographic.las", testing::LasBytes(Tile(), waves)},
+      {"las14_format6_wkt_evlr.las", testing::LasBytes(Tile(), evlr)},
+      {"las14_format10_extra_bytes.las", testing::LasBytes(Tile(), extra)},
+  };
+  for (const auto& [name, bytes] : seeds) {
+    const std::string path = std::string(LOCATOR_LAS_CORPUS) + "/" + name;
+    if (std::getenv("LOCATOR_WRITE_FUZZ_SEEDS") != nullptr) {
+      testing::WriteFile(path, bytes);
+    }
+    std::ifstream in(path, std::ios::binary);
+    const std::string committed((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+    EXPECT_EQ(committed, bytes) << name;
+    Dataset ds;
+    LasPointCounts counts;
+    EXPECT_TRUE(
+        LoadLasBytes(bytes, name, LasFilter(), DatasetLimits(), &ds, &counts)
+            .ok())
+        << name;
+  }
 }
 
 TEST(LasDatasetSpecTest, ParsesItsOptionsAndNamesBadOnes) {
