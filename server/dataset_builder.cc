@@ -155,8 +155,10 @@ bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
   }
   const std::string_view tag = Tag(slot);
   std::unique_ptr<Engine> created;
-  Status status =
-      Engine::CreateFromMeshFile(fingerprint, spec, options, &created);
+  DatasetOrigin origin;
+  origin.source = spec;
+  Status status = Engine::CreateFromMeshFile(fingerprint, std::move(origin),
+                                             options, &created);
   if (status.ok()) {
     status = budget_.Claim(slot.index(), created->dataset_info().input_points);
   }
