@@ -1,8 +1,10 @@
 #include "server/dataset_builder.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <system_error>
+#include <thread>
 #include <utility>
 
 #include "server/core/dataset.h"
@@ -63,6 +65,24 @@ void LogBuilt(const Engine& engine, std::string_view tag) {
   LogTuningState(engine, tag);
 }
 
+// Logs a build's progress (TinProgress) every few seconds while it runs.
+std::function<void(const TinProgress&)> ProgressLogger(std::string_view tag) {
+  return [tag](const TinProgress& p) {
+    LogLine(tag) << "simplifying: " << p.vertices << " vertices after "
+                 << p.seconds << " s; largest error left " << p.max_error;
+  };
+}
+
+// Says what a simplification made of its source (the certificate).
+void LogSimplified(const SimplificationStats& s, std::string_view tag) {
+  LogLine(tag) << "simplified " << s.source_samples << " source samples to "
+               << s.vertices << " vertices and " << s.triangles
+               << " triangles in " << s.build_seconds << " s: max error "
+               << s.max_error << " (target " << s.target_error
+               << ", max_points " << s.max_points << ", " << s.unserved_samples
+               << " samples outside the domain)";
+}
+
 }  // namespace
 
 DatasetBuilder::DatasetBuilder(const ServerConfig& config)
@@ -109,11 +129,16 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   if (MapGenerated(slot, spec, options, built)) return Status::OK();
   LogLine(tag) << "loading dataset " << spec;
   const auto load_start = std::chrono::steady_clock::now();
-  Dataset dataset;
-  DatasetLimits limits = config_.dataset_limits;
-  limits.max_points = budget_.Available(slot.index());
-  Status status = LoadServedDataset(spec, limits, &dataset);
-  if (status.ok()) status = budget_.Claim(slot.index(), dataset.points.size());
+  ServedLoadOptions load;
+  load.limits = config_.dataset_limits;
+  load.limits.max_points = budget_.Available(slot.index());
+  load.threads = std::max(1u, std::thread::hardware_concurrency());
+  load.progress = ProgressLogger(tag);
+  ServedDataset served;
+  Status status = LoadServedDataset(spec, load, &served);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), served.dataset.points.size());
+  }
   if (status.code() == Status::Code::kResourceExhausted) {
     const std::string see =
         config_.datasets.size() == 1
@@ -125,17 +150,23 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
     return Status::ResourceExhausted(status.message() + see);
   }
   if (!status.ok()) return status;
-  LogLine(tag) << "loaded " << dataset.points.size() << " points in "
+  LogLine(tag) << "loaded " << served.dataset.points.size() << " points in "
                << SecondsSince(load_start) << " s; building the serving mesh";
+  if (served.simplification) LogSimplified(*served.simplification, tag);
   std::unique_ptr<Engine> created;
-  status = Engine::Create(std::move(dataset), options, &created);
+  status =
+      served.simplification
+          ? Engine::CreateSimplified(std::move(served.dataset),
+                                     *served.simplification, options, &created)
+          : Engine::Create(std::move(served.dataset), options, &created);
   if (!status.ok()) {
     budget_.Cancel(slot.index());
     return status;
   }
   // Published by the caller right after this returns.
   budget_.Commit(slot.index());
-  RecordGenerated(spec, options, created->dataset_info().mesh_cache, tag);
+  const DatasetInfo& info = created->dataset_info();
+  RecordGenerated(spec, options, info.mesh_cache, tag);
   LogBuilt(*created, tag);
   *built = std::move(created);
   return Status::OK();

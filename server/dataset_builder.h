@@ -1,10 +1,11 @@
 // DatasetBuilder: how locatord builds the engine of one of its datasets, at
-// startup and on every reload: it loads the spec (LoadServedDataset),
-// bounded by the datasets' shared point budget (--max-dataset-points is a
-// total over all of them, see PointBudget; a successful build is published
-// right after Build() returns, so it commits its points then), and
-// triangulates it with the engine options, logging each step with the
-// dataset's tag.
+// startup and on every reload: it loads the spec (LoadServedDataset; a
+// raster or a dataset given max_error is simplified then, its progress
+// logged every few seconds), bounded by the datasets' shared point budget
+// (--max-dataset-points is a total over all of them, see PointBudget; a
+// successful build is published right after Build() returns, so it commits
+// its points then), and triangulates it with the engine options, logging
+// each step with the dataset's tag.
 //
 // With --state-dir DIR, the tuning of the dataset a bare --dataset gives
 // persists in DIR, and that of a dataset named by NAME=SPEC in DIR/NAME

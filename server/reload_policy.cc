@@ -6,8 +6,8 @@
 #include <system_error>
 #include <utility>
 
-#include "common/gis/ogr_dataset_spec.h"
 #include "server/core/dataset.h"
+#include "server/dataset_source.h"
 #include "server/status_mapping.h"
 
 namespace locator {
@@ -67,10 +67,8 @@ std::string ReloadPolicy::ResolveInReloadDir(
     return points_spec + "+" + wkt_file;
   }
   if (IsGeneratorSpec(requested)) return requested;
-  // A GIS spec's options ride along; its source must be a file in the dir.
-  const gis::SpecParts parts = gis::IsOgrDatasetSpec(requested)
-                                   ? gis::SplitOgrDatasetSpec(requested)
-                                   : gis::SpecParts{"", requested, ""};
+  // A spec's options ride along; its source must be a file in the dir.
+  const gis::SpecParts parts = SplitServedSpec(requested);
   const std::string file = FileInReloadDir(std::string(parts.source));
   if (file.empty()) return "";
   // A file that reads others (mesh.ele reads mesh.node) is allowed only when

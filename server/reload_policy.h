@@ -7,8 +7,9 @@
 //   - a file inside DIR, named by a path relative to DIR, or absolute. It is
 //     resolved with realpath, and must then be a regular file inside DIR: no
 //     ".." component and no symlink leading out of DIR;
-//   - a GIS spec (common/gis/ogr_dataset_spec.h) whose source is such a
-//     file; its options are kept as given;
+//   - a spec with options (SOURCE?OPTIONS: an OGR source, a raster, a LAS
+//     file, any spec given max_error; see SplitServedSpec) whose source is
+//     such a file; its options are kept as given;
 //   - POINTS+PATH.wkt where POINTS is any of the above and PATH.wkt a file
 //     inside DIR; a .ele needs its .node inside DIR too.
 // Every other spec is refused alike (PERMISSION_DENIED), whether or not the

@@ -88,6 +88,23 @@ TEST_F(ReloadPolicyTest, FilesInsideTheReloadDirResolveToTheirRealPath) {
   EXPECT_EQ(Resolved(policy, "alias.csv"), points);
 }
 
+TEST_F(ReloadPolicyTest, OptionsOfEveryKindRideAlongWithTheirFile) {
+  const ReloadPolicy policy("uniform:300:7", dir_);
+  std::ofstream(dir_ + "/dem.tif") << "raster";
+  std::ofstream(dir_ + "/tile.bin") << "LASF";
+  EXPECT_EQ(Resolved(policy, "dem.tif?max_error=0.5&band=2"),
+            Canonical(dir_ + "/dem.tif") + "?max_error=0.5&band=2");
+  EXPECT_EQ(Resolved(policy, "las:tile.bin?classes=2"),
+            "las:" + Canonical(dir_ + "/tile.bin") + "?classes=2");
+  EXPECT_EQ(Resolved(policy, "raster:tile.bin"),
+            "raster:" + Canonical(dir_ + "/tile.bin"));
+  EXPECT_EQ(Resolved(policy, "points.csv?max_points=100"),
+            Canonical(dir_ + "/points.csv") + "?max_points=100");
+  // The options never name the file.
+  EXPECT_EQ(Resolved(policy, "missing.tif?x=" + dir_ + "/dem.tif"), "denied");
+  EXPECT_EQ(Resolved(policy, "las:" + secret_ + "?classes=2"), "denied");
+}
+
 TEST_F(ReloadPolicyTest, AMeshIsAllowedOnlyWithItsNodeFileInside) {
   const ReloadPolicy policy("uniform:300:7", dir_);
   std::ofstream(dir_ + "/mesh.ele") << "1 3 0\n1 1 2 3\n";
