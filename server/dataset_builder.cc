@@ -10,6 +10,7 @@
 #include "server/core/dataset.h"
 #include "server/dataset_source.h"
 #include "server/server_log.h"
+#include "server/source_key.h"
 
 namespace locator {
 namespace {
@@ -126,7 +127,10 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   if (Status status = EngineOptionsFor(slot, &options); !status.ok()) {
     return status;
   }
-  if (MapGenerated(slot, spec, options, built)) return Status::OK();
+  if (MapGenerated(slot, spec, options, built) ||
+      MapBySourceKey(slot, spec, options, built)) {
+    return Status::OK();
+  }
   LogLine(tag) << "loading dataset " << spec;
   const auto load_start = std::chrono::steady_clock::now();
   ServedLoadOptions load;
@@ -167,9 +171,36 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   budget_.Commit(slot.index());
   const DatasetInfo& info = created->dataset_info();
   RecordGenerated(spec, options, info.mesh_cache, tag);
+  RecordSourceKey(spec, options, served, info, tag);
   LogBuilt(*created, tag);
   *built = std::move(created);
   return Status::OK();
+}
+
+bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
+                             uint64_t fingerprint, DatasetOrigin origin,
+                             const EngineOptions& options, std::string_view how,
+                             std::shared_ptr<Engine>* built) {
+  const std::string_view tag = Tag(slot);
+  std::unique_ptr<Engine> created;
+  Status status = Engine::CreateFromMeshFile(fingerprint, std::move(origin),
+                                             options, &created);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
+  }
+  if (!status.ok()) {
+    // The slow path loads the spec and says what is wrong, if anything.
+    if (status.code() != Status::Code::kResourceExhausted) {
+      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
+                   << status.ToString() << "; loading it instead";
+    }
+    return false;
+  }
+  budget_.Commit(slot.index());
+  LogLine(tag) << "found the mesh of " << spec << " " << how;
+  LogBuilt(*created, tag);
+  *built = std::move(created);
+  return true;
 }
 
 bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
@@ -184,28 +215,32 @@ bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
            .ok()) {
     return false;
   }
-  const std::string_view tag = Tag(slot);
-  std::unique_ptr<Engine> created;
   DatasetOrigin origin;
   origin.source = spec;
-  Status status = Engine::CreateFromMeshFile(fingerprint, std::move(origin),
-                                             options, &created);
-  if (status.ok()) {
-    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
-  }
+  return MapMesh(slot, spec, fingerprint, std::move(origin), options,
+                 "without generating it", built);
+}
+
+bool DatasetBuilder::MapBySourceKey(const DatasetSlot& slot,
+                                    const std::string& spec,
+                                    const EngineOptions& options,
+                                    std::shared_ptr<Engine>* built) {
+  if (options.mesh_cache_dir.empty()) return false;
+  SourceKey key;
+  Status status = ReadSourceKey(options.mesh_cache_dir, spec, &key);
+  if (status.code() == Status::Code::kNotFound) return false;
+  if (status.ok()) status = CheckSourceFiles(key);
   if (!status.ok()) {
-    // The slow path loads the spec and says what is wrong, if anything.
-    if (status.code() != Status::Code::kResourceExhausted) {
-      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
-                   << status.ToString() << "; generating it instead";
-    }
+    LogLine(Tag(slot)) << "not mapping the cached mesh of " << spec << ": "
+                       << status.message();
     return false;
   }
-  budget_.Commit(slot.index());
-  LogLine(tag) << "found the mesh of " << spec << " without generating it";
-  LogBuilt(*created, tag);
-  *built = std::move(created);
-  return true;
+  DatasetOrigin origin;
+  origin.source = spec;
+  origin.crs = std::move(key.crs);
+  origin.simplification = key.simplification;
+  return MapMesh(slot, spec, key.fingerprint, std::move(origin), options,
+                 "by the identity of its files, without reading them", built);
 }
 
 void DatasetBuilder::RecordGenerated(const std::string& spec,
@@ -220,6 +255,32 @@ void DatasetBuilder::RecordGenerated(const std::string& spec,
   const Status status = RecordGeneratedFingerprint(
       options.mesh_cache_dir, generator, cache.fingerprint);
   if (!status.ok()) {
+    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
+                 << status.ToString();
+  }
+}
+
+void DatasetBuilder::RecordSourceKey(const std::string& spec,
+                                     const EngineOptions& options,
+                                     const ServedDataset& served,
+                                     const DatasetInfo& info,
+                                     std::string_view tag) {
+  const MeshCacheOutcome& cache = info.mesh_cache;
+  if (cache.path.empty() || !cache.save_error.empty() || served.files.empty()) {
+    return;
+  }
+  SourceKey key;
+  for (const std::string& file : served.files) {
+    key.files.push_back(IdentifyFile(file));
+  }
+  for (const std::string& file : served.absent_files) {
+    key.files.push_back(IdentifyFile(file));
+  }
+  key.fingerprint = cache.fingerprint;
+  key.crs = info.crs;
+  key.simplification = info.simplification;
+  if (const Status status = WriteSourceKey(options.mesh_cache_dir, spec, key);
+      !status.ok()) {
     LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
                  << status.ToString();
   }

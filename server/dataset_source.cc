@@ -1,10 +1,12 @@
 #include "server/dataset_source.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 #include <utility>
 
 #include "common/gis/crs_info.h"
+#include "common/gis/gdal_support.h"
 #include "common/gis/las/las_dataset.h"
 #include "common/gis/las/las_dataset_spec.h"
 #include "common/gis/ogr_dataset.h"
@@ -19,9 +21,46 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr std::string_view kAuxSuffix = ".aux.xml";
+
 bool IsRegularFile(const std::string& path) {
   std::error_code error;
   return fs::is_regular_file(path, error);
+}
+
+std::string Absolute(const std::string& path) {
+  std::error_code error;
+  const fs::path absolute = fs::absolute(path, error);
+  return error ? path : absolute.lexically_normal().string();
+}
+
+// `paths` made absolute when every one is a local regular file; empty
+// otherwise (the dataset cannot be keyed by its files).
+std::vector<std::string> LocalFiles(const std::vector<std::string>& paths) {
+  std::vector<std::string> files;
+  for (const std::string& path : paths) {
+    if (!IsRegularFile(path)) return {};
+    files.push_back(Absolute(path));
+  }
+  return files;
+}
+
+// The files a text or generator spec reads: its file and that file's
+// companions (a .ele's .node), and for POINTS+PATH.wkt the WKT file besides
+// the points spec's own.
+std::vector<std::string> TextSpecFiles(std::string_view spec) {
+  std::string_view points, wkt;
+  if (SplitWktConstraintsSpec(spec, &points, &wkt)) {
+    std::vector<std::string> files = TextSpecFiles(points);
+    files.emplace_back(wkt);
+    return files;
+  }
+  if (IsGeneratorSpec(spec)) return {};
+  std::vector<std::string> files = {std::string(spec)};
+  for (std::string& companion : DatasetCompanionFiles(std::string(spec))) {
+    files.push_back(std::move(companion));
+  }
+  return files;
 }
 
 TinOptions TinOptionsFor(const gis::SimplifySpec& simplify,
@@ -46,7 +85,9 @@ Status Prefixed(const std::string& spec, const Status& status) {
 Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
                   const ServedLoadOptions& options, ServedDataset* out) {
   ElevationGrid grid;
-  if (Status s = gis::ReadElevationGrid(spec, options.limits, &grid); !s.ok()) {
+  std::vector<std::string> read;
+  if (Status s = gis::ReadElevationGrid(spec, options.limits, &grid, &read);
+      !s.ok()) {
     return s;
   }
   SimplificationStats stats;
@@ -56,7 +97,29 @@ Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
     return Prefixed(grid.source, s);
   }
   out->simplification = stats;
+  out->files = LocalFiles(read);
+  gis::RasterDatasetSpec parsed;
+  if (!out->files.empty() && gis::ParseRasterDatasetSpec(spec, &parsed).ok()) {
+    // GDAL reads an .aux.xml side-car (nodata, scale, CRS) when there is
+    // one: one that appears later changes the dataset.
+    const std::string aux = Absolute(parsed.source + std::string(kAuxSuffix));
+    if (std::find(out->files.begin(), out->files.end(), aux) ==
+        out->files.end()) {
+      out->absent_files.push_back(aux);
+    }
+  }
   return Status::OK();
+}
+
+// The files an OGR spec's source reads, when they are local files.
+std::vector<std::string> OgrFiles(const std::string& spec) {
+  gis::OgrDatasetSpec parsed;
+  std::vector<std::string> files;
+  if (!gis::ParseOgrDatasetSpec(spec, &parsed).ok() ||
+      !gis::VectorFileList(parsed.source, parsed.open_options, &files).ok()) {
+    return {};
+  }
+  return LocalFiles(files);
 }
 
 // Loads the points of `spec` (a kind other than a raster).
@@ -64,10 +127,24 @@ Status LoadPoints(const std::string& whole_spec, const std::string& spec,
                   DatasetKind kind, const DatasetLimits& limits,
                   ServedDataset* out) {
   switch (kind) {
-    case DatasetKind::kLas:
-      return gis::las::LoadLasDataset(spec, &out->dataset, limits);
+    case DatasetKind::kLas: {
+      gis::las::LasDatasetSpec parsed;
+      if (Status s = gis::las::LoadLasDataset(spec, &out->dataset, limits);
+          !s.ok()) {
+        return s;
+      }
+      if (gis::las::ParseLasDatasetSpec(spec, &parsed).ok()) {
+        out->files = LocalFiles({parsed.path});
+      }
+      return Status::OK();
+    }
     case DatasetKind::kOgr:
-      return gis::LoadOgrDataset(spec, &out->dataset, limits);
+      if (Status s = gis::LoadOgrDataset(spec, &out->dataset, limits);
+          !s.ok()) {
+        return s;
+      }
+      out->files = OgrFiles(spec);
+      return Status::OK();
     default: {
       // Text files and generators take no options of their own.
       std::vector<gis::SpecOption> options;
@@ -75,7 +152,11 @@ Status LoadPoints(const std::string& whole_spec, const std::string& spec,
       if (!options.empty()) {
         return gis::UnknownSpecOption(whole_spec, options[0].name, "");
       }
-      return LoadDataset(spec, &out->dataset, limits);
+      if (Status s = LoadDataset(spec, &out->dataset, limits); !s.ok()) {
+        return s;
+      }
+      out->files = LocalFiles(TextSpecFiles(spec));
+      return Status::OK();
     }
   }
 }

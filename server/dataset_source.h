@@ -66,6 +66,13 @@ struct ServedDataset {
   Dataset dataset;
   // The certificate of a simplified dataset; unset otherwise.
   std::optional<SimplificationStats> simplification;
+  // The files it was read from (absolute paths, side-cars included) when
+  // every one is a local file, so that the mesh cache can key the dataset
+  // by their identity; empty otherwise (generators, /vsi sources).
+  std::vector<std::string> files;
+  // Files whose later appearance would change the dataset (a raster's
+  // .aux.xml side-car that does not exist yet), absolute.
+  std::vector<std::string> absent_files;
 };
 
 // Loads the dataset `spec` names into *out (see above). Errors are the

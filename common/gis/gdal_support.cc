@@ -53,4 +53,24 @@ std::vector<std::string> GdalFileList(GDALDataset& dataset) {
   return files;
 }
 
+Status VectorFileList(const std::string& source,
+                      const std::vector<std::string>& open_options,
+                      std::vector<std::string>* files) {
+  RegisterGdalDrivers();
+  std::vector<const char*> options;
+  for (const std::string& option : open_options)
+    options.push_back(option.c_str());
+  options.push_back(nullptr);
+  CPLErrorReset();
+  GDALDatasetUniquePtr dataset(
+      GDALDataset::Open(source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
+                        nullptr, options.data(), nullptr));
+  if (dataset == nullptr) {
+    return Status::InvalidArgument(source +
+                                   ": GDAL cannot open it: " + LastGdalError());
+  }
+  *files = GdalFileList(*dataset);
+  return Status::OK();
+}
+
 }  // namespace locator::gis

@@ -37,6 +37,13 @@ Status UserCrsToWkt(const std::string& crs, std::string* wkt);
 // its side-cars, a VRT's sources), in GDAL's order.
 std::vector<std::string> GdalFileList(GDALDataset& dataset);
 
+// GdalFileList of the vector source `source` opened with `open_options`
+// (NAME=VALUE each), without reading a feature. InvalidArgument with GDAL's
+// message when GDAL cannot open it.
+Status VectorFileList(const std::string& source,
+                      const std::vector<std::string>& open_options,
+                      std::vector<std::string>* files);
+
 }  // namespace locator::gis
 
 #endif  // LOCATOR_COMMON_GIS_GDAL_SUPPORT_H_

@@ -1,6 +1,7 @@
 // LoadServedDataset (server/dataset_source.h): each spec's kind, its parts
-// for the reload policy, the options each kind takes and refuses, a raster
-// always simplified and a point dataset simplified when asked (with the
+// for the reload policy, the files each kind reports for the mesh cache's
+// source keys, the options each kind takes and refuses, a raster always
+// simplified and a point dataset simplified when asked (with the
 // certificate and progress), and a file whose name holds '?' refused.
 
 #include "server/dataset_source.h"
@@ -72,13 +73,16 @@ class DatasetSourceLoadTest : public ::testing::Test {
   test::ScratchDir dir_;
 };
 
-TEST_F(DatasetSourceLoadTest, PointsPlusWktKeepsTheWholeSpecAsSource) {
+TEST_F(DatasetSourceLoadTest, TextFilesReportEveryFileTheyRead) {
   gis::testing::WriteFile(Path("pts.csv"), "0,0,1\n1,0,2\n0,1,3\n1,1,4\n");
   gis::testing::WriteFile(Path("lake.wkt"), "LINESTRING (0.2 0.2, 0.8 0.8)");
   ServedDataset served;
   ASSERT_TRUE(Load(Path("pts.csv") + "+" + Path("lake.wkt"), &served).ok());
+  EXPECT_THAT(served.files, ElementsAre(Path("pts.csv"), Path("lake.wkt")));
   EXPECT_FALSE(served.simplification.has_value());
   EXPECT_EQ(served.dataset.source, Path("pts.csv") + "+" + Path("lake.wkt"));
+  ASSERT_TRUE(Load("uniform:100:2", &served).ok());
+  EXPECT_TRUE(served.files.empty());
 }
 
 TEST_F(DatasetSourceLoadTest, TextAndGeneratorSpecsTakeOnlyTheSimplifyOptions) {
@@ -113,6 +117,8 @@ TEST_F(DatasetSourceLoadTest, ARasterIsAlwaysATinWithItsCertificate) {
   EXPECT_EQ(served.dataset.points.size(), served.simplification->vertices);
   EXPECT_FALSE(served.dataset.constraints.triangles.empty());
   EXPECT_FALSE(served.dataset.crs.empty());
+  EXPECT_THAT(served.files, ElementsAre(Path("dem.tif")));
+  EXPECT_THAT(served.absent_files, ElementsAre(Path("dem.tif.aux.xml")));
 
   // Progress reaches the caller (the server logs it), here at every step.
   std::atomic<int> progress_calls{0};
@@ -148,15 +154,17 @@ TEST_F(DatasetSourceLoadTest, PointsAreThinnedOnlyWhenAsked) {
   EXPECT_EQ(served.simplification->source_samples, 1600u);
   EXPECT_LE(served.simplification->max_error, 0.2);
   EXPECT_LT(served.dataset.points.size(), 100u);
+  EXPECT_THAT(served.files, ElementsAre(Path("plane.csv")));
 }
 
-TEST_F(DatasetSourceLoadTest, LasFilesTakeTheirOptionsAndTheSimplifyOnes) {
+TEST_F(DatasetSourceLoadTest, LasFilesAreKeyedByTheirPath) {
   std::vector<gis::testing::LasPoint> points = {
       {0, 0, 1, 2}, {10, 0, 2, 2}, {0, 10, 3, 2}, {5, 5, 9, 5}};
   gis::testing::WriteLasFile(Path("tile.las"), points);
   ServedDataset served;
   ASSERT_TRUE(Load(Path("tile.las") + "?classes=2", &served).ok());
   EXPECT_EQ(served.dataset.points.size(), 3u);
+  EXPECT_THAT(served.files, ElementsAre(Path("tile.las")));
   const Status status =
       Load(Path("tile.las") + "?classes=2&max_error=x", &served);
   EXPECT_THAT(status.message(),

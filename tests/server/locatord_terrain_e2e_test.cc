@@ -3,14 +3,22 @@
 // points; the CRS as GeoTIFF keys in one and as WKT in the other) served
 // with ?classes=2, and a GeoTIFF DEM served with ?max_error=. Only class-2
 // points become vertices; both CRSs are reported and lon/lat queries get the
-// ground's heights; GetStats carries the DEM's certificate; .laz files and
-// bad rasters stop the start with their reason.
+// ground's heights; GetStats carries the DEM's certificate; a restart with
+// --mesh-cache maps the DEM's mesh by its file's identity without reading
+// the raster (the raster is garbage by then, so a read would fail), and a
+// raster touched since is read again; .laz files and bad rasters stop the
+// start with their reason.
 
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <csignal>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -203,6 +211,72 @@ TEST_F(LocatordTerrainTest, TheDemsCertificateIsInItsStats) {
       }
     }
   }
+}
+
+// Writes `size` zero bytes over the file at `path` in place (same inode, same
+// size) and puts its modification time back.
+void GarbleKeepingIdentity(const std::string& path) {
+  struct stat before;
+  ASSERT_EQ(::stat(path.c_str(), &before), 0);
+  const int fd = ::open(path.c_str(), O_WRONLY);
+  ASSERT_GE(fd, 0);
+  const std::vector<char> zeros(static_cast<size_t>(before.st_size), 0);
+  ASSERT_EQ(::pwrite(fd, zeros.data(), zeros.size(), 0),
+            static_cast<ssize_t>(zeros.size()));
+  const struct timespec times[2] = {before.st_atim, before.st_mtim};
+  ASSERT_EQ(::futimens(fd, times), 0);
+  ::close(fd);
+}
+
+TEST_F(LocatordTerrainTest, ARestartMapsTheDemsMeshWithoutReadingTheRaster) {
+  ScratchDir own, cache;
+  const std::string dem = own.path() + "/dem.tif";
+  gis::testing::WriteDem(dem, *dem_);
+  const std::vector<std::string> flags = {"--mesh-cache", cache.path()};
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(DemSpec(dem), flags, &server).ok());
+  const v1::DatasetStats first = GetStats(*NewStub(*server)).dataset();
+  EXPECT_FALSE(first.mesh_cache().mapped());
+  ASSERT_TRUE(first.has_simplification());
+  server->SendSignal(SIGTERM);
+  ASSERT_EQ(server->WaitForExit(kExitTimeout), 0);
+
+  // Same inode, size and mtime, but no raster any more: reading it fails.
+  GarbleKeepingIdentity(dem);
+  ASSERT_TRUE(StartLocatord(DemSpec(dem), flags, &server).ok());
+  auto stub = NewStub(*server);
+  const v1::DatasetStats mapped = GetStats(*stub).dataset();
+  EXPECT_TRUE(mapped.mesh_cache().mapped());
+  EXPECT_EQ(mapped.simplification().SerializeAsString(),
+            first.simplification().SerializeAsString());
+  EXPECT_EQ(mapped.crs().epsg_code(), 32633u);
+  EXPECT_EQ(mapped.vertices(), first.vertices());
+  EXPECT_THAT(server->StderrText(),
+              HasSubstr("found the mesh of " + DemSpec(dem) +
+                        " by the identity of its files, without reading "
+                        "them"));
+  EXPECT_THAT(server->StderrText(),
+              ::testing::Not(HasSubstr("loading dataset")));
+  v1::LocateResponse response;
+  ASSERT_TRUE(LocateOne(*stub, PixelCentre(20, 20), &response).ok());
+  EXPECT_NEAR(response.value(), PixelValue(20, 20), kMaxError);
+  server->SendSignal(SIGTERM);
+  ASSERT_EQ(server->WaitForExit(kExitTimeout), 0);
+
+  // Touched: the key no longer applies, the raster is read, and it is
+  // garbage now.
+  ASSERT_EQ(::utimensat(AT_FDCWD, dem.c_str(), nullptr, 0), 0);
+  ASSERT_TRUE(ServerProcess::Spawn(LOCATORD_PATH,
+                                   {"--dataset", DemSpec(dem), "--mesh-cache",
+                                    cache.path(), "--listen", "127.0.0.1:0"},
+                                   &server)
+                  .ok());
+  EXPECT_EQ(server->WaitForExit(kExitTimeout), 1);
+  EXPECT_THAT(server->StderrText(),
+              HasSubstr("not mapping the cached mesh of " + DemSpec(dem) +
+                        ": " + dem + " changed since the mesh was built"));
+  EXPECT_THAT(server->StderrText(),
+              HasSubstr(dem + ": GDAL cannot open it as a raster"));
 }
 
 TEST(LocatordTerrainStartupTest, CompressedLasAndBadRastersStopTheStart) {
