@@ -9,17 +9,15 @@ Status CertifyGridTin(const ElevationGrid& grid, const TinOptions& options,
                       TinMesh* mesh, double* certified) {
   const GridRegion whole{
       GridRect{0, 0, grid.width - int64_t{1}, grid.height - int64_t{1}}};
-  GridRefiner refiner(grid, mesh, GridMetric::kServed, whole);
+  GridRefiner refiner(grid, mesh, GridMetric::kServed, whole,
+                      options.max_error);
   refiner.ScanAll(threads);
-  progress->Update(0, mesh->num_vertices(), refiner.max_error());
   // The samples left beyond the target differ from the build's measure by
   // rounding only: usually none, a few at most.
-  if (Status s =
-          refiner.Refine(options.max_error, options.max_points, progress, 0);
-      !s.ok()) {
+  if (Status s = refiner.Refine(options.max_points, progress, 0); !s.ok()) {
     return s;
   }
-  *certified = refiner.max_error();
+  *certified = refiner.MaxError();
   return Status::OK();
 }
 

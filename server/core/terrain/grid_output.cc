@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +59,42 @@ void StartOutput(const ElevationGrid& grid, Dataset* out) {
 
 }  // namespace
 
+void SortRowMajor(const ElevationGrid& grid, TinMesh* mesh) {
+  // Vertices by sample index.
+  std::vector<std::pair<uint64_t, uint32_t>> samples(mesh->num_vertices());
+  for (uint32_t v = 0; v < samples.size(); ++v) {
+    const Point2& p = mesh->point(v);
+    samples[v] = {
+        static_cast<uint64_t>(p.y) * grid.width + static_cast<uint64_t>(p.x),
+        v};
+  }
+  std::sort(samples.begin(), samples.end());
+  std::vector<uint32_t> vertices(samples.size());
+  std::vector<uint32_t> rank(samples.size());
+  for (uint32_t k = 0; k < samples.size(); ++k) {
+    vertices[k] = samples[k].second;
+    rank[samples[k].second] = k;
+  }
+  decltype(samples)().swap(samples);
+  // Triangles by their first corner in that order, then by index: sorting
+  // (first << 32 | index) does both.
+  std::vector<uint64_t> keyed(mesh->num_triangles());
+  for (uint32_t t = 0; t < keyed.size(); ++t) {
+    const uint32_t first =
+        std::min({rank[mesh->Corner(t, 0)], rank[mesh->Corner(t, 1)],
+                  rank[mesh->Corner(t, 2)]});
+    keyed[t] = (uint64_t{first} << 32) | t;
+  }
+  std::vector<uint32_t>().swap(rank);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> triangles(keyed.size());
+  for (size_t k = 0; k < keyed.size(); ++k) {
+    triangles[k] = static_cast<uint32_t>(keyed[k]);
+  }
+  std::vector<uint64_t>().swap(keyed);
+  mesh->Renumber(vertices, triangles);
+}
+
 Status WriteGridTin(const ElevationGrid& grid, const TinMesh& mesh,
                     Dataset* out) {
   if (Status s = CheckSize(mesh.num_vertices(), mesh.num_triangles());
@@ -65,32 +102,20 @@ Status WriteGridTin(const ElevationGrid& grid, const TinMesh& mesh,
     return s;
   }
   StartOutput(grid, out);
-  // Vertices in row-major order of their samples.
-  std::vector<std::pair<uint64_t, uint32_t>> order(mesh.num_vertices());
+  out->points.reserve(mesh.num_vertices());
+  out->values.reserve(mesh.num_vertices());
   for (uint32_t v = 0; v < mesh.num_vertices(); ++v) {
     const Point2& p = mesh.point(v);
-    order[v] = {
-        static_cast<uint64_t>(p.y) * grid.width + static_cast<uint64_t>(p.x),
-        v};
-  }
-  std::sort(order.begin(), order.end());
-  std::vector<uint32_t> id(mesh.num_vertices());
-  out->points.reserve(order.size());
-  out->values.reserve(order.size());
-  for (const auto& [sample, v] : order) {
-    id[v] = static_cast<uint32_t>(out->points.size());
-    const auto col = static_cast<uint32_t>(sample % grid.width);
-    const auto row = static_cast<uint32_t>(sample / grid.width);
+    const auto col = static_cast<uint32_t>(p.x);
+    const auto row = static_cast<uint32_t>(p.y);
     out->points.push_back(grid.SampleAt(col, row));
     out->values.push_back(grid.ValueAt(col, row));
   }
-  std::vector<std::pair<uint64_t, uint32_t>>().swap(order);
   const bool mirrors = OutputMirrors(grid);
   out->constraints.triangles.reserve(mesh.num_triangles());
   for (uint32_t t = 0; t < mesh.num_triangles(); ++t) {
-    if (Status s =
-            AddTriangle(grid, mirrors, id[mesh.Corner(t, 0)],
-                        id[mesh.Corner(t, 1)], id[mesh.Corner(t, 2)], out);
+    if (Status s = AddTriangle(grid, mirrors, mesh.Corner(t, 0),
+                               mesh.Corner(t, 1), mesh.Corner(t, 2), out);
         !s.ok()) {
       return s;
     }

@@ -16,8 +16,15 @@
 
 namespace locator {
 
-// Writes `mesh`, whose vertices are samples of `grid` in grid coordinates,
-// into *out (crs and source from the grid). InvalidArgument if it has more
+// Renumbers `mesh`, whose vertices are samples of `grid` in grid
+// coordinates, in row-major order of its vertices, and its triangles by
+// their first corner in that order: a scan of the triangles then reads the
+// grid nearly in order.
+void SortRowMajor(const ElevationGrid& grid, TinMesh* mesh);
+
+// Writes `mesh`, whose vertices are samples of `grid` in grid coordinates
+// in row-major order (SortRowMajor), into *out (crs and source from the
+// grid). InvalidArgument if it has more
 // vertices or triangles than a serving mesh holds, or if placing the
 // samples in dataset coordinates rounds a triangle flat (a step too small
 // for the origin's magnitude).

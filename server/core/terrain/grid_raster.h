@@ -62,6 +62,10 @@ struct EdgeFunction {
   int64_t At(int64_t x, int64_t y) const { return a * x + b * y + k0; }
 };
 
+// Triangles whose bounding box holds at most this many samples are
+// scanned sample by sample, without the divisions of the row bounds.
+inline constexpr int64_t kSmallBox = 64;
+
 // Calls visit(row, first, last) for each row holding samples of the
 // counter-clockwise triangle `c`, with first <= last the columns of its
 // run. The closed triangle's samples, but those on edge i (from corner i
@@ -74,6 +78,40 @@ void ForEachRun(const std::array<GridPoint, 3>& c, std::array<bool, 3> open,
   const int64_t x_max = std::max({c[0].x, c[1].x, c[2].x});
   const int64_t y_min = std::min({c[0].y, c[1].y, c[2].y});
   const int64_t y_max = std::max({c[0].y, c[1].y, c[2].y});
+  const auto trim_corners = [&](int64_t y, int64_t* first, int64_t* last) {
+    // A corner is an extreme point: it ends its row's run.
+    for (const GridPoint& corner : c) {
+      if (corner.y != y) continue;
+      if (corner.x == *first) {
+        ++*first;
+      } else if (corner.x == *last) {
+        --*last;
+      }
+    }
+  };
+  if ((x_max - x_min + 1) * (y_max - y_min + 1) <= kSmallBox) {
+    // A small triangle: test each sample of its box, no division.
+    const std::array<EdgeFunction, 3> edges = {EdgeFunction(c[0], c[1]),
+                                               EdgeFunction(c[1], c[2]),
+                                               EdgeFunction(c[2], c[0])};
+    for (int64_t y = y_min; y <= y_max; ++y) {
+      int64_t first = x_max + 1;
+      int64_t last = x_min - 1;
+      for (int64_t x = x_min; x <= x_max; ++x) {
+        bool inside = true;
+        for (int i = 0; i < 3; ++i) {
+          const int64_t w = edges[i].At(x, y);
+          inside &= open[i] ? w > 0 : w >= 0;
+        }
+        if (!inside) continue;
+        first = std::min(first, x);
+        last = x;
+      }
+      if (skip_corners) trim_corners(y, &first, &last);
+      if (first <= last) visit(y, first, last);
+    }
+    return;
+  }
   // Inside edge i: a x + k(y) >= 0 (> 0 when open). With a > 0 that bounds
   // the run's first column, with a < 0 its last, with a = 0 the whole row.
   enum class Kind { kFirst, kLast, kRow };
@@ -126,17 +164,7 @@ void ForEachRun(const std::array<GridPoint, 3>& c, std::array<bool, 3> open,
           break;
       }
     }
-    if (skip_corners) {
-      // A corner is an extreme point: it ends its row's run.
-      for (const GridPoint& corner : c) {
-        if (corner.y != y) continue;
-        if (corner.x == first) {
-          ++first;
-        } else if (corner.x == last) {
-          --last;
-        }
-      }
-    }
+    if (skip_corners) trim_corners(y, &first, &last);
     if (first <= last) visit(y, first, last);
   }
 }

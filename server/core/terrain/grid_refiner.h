@@ -32,6 +32,7 @@
 #include "common/status.h"
 #include "server/core/terrain/grid_domain.h"
 #include "server/core/terrain/grid_error.h"
+#include "server/core/terrain/pod_array.h"
 #include "server/core/terrain/tin_mesh.h"
 #include "server/core/terrain/tin_progress.h"
 #include "server/core/terrain/triangle_queue.h"
@@ -49,22 +50,26 @@ struct GridRegion {
 
 class GridRefiner {
  public:
-  // Refines `mesh` (which must outlive this) over `region` of `grid`.
+  // Refines `mesh` (which must outlive this) over `region` of `grid` until
+  // every sample is within `target` of the surface.
   GridRefiner(const ElevationGrid& grid, TinMesh* mesh, GridMetric metric,
-              const GridRegion& region);
+              const GridRegion& region, double target);
 
-  // Measures every triangle, with up to `threads` threads, and queues it.
+  // Measures every triangle, with up to `threads` threads; queues those
+  // with a sample beyond the target.
   void ScanAll(unsigned threads);
-  // Inserts the worst sample while the largest error exceeds `target` and
-  // the mesh has fewer than max_vertices vertices (0: no limit), reporting
-  // to progress slot `slot` every few hundred insertions. Internal if an
+  // Inserts the worst sample while one lies beyond the target and the mesh
+  // has fewer than max_vertices vertices (0: no limit), reporting to
+  // progress slot `slot` every few hundred insertions. Internal if an
   // insertion fails (the mesh is corrupt: a bug).
-  Status Refine(double target, uint64_t max_vertices,
-                TinProgressReporter* progress, size_t slot);
+  Status Refine(uint64_t max_vertices, TinProgressReporter* progress,
+                size_t slot);
   // The largest error of any triangle now; 0 if none has a sample left.
-  double max_error() const { return queue_.empty() ? 0.0 : queue_.TopError(); }
+  // O(1) while a sample lies beyond the target, O(triangles) after.
+  double MaxError() const;
   size_t MemoryBytes() const {
-    return candidate_.capacity() * sizeof(uint64_t) + queue_.MemoryBytes();
+    return candidate_.capacity() * sizeof(uint64_t) +
+           error_.capacity() * sizeof(double) + queue_.MemoryBytes();
   }
 
  private:
@@ -72,16 +77,23 @@ class GridRefiner {
   // Whether edge i of t lies on a cut line (and is thus fixed).
   bool OnCut(uint32_t t, int i) const;
   WorstSample Measure(uint32_t t) const;
-  // Measures t and queues it (or keeps it out of the queue if no sample is
-  // off its surface).
+  // Hints that the grid rows a small triangle t covers are about to be
+  // read.
+  void PrefetchRows(uint32_t t) const;
+  // Measures t, and queues it if its error exceeds the target (else keeps
+  // it out of the queue).
   void Rescan(uint32_t t);
 
   const ElevationGrid& grid_;
   TinMesh* const mesh_;
   const GridMetric metric_;
   const GridRegion region_;
-  // The worst sample of each triangle (WorstSample::kNone if none).
-  std::vector<uint64_t> candidate_;
+  const bool has_cuts_;
+  const double target_;
+  // The worst sample of each triangle (WorstSample::kNone if none) and its
+  // error; only triangles whose error exceeds the target are queued.
+  PodArray<uint64_t> candidate_;
+  PodArray<double> error_;
   TriangleQueue queue_;
 };
 

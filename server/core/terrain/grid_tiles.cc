@@ -155,10 +155,11 @@ Status BuildTiled(const ElevationGrid& grid, const CellMask& mask,
         if (tile.region.rect.OnBorder(p)) border.push_back(p);
       }
       BuildRegionMesh(mask, tile.region.rect, border, &tile.mesh);
-      GridRefiner refiner(grid, &tile.mesh, GridMetric::kPlane, tile.region);
+      GridRefiner refiner(grid, &tile.mesh, GridMetric::kPlane, tile.region,
+                          options.max_error);
       refiner.ScanAll(1);
-      tile.status = refiner.Refine(options.max_error, 0, progress, k);
-      tile.max_error = refiner.max_error();
+      tile.status = refiner.Refine(0, progress, k);
+      tile.max_error = refiner.MaxError();
     }
   };
   std::vector<std::thread> helpers;

@@ -1,5 +1,8 @@
 #include "server/core/terrain/tin_mesh.h"
 
+#include <utility>
+#include <vector>
+
 #include "server/core/circle.h"
 
 namespace locator {
@@ -44,42 +47,40 @@ bool TinMesh::InCircle(uint32_t a, uint32_t b, uint32_t c, uint32_t d) const {
 
 uint32_t TinMesh::AddTriangle(uint32_t a, uint32_t b, uint32_t c, uint8_t tag) {
   const auto t = static_cast<uint32_t>(num_triangles());
-  corners_.push_back(a);
-  corners_.push_back(b);
-  corners_.push_back(c);
-  for (int i = 0; i < 3; ++i) twins_.push_back(kNoTwin | kConstrainedBit);
-  tags_.push_back(tag);
-  stamps_.push_back(0);
+  constexpr uint32_t kBoundary = kNoTwin | kConstrainedBit;
+  records_.push_back(
+      Record{{a, b, c}, {kBoundary, kBoundary, kBoundary}, 0, tag});
   return t;
 }
 
 void TinMesh::Link(uint32_t h, uint32_t g) {
-  twins_[h] = g;
-  twins_[g] = h;
+  RawTwin(h) = g;
+  RawTwin(g) = h;
 }
 
 void TinMesh::Constrain(uint32_t h) {
-  twins_[h] |= kConstrainedBit;
-  if (Twin(h) != kNoTwin) twins_[Twin(h)] |= kConstrainedBit;
+  RawTwin(h) |= kConstrainedBit;
+  if (Twin(h) != kNoTwin) RawTwin(Twin(h)) |= kConstrainedBit;
 }
 
 void TinMesh::Touch(uint32_t t) {
-  if (stamps_[t] == stamp_) return;
-  stamps_[t] = stamp_;
+  if (records_[t].stamp == stamp_) return;
+  records_[t].stamp = stamp_;
   touched_.push_back(t);
 }
 
 uint32_t TinMesh::SetTriangle(uint32_t t, uint32_t a, uint32_t b, uint32_t c,
                               std::array<uint32_t, 3> twins, uint8_t tag) {
-  corners_[3 * t] = a;
-  corners_[3 * t + 1] = b;
-  corners_[3 * t + 2] = c;
-  tags_[t] = tag;
+  Record& record = records_[t];
+  record.corner[0] = a;
+  record.corner[1] = b;
+  record.corner[2] = c;
+  record.tag = tag;
   for (uint32_t i = 0; i < 3; ++i) {
-    twins_[3 * t + i] = twins[i];
+    record.twin[i] = twins[i];
     const uint32_t twin = twins[i] & kTwinMask;
     if (twin != kNoTwin) {
-      twins_[twin] = (3 * t + i) | (twins[i] & kConstrainedBit);
+      RawTwin(twin) = (3 * t + i) | (twins[i] & kConstrainedBit);
     }
   }
   Touch(t);
@@ -108,16 +109,17 @@ bool TinMesh::Insert(uint32_t v, uint32_t t) {
 
 void TinMesh::InsertInTriangle(uint32_t v, uint32_t t) {
   const uint32_t a = Corner(t, 0), b = Corner(t, 1), c = Corner(t, 2);
-  const uint32_t ab = Raw(3 * t), bc = Raw(3 * t + 1), ca = Raw(3 * t + 2);
-  const uint8_t tag = tags_[t];
+  const uint32_t ab = RawTwin(3 * t), bc = RawTwin(3 * t + 1),
+                 ca = RawTwin(3 * t + 2);
+  const uint8_t t_tag = tag(t);
   const auto t1 = static_cast<uint32_t>(num_triangles());
   const uint32_t t2 = t1 + 1;
   // The new triangles exist before any twin points at them.
-  AddTriangle(b, c, v, tag);
-  AddTriangle(c, a, v, tag);
-  SetTriangle(t, a, b, v, {ab, 3 * t1 + 2, 3 * t2 + 1}, tag);
-  SetTriangle(t1, b, c, v, {bc, 3 * t2 + 2, 3 * t + 1}, tag);
-  SetTriangle(t2, c, a, v, {ca, 3 * t + 2, 3 * t1 + 1}, tag);
+  AddTriangle(b, c, v, t_tag);
+  AddTriangle(c, a, v, t_tag);
+  SetTriangle(t, a, b, v, {ab, 3 * t1 + 2, 3 * t2 + 1}, t_tag);
+  SetTriangle(t1, b, c, v, {bc, 3 * t2 + 2, 3 * t + 1}, t_tag);
+  SetTriangle(t2, c, a, v, {ca, 3 * t + 2, 3 * t1 + 1}, t_tag);
   Legalize(3 * t);
   Legalize(3 * t1);
   Legalize(3 * t2);
@@ -127,10 +129,10 @@ void TinMesh::InsertOnEdge(uint32_t v, uint32_t h) {
   // t = (a, b, c) with h = a -> b; its twin g = b -> a in u = (b, a, d).
   const uint32_t t = TriangleOf(h);
   const uint32_t a = Origin(h), b = Origin(Next(h)), c = Origin(Prev(h));
-  const uint32_t bc = Raw(Next(h)), ca = Raw(Prev(h));
-  const uint32_t cut = twins_[h] & kConstrainedBit;
+  const uint32_t bc = RawTwin(Next(h)), ca = RawTwin(Prev(h));
+  const uint32_t cut = RawTwin(h) & kConstrainedBit;
   const uint32_t g = Twin(h);
-  const uint8_t t_tag = tags_[t];
+  const uint8_t t_tag = tag(t);
   const auto t1 = static_cast<uint32_t>(num_triangles());
   AddTriangle(c, v, b, t_tag);
   if (g == kNoTwin) {
@@ -143,8 +145,8 @@ void TinMesh::InsertOnEdge(uint32_t v, uint32_t h) {
   }
   const uint32_t u = TriangleOf(g);
   const uint32_t d = Origin(Prev(g));
-  const uint32_t ad = Raw(Next(g)), db = Raw(Prev(g));
-  const uint8_t u_tag = tags_[u];
+  const uint32_t ad = RawTwin(Next(g)), db = RawTwin(Prev(g));
+  const uint8_t u_tag = tag(u);
   const uint32_t u1 = t1 + 1;
   AddTriangle(d, v, a, u_tag);
   SetTriangle(t, c, a, v, {ca, (3 * u1 + 1) | cut, 3 * t1}, t_tag);
@@ -175,36 +177,62 @@ void TinMesh::Legalize(uint32_t start) {
     if (Orient(r, p, s) != Side::kLeft || Orient(s, q, r) != Side::kLeft) {
       continue;
     }
-    const uint32_t rp = Raw(Prev(h)), qr = Raw(Next(h));
-    const uint32_t ps = Raw(Next(g)), sq = Raw(Prev(g));
-    SetTriangle(t, r, p, s, {rp, ps, 3 * u + 2}, tags_[t]);
-    SetTriangle(u, s, q, r, {sq, qr, 3 * t + 2}, tags_[u]);
+    const uint32_t rp = RawTwin(Prev(h)), qr = RawTwin(Next(h));
+    const uint32_t ps = RawTwin(Next(g)), sq = RawTwin(Prev(g));
+    SetTriangle(t, r, p, s, {rp, ps, 3 * u + 2}, tag(t));
+    SetTriangle(u, s, q, r, {sq, qr, 3 * t + 2}, tag(u));
     pending_.push_back(3 * t + 1);  // p -> s, opposite r
     pending_.push_back(3 * u);      // s -> q, opposite r
   }
 }
 
+void TinMesh::Renumber(std::span<const uint32_t> vertex_order,
+                       std::span<const uint32_t> triangle_order) {
+  std::vector<uint32_t> vertex_index(points_.size());
+  PodArray<Point2> points;
+  points.reserve(points_.size());
+  for (uint32_t k = 0; k < vertex_order.size(); ++k) {
+    vertex_index[vertex_order[k]] = k;
+    points.push_back(points_[vertex_order[k]]);
+  }
+  points_ = std::move(points);
+  std::vector<uint32_t> triangle_index(records_.size());
+  for (uint32_t k = 0; k < triangle_order.size(); ++k) {
+    triangle_index[triangle_order[k]] = k;
+  }
+  PodArray<Record> records;
+  records.reserve(records_.size());
+  for (const uint32_t old : triangle_order) {
+    Record r = records_[old];
+    for (int i = 0; i < 3; ++i) {
+      r.corner[i] = vertex_index[r.corner[i]];
+      const uint32_t twin = r.twin[i] & kTwinMask;
+      if (twin != kNoTwin) {
+        r.twin[i] = (3 * triangle_index[twin / 3] + twin % 3) |
+                    (r.twin[i] & kConstrainedBit);
+      }
+    }
+    r.stamp = 0;
+    records.push_back(r);
+  }
+  records_ = std::move(records);
+  touched_.clear();
+  stamp_ = 0;
+}
+
 void TinMesh::ShrinkToFit() {
   points_.shrink_to_fit();
-  corners_.shrink_to_fit();
-  twins_.shrink_to_fit();
-  tags_.shrink_to_fit();
-  stamps_.shrink_to_fit();
+  records_.shrink_to_fit();
 }
 
 void TinMesh::Reserve(size_t triangles, size_t vertices) {
   points_.reserve(vertices);
-  corners_.reserve(3 * triangles);
-  twins_.reserve(3 * triangles);
-  tags_.reserve(triangles);
-  stamps_.reserve(triangles);
+  records_.reserve(triangles);
 }
 
 size_t TinMesh::MemoryBytes() const {
   return points_.capacity() * sizeof(Point2) +
-         (corners_.capacity() + twins_.capacity() + stamps_.capacity()) *
-             sizeof(uint32_t) +
-         tags_.capacity();
+         records_.capacity() * sizeof(Record);
 }
 
 }  // namespace locator

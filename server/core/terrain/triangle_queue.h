@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "server/core/terrain/pod_array.h"
+
 namespace locator {
 
 class TriangleQueue {
@@ -106,17 +108,17 @@ class TriangleQueue {
       errors_[i] = errors_[last];
       position_[heap_[i]] = static_cast<uint32_t>(i);
     }
-    heap_.pop_back();
-    errors_.pop_back();
+    heap_.resize(last);
+    errors_.resize(last);
     if (i < heap_.size()) {
       Up(i);
       Down(i);
     }
   }
 
-  std::vector<uint32_t> heap_;
-  std::vector<double> errors_;
-  std::vector<uint32_t> position_;
+  PodArray<uint32_t> heap_;
+  PodArray<double> errors_;
+  PodArray<uint32_t> position_;
 };
 
 }  // namespace locator

@@ -82,9 +82,9 @@ Status BuildOneRegion(const ElevationGrid& grid, const CellMask& mask,
         "; the domain's boundary alone needs " +
         std::to_string(mesh->num_vertices()) + " vertices");
   }
-  GridRefiner refiner(grid, mesh, GridMetric::kPlane, whole);
+  GridRefiner refiner(grid, mesh, GridMetric::kPlane, whole, options.max_error);
   refiner.ScanAll(1);
-  return refiner.Refine(options.max_error, options.max_points, progress, 0);
+  return refiner.Refine(options.max_points, progress, 0);
 }
 
 }  // namespace
@@ -124,10 +124,15 @@ Status TriangulateGrid(const ElevationGrid& grid, const TinOptions& options,
     s = plan.tiles() > 1
             ? BuildTiled(grid, mask, options, plan, threads, &progress, &mesh)
             : BuildOneRegion(grid, mask, options, &progress, &mesh);
+    // In row-major order the certificate's scan reads the grid in order.
+    if (s.ok()) SortRowMajor(grid, &mesh);
+    const size_t built = mesh.num_vertices();
     if (s.ok()) {
       s = CertifyGridTin(grid, options, threads, &progress, &mesh,
                          &stats->max_error);
     }
+    // Vertices the certificate inserted were appended.
+    if (s.ok() && mesh.num_vertices() != built) SortRowMajor(grid, &mesh);
     if (s.ok()) s = WriteGridTin(grid, mesh, out);
   }
   if (!s.ok()) return s;
