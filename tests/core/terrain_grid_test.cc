@@ -29,6 +29,7 @@ using test::InGridDomain;
 using test::MeasureServed;
 using test::RoundingTolerance;
 using test::ServedErrors;
+using test::WithError;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
@@ -62,13 +63,6 @@ void CutDisc(ElevationGrid* grid, double cx, double cy, double radius) {
       }
     }
   }
-}
-
-TinOptions WithError(double max_error, unsigned threads = 1) {
-  TinOptions options;
-  options.max_error = max_error;
-  options.threads = threads;
-  return options;
 }
 
 // Builds the TIN and checks its certificate against the engine's answers

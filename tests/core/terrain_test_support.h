@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -15,6 +16,7 @@
 #include "common/dataset.h"
 #include "common/elevation_grid.h"
 #include "server/core/engine.h"
+#include "server/core/terrain/tin_options.h"
 
 namespace locator::test {
 
@@ -81,6 +83,41 @@ inline ServedErrors MeasureServed(const ElevationGrid& grid,
     }
   }
   return result;
+}
+
+// What the engine serving `tin` answers at every point of `in`: the largest
+// error over those it serves, and how many it does not.
+struct ServedAtPoints {
+  double max_error = 0;
+  uint64_t unserved = 0;
+};
+
+inline ServedAtPoints MeasureServedAtPoints(const Dataset& in,
+                                            const Dataset& tin) {
+  ServedAtPoints served;
+  std::unique_ptr<Engine> engine;
+  const Status s = Engine::Create(tin, EngineOptions(), &engine);
+  EXPECT_TRUE(s.ok()) << s.ToString();
+  if (!s.ok()) return served;
+  for (size_t i = 0; i < in.points.size(); ++i) {
+    LocateResult r;
+    EXPECT_TRUE(engine->Locate(in.points[i], &r).ok());
+    if (!r.has_value) {
+      ++served.unserved;
+      continue;
+    }
+    served.max_error =
+        std::max(served.max_error, std::abs(in.values[i] - r.value));
+  }
+  return served;
+}
+
+// Options asking for `max_error` on `threads` threads.
+inline TinOptions WithError(double max_error, unsigned threads = 1) {
+  TinOptions options;
+  options.max_error = max_error;
+  options.threads = threads;
+  return options;
 }
 
 // The rounding the certificate and the engine may differ by: a few ulps of
