@@ -4,7 +4,7 @@
 //
 // The domain is the input's own (its convex hull, or its rings and .poly
 // segments and holes, as Triangulation::Build defines it). Kept: every
-// vertex of the convex hull, every constraint vertex (breaklines, rings,
+// corner of the convex hull, every constraint vertex (breaklines, rings,
 // segments, and the vertices CGAL adds where constraints cross), and the
 // points greedy insertion picks, one at a time, farthest from the surface
 // first, keeping the triangulation constrained Delaunay. Kept points are
@@ -12,9 +12,19 @@
 // one vertex (the first one's value, as the engine merges them); the
 // others count in the certificate at their own values.
 //
-// Output: `out` gets the kept points and their values, the input's crs and
-// source, and the TIN as constraints.triangles (the in-domain triangles):
-// the served mesh is exactly the surface the certificate measured.
+// The certificate: stats->max_error is measured after the build at every
+// served point with the engine's interpolation (Barycentric, or
+// EdgeBarycentric on an edge; a vertex's own value), and any point found
+// beyond max_error (a rounding difference from the build's measure) is
+// inserted too. Points outside the domain (in a hole) are unserved. With
+// max_error 0 only points exactly on the surface of the others are
+// dropped. It runs on one thread (options.threads is not used).
+//
+// Output: `out` gets the kept points (in input order, then points of the
+// constraints that are not dataset points) and their values, the input's
+// crs and source, and the TIN as constraints.triangles (the in-domain
+// triangles): the served mesh is exactly the surface the certificate
+// measured.
 // Breaklines and rings become mesh edges, so their segments are kept, but
 // they are no longer reported as breaklines.
 //
