@@ -7,6 +7,7 @@
 #include <thread>
 #include <utility>
 
+#include "server/build_heartbeat.h"
 #include "server/core/dataset.h"
 #include "server/dataset_source.h"
 #include "server/server_log.h"
@@ -66,13 +67,8 @@ void LogBuilt(const Engine& engine, std::string_view tag) {
   LogTuningState(engine, tag);
 }
 
-// Logs a build's progress (TinProgress) every few seconds while it runs.
-std::function<void(const TinProgress&)> ProgressLogger(std::string_view tag) {
-  return [tag](const TinProgress& p) {
-    LogLine(tag) << "simplifying: " << p.vertices << " vertices after "
-                 << p.seconds << " s; largest error left " << p.max_error;
-  };
-}
+// How often a build says what it is doing (at least every 5 s).
+constexpr std::chrono::seconds kProgressInterval{4};
 
 // Says what a simplification made of its source (the certificate).
 void LogSimplified(const SimplificationStats& s, std::string_view tag) {
@@ -133,11 +129,16 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   }
   LogLine(tag) << "loading dataset " << spec;
   const auto load_start = std::chrono::steady_clock::now();
+  BuildHeartbeat heartbeat(
+      [tag](const std::string& line) { LogLine(tag) << line; },
+      kProgressInterval);
   ServedLoadOptions load;
   load.limits = config_.dataset_limits;
   load.limits.max_points = budget_.Available(slot.index());
   load.threads = std::max(1u, std::thread::hardware_concurrency());
-  load.progress = ProgressLogger(tag);
+  load.progress = [&heartbeat](const TinProgress& p) { heartbeat.Report(p); };
+  load.progress_interval_s =
+      std::chrono::duration<double>(kProgressInterval).count();
   ServedDataset served;
   Status status = LoadServedDataset(spec, load, &served);
   if (status.ok()) {
@@ -157,6 +158,7 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   LogLine(tag) << "loaded " << served.dataset.points.size() << " points in "
                << SecondsSince(load_start) << " s; building the serving mesh";
   if (served.simplification) LogSimplified(*served.simplification, tag);
+  heartbeat.SetPhase("building the serving mesh");
   std::unique_ptr<Engine> created;
   status =
       served.simplification

@@ -1,7 +1,8 @@
 // DatasetBuilder: how locatord builds the engine of one of its datasets, at
 // startup and on every reload: it loads the spec (LoadServedDataset; a
-// raster or a dataset given max_error is simplified then, its progress
-// logged every few seconds), bounded by the datasets' shared point budget
+// raster or a dataset given max_error is simplified then; a BuildHeartbeat
+// logs what the build is doing every 4 s), bounded by the datasets' shared
+// point budget
 // (--max-dataset-points is a total over all of them, see PointBudget; a
 // successful build is published right after Build() returns, so it commits
 // its points then), and triangulates it with the engine options, logging
