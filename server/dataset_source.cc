@@ -21,8 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kAuxSuffix = ".aux.xml";
-
 bool IsRegularFile(const std::string& path) {
   std::error_code error;
   return fs::is_regular_file(path, error);
@@ -99,13 +97,23 @@ Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
   out->simplification = stats;
   out->files = LocalFiles(read);
   gis::RasterDatasetSpec parsed;
-  if (!out->files.empty() && gis::ParseRasterDatasetSpec(spec, &parsed).ok()) {
-    // GDAL reads an .aux.xml side-car (nodata, scale, CRS) when there is
-    // one: one that appears later changes the dataset.
-    const std::string aux = Absolute(parsed.source + std::string(kAuxSuffix));
-    if (std::find(out->files.begin(), out->files.end(), aux) ==
-        out->files.end()) {
-      out->absent_files.push_back(aux);
+  if (out->files.empty() || !gis::ParseRasterDatasetSpec(spec, &parsed).ok()) {
+    return Status::OK();
+  }
+  // GDAL reads these side-cars when they exist (nodata, scale and CRS in an
+  // .aux.xml, a mask, a .prj, a world file): one that appears later
+  // changes the dataset.
+  const fs::path source = Absolute(parsed.source);
+  fs::path stem = source;
+  stem.replace_extension();
+  for (const fs::path& side_car :
+       {fs::path(source.string() + ".aux.xml"),
+        fs::path(source.string() + ".msk"), fs::path(stem.string() + ".prj"),
+        fs::path(stem.string() + ".wld"), fs::path(stem.string() + ".tfw")}) {
+    if (std::find(out->files.begin(), out->files.end(), side_car.string()) ==
+            out->files.end() &&
+        !fs::exists(side_car)) {
+      out->absent_files.push_back(side_car.string());
     }
   }
   return Status::OK();

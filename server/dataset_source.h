@@ -71,7 +71,8 @@ struct ServedDataset {
   // by their identity; empty otherwise (generators, /vsi sources).
   std::vector<std::string> files;
   // Files whose later appearance would change the dataset (a raster's
-  // .aux.xml side-car that does not exist yet), absolute.
+  // side-cars that do not exist yet: .aux.xml, .msk, .prj, .wld, .tfw),
+  // absolute.
   std::vector<std::string> absent_files;
 };
 

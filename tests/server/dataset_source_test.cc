@@ -118,7 +118,9 @@ TEST_F(DatasetSourceLoadTest, ARasterIsAlwaysATinWithItsCertificate) {
   EXPECT_FALSE(served.dataset.constraints.triangles.empty());
   EXPECT_FALSE(served.dataset.crs.empty());
   EXPECT_THAT(served.files, ElementsAre(Path("dem.tif")));
-  EXPECT_THAT(served.absent_files, ElementsAre(Path("dem.tif.aux.xml")));
+  EXPECT_THAT(served.absent_files,
+              ElementsAre(Path("dem.tif.aux.xml"), Path("dem.tif.msk"),
+                          Path("dem.prj"), Path("dem.wld"), Path("dem.tfw")));
 
   // Progress reaches the caller (the server logs it), here at every step.
   std::atomic<int> progress_calls{0};
