@@ -11,6 +11,7 @@
 
 #include "server/core/dataset_fingerprint.h"
 #include "server/core/file_io.h"
+#include "server/core/given_mesh.h"
 #include "server/core/triangulation.h"
 
 #define XXH_INLINE_ALL
@@ -52,6 +53,8 @@ std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
 }
 
 Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out) {
+  // A mesh served as given needs no constraint hierarchy.
+  if (IsGivenMesh(dataset)) return BuildGivenMesh(dataset, out);
   std::unique_ptr<Triangulation> t;
   if (Status s = Triangulation::Build(dataset, &t); !s.ok()) return s;
   out->mesh = t->shared_mesh();

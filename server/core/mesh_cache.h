@@ -40,7 +40,9 @@ struct MeshCacheOutcome {
 std::string MeshFilePath(const std::string& dir, uint64_t fingerprint);
 
 // Triangulates `dataset` with CGAL, derives its serving mesh and facts, and
-// frees CGAL's triangulation. InvalidArgument as Triangulation::Build.
+// frees CGAL's triangulation; a mesh given as triangles takes
+// BuildGivenMesh's shorter way (given_mesh.h). InvalidArgument as
+// Triangulation::Build.
 Status TriangulateMesh(const Dataset& dataset, BuiltMesh* out);
 
 // With an empty `cache_dir`, TriangulateMesh. Otherwise maps the dataset's

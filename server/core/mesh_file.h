@@ -49,7 +49,7 @@
 
 namespace locator {
 
-inline constexpr uint32_t kMeshFileVersion = 1;
+inline constexpr uint32_t kMeshFileVersion = 2;
 inline constexpr size_t kMeshFileHeaderBytes = 256;
 
 // What the engine keeps of a triangulation besides its serving mesh.

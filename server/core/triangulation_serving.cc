@@ -16,20 +16,6 @@
 
 namespace locator {
 
-namespace {
-
-// The arrays of a mesh built in memory.
-class VectorStorage : public ServingMesh::Storage {
- public:
-  std::vector<MeshTriangle> triangles;
-  std::vector<Point2> points;
-  std::vector<double> values;
-  std::vector<uint32_t> ids;
-  std::vector<uint32_t> hull;
-};
-
-}  // namespace
-
 Status Triangulation::Builder::BuildServingMesh() {
   const size_t vertex_count = dt_.number_of_vertices();
   const size_t face_count = dt_.number_of_faces();
@@ -41,7 +27,7 @@ Status Triangulation::Builder::BuildServingMesh() {
         std::to_string(ServingMesh::kMaxElements));
   }
   const BoundingBox& box = t_.box_;
-  auto storage = std::make_unique<VectorStorage>();
+  auto storage = std::make_unique<ServingMesh::VectorStorage>();
 
   // Vertices in Hilbert order of their points (ties by id).
   std::vector<std::pair<uint32_t, Vertex_handle>> vertices;

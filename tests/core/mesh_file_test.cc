@@ -231,10 +231,10 @@ const BadFile kBadFiles[] = {
      "another byte order"},
     {"other_version",
      [](std::string* b, uint64_t f) {
-       (*b)[8] = 2;
+       (*b)[8] = 3;
        fuzz::ResealMeshFile(b, f);
      },
-     "format version 2, this build reads version 1"},
+     "format version 3, this build reads version 2"},
     {"corrupt_header", [](std::string* b, uint64_t) { (*b)[40] ^= 1; },
      "header checksum mismatch"},
     {"corrupt_contents", [](std::string* b, uint64_t) { b->back() ^= 1; },
