@@ -21,10 +21,16 @@ namespace locator {
 
 // A polyline (breakline) or a ring (domain boundary; closed implicitly, the
 // last point is not repeated), in dataset coordinates. `values` is empty or
-// parallel to `points` (z along a surveyed breakline).
+// parallel to `points` (z along a surveyed breakline). `name` says where
+// the source has it, for messages ("segment 3 at a.poly:12", "the exterior
+// ring at lake.wkt:2", "roads.gpkg: layer 'roads': feature 7"); empty, the
+// triangulation names it by its kind and index ("ring 0"). (Its default
+// initializer lets aggregate initializations leave it out without a
+// -Wmissing-field-initializers warning.)
 struct Polyline {
   std::vector<Point2> points;
   std::vector<double> values;
+  std::string name = {};
 };
 
 // A .poly regional attribute: the region around `seed` (bounded by the

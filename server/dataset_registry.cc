@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "common/input_text.h"
+
 namespace locator {
 
 DatasetSlot::DatasetSlot(size_t index, DatasetConfig config,
@@ -64,13 +66,8 @@ Status DatasetRegistry::Find(std::string_view name, DatasetSlot** slot) const {
     known += candidate->name();
     if (candidate->is_default()) known += " (default)";
   }
-  // The name is the caller's: quoted, and cut short when it is long.
-  const std::string shown =
-      name.size() <= kMaxDatasetNameLength
-          ? std::string(name)
-          : std::string(name.substr(0, kMaxDatasetNameLength)) + "...";
-  return Status::NotFound("unknown dataset '" + shown +
-                          "'; this server has: " + known);
+  return Status::NotFound("unknown dataset " + QuotedInput(name) +
+                          "; this server has: " + known);
 }
 
 }  // namespace locator

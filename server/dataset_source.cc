@@ -124,7 +124,9 @@ std::vector<std::string> OgrFiles(const std::string& spec) {
   gis::OgrDatasetSpec parsed;
   std::vector<std::string> files;
   if (!gis::ParseOgrDatasetSpec(spec, &parsed).ok() ||
-      !gis::VectorFileList(parsed.source, parsed.open_options, &files).ok()) {
+      !gis::VectorFileList(parsed.source, parsed.open_options, parsed.driver,
+                           &files)
+           .ok()) {
     return {};
   }
   return LocalFiles(files);

@@ -76,11 +76,29 @@ Reactor* AdmitThen(LocatorService* service,
   return serve(std::move(admission));
 }
 
+// The message of a failed Reload of `dataset` that asked for `requested`
+// (resolved to `spec`; both "" for the configured spec), as a client sees it
+// with --redact: it names the file as the client did (the configured one as
+// "dataset 'NAME'") and no server path (see RedactPaths), and keeps the
+// line and the reason.
+std::string RedactedReloadError(const DatasetSlot& dataset,
+                                const std::string& requested,
+                                const std::string& spec, const Status& status) {
+  // The loader names what it loaded: the resolved spec, or the configured
+  // one when the request named none.
+  const std::string configured_as =
+      requested.empty() ? "dataset '" + dataset.name() + "'" : requested;
+  return RedactPaths(status.message(),
+                     {{.path = spec, .shown = requested},
+                      {.path = dataset.spec(), .shown = configured_as}});
+}
+
 }  // namespace
 
 LocatorService::LocatorService(const LocatorServiceOptions& options)
     : default_deadline_(options.default_deadline),
       max_profile_crossings_(options.max_profile_crossings),
+      max_profile_samples_(options.max_profile_samples),
       max_grid_cells_(options.max_grid_cells),
       redact_(options.access.redact),
       access_(options.access.data_token, options.access.admin_token),
@@ -318,14 +336,19 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
         // The reload thread finishes the call; the admission it holds until
         // then keeps a drain waiting for the build.
         const Status started = dataset->StartReload(
-            spec, [this, reactor, response, call = std::move(call)](
-                      const Status& status, std::shared_ptr<Engine> engine,
-                      uint64_t generation) {
+            spec, [this, reactor, response, requested = request->dataset(),
+                   spec, call = std::move(call)](const Status& status,
+                                                 std::shared_ptr<Engine> engine,
+                                                 uint64_t generation) {
               if (status.ok()) {
                 ToReloadResponse(OutputStats(*engine), generation, response);
                 response->mutable_dataset()->set_name(call.dataset->name());
               }
-              reactor->Finish(ToGrpcStatus(status));
+              reactor->Finish(
+                  redact_ ? ToGrpcStatus(status, RedactedReloadError(
+                                                     *call.dataset, requested,
+                                                     spec, status))
+                          : ToGrpcStatus(status));
             });
         if (!started.ok()) reactor->Finish(ToGrpcStatus(started));
         return reactor;

@@ -64,6 +64,8 @@ struct LocatorServiceOptions {
   // A Profile whose line crosses more triangle edges (in holes too) fails
   // with RESOURCE_EXHAUSTED.
   uint64_t max_profile_crossings = 1'000'000;
+  // A Profile asking for more samples fails with RESOURCE_EXHAUSTED.
+  uint32_t max_profile_samples = 100'000;
   // A Grid of more cells fails with RESOURCE_EXHAUSTED.
   uint64_t max_grid_cells = uint64_t{1} << 24;
   // The deadline of a LocateBatch or LocateStream whose client set none
@@ -85,6 +87,9 @@ struct LocatorServiceOptions {
 class LocatorService final : public v1::Locator::CallbackService {
  public:
   explicit LocatorService(const LocatorServiceOptions& options);
+
+  // Who may call what (the tokens), for what else the server answers.
+  const AccessPolicy& access_policy() const { return access_; }
 
   // The datasets served.
   DatasetRegistry& datasets() { return registry_; }
@@ -151,10 +156,6 @@ class LocatorService final : public v1::Locator::CallbackService {
   // against the cell limit and the dataset's interpolation.
   grpc::Status GridSpec(const Admission& call, const v1::GridRequest& request,
                         RasterSpec* spec) const;
-  // The whole of a Grid on an admitted call as one message (header and every
-  // row), rendered on the calling thread: the HTTP/JSON form.
-  grpc::Status RunGrid(const Admission& call, const v1::GridRequest& request,
-                       v1::GridResponse* response) const;
   // The deadline a call without one is held to (see BatchLocator).
   CallDeadline DefaultDeadline() const {
     return batch_locator_.DefaultDeadline();
@@ -212,6 +213,7 @@ class LocatorService final : public v1::Locator::CallbackService {
 
   const std::chrono::milliseconds default_deadline_;
   const uint64_t max_profile_crossings_;
+  const uint32_t max_profile_samples_;
   const uint64_t max_grid_cells_;
   const bool redact_;
   const AccessPolicy access_;

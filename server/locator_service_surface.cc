@@ -1,5 +1,6 @@
 // LocatorService's surface methods: profiles and grids.
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -9,10 +10,41 @@
 #include "server/surface_convert.h"
 
 namespace locator {
+namespace {
+
+// What a Profile request makes the server allocate for, checked before
+// anything is: its samples against --max-profile-samples, and its line's
+// vertices against --max-profile-crossings (the trace enters at least one
+// triangle per vertex, so a longer line could never finish).
+Status CheckProfileSize(const v1::ProfileRequest& request,
+                        uint64_t max_crossings, uint32_t max_samples) {
+  if (request.samples() > max_samples) {
+    return Status::ResourceExhausted(
+        "a profile of " + std::to_string(request.samples()) +
+        " samples exceeds this server's limit of " +
+        std::to_string(max_samples) +
+        " samples per request (locatord --max-profile-samples)");
+  }
+  if (static_cast<uint64_t>(request.vertices_size()) > max_crossings) {
+    return Status::ResourceExhausted(
+        "a profile line of " + std::to_string(request.vertices_size()) +
+        " vertices enters more triangles than this server's limit of " +
+        std::to_string(max_crossings) +
+        " per request (locatord --max-profile-crossings)");
+  }
+  return Status::OK();
+}
+
+}  // namespace
 
 grpc::Status LocatorService::RunProfile(const Admission& call,
                                         const v1::ProfileRequest& request,
                                         v1::ProfileResponse* response) const {
+  if (Status status = CheckProfileSize(request, max_profile_crossings_,
+                                       max_profile_samples_);
+      !status.ok()) {
+    return ToGrpcStatus(status);
+  }
   ProfileOptions options;
   options.samples = request.samples();
   options.max_faces = max_profile_crossings_;
@@ -40,22 +72,6 @@ grpc::Status LocatorService::GridSpec(const Admission& call,
     status = call.engine->CheckInterpolation(spec->interpolation);
   }
   return ToGrpcStatus(status);
-}
-
-grpc::Status LocatorService::RunGrid(const Admission& call,
-                                     const v1::GridRequest& request,
-                                     v1::GridResponse* response) const {
-  RasterSpec spec;
-  if (grpc::Status refused = GridSpec(call, request, &spec); !refused.ok()) {
-    return refused;
-  }
-  ToGridHeader(spec, call.engine->dataset_info().crs,
-               response->mutable_header());
-  response->set_first_row(0);
-  response->set_rows(spec.height);
-  response->mutable_values()->Resize(static_cast<int>(spec.cells()), 0);
-  return ToGrpcStatus(call.engine->RenderRows(
-      spec, 0, spec.height, response->mutable_values()->mutable_data()));
 }
 
 }  // namespace locator

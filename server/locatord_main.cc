@@ -183,6 +183,7 @@ int Main(int argc, char** argv) {
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points,
       .max_profile_crossings = config.serving.max_profile_crossings,
+      .max_profile_samples = config.serving.max_profile_samples,
       .max_grid_cells = config.serving.max_grid_cells,
       .default_deadline = config.serving.transport.default_deadline,
       .access = config.access,
@@ -200,8 +201,14 @@ int Main(int argc, char** argv) {
       interceptors;
   if (config.http_enabled()) {
     status_server = std::make_unique<StatusServer>(
-        &service, HttpOptions{.max_body_bytes = config.http_max_body_bytes,
-                              .cors_origins = config.http_cors_origins});
+        &service,
+        HttpOptions{.limits = {.max_body_bytes = config.http_max_body_bytes,
+                               .max_connections = config.http_max_connections,
+                               .max_connections_per_address =
+                                   config.http_max_connections_per_address},
+                    .cors_origins = config.http_cors_origins,
+                    .api = {.max_grid_cells = config.http_max_grid_cells},
+                    .public_status = config.http_public_status});
     interceptors.push_back(status_server->NewInterceptorFactory());
   }
   std::unique_ptr<ServerRunner> runner;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
+#include "common/input_text.h"
 #include "server/proto_convert.h"
 #include "server/surface_convert.h"
 
@@ -12,16 +13,20 @@ namespace locator {
 namespace {
 
 // The calling thread's transformer from `request_crs` to the dataset's.
+// Errors name the request's field.
 Status TransformerFor(const Engine& engine, const std::string& request_crs,
                       gis::CrsTransformer** out) {
   const std::string& dataset_crs = engine.dataset_info().crs;
   if (dataset_crs.empty()) {
     return Status::InvalidArgument(
-        "the request names CRS '" + request_crs +
-        "' but the dataset has none; send points in the dataset's own "
+        "crs: the request names CRS " + gis::QuotedCrs(request_crs) +
+        " but the dataset has none; send points in the dataset's own "
         "coordinates (no crs)");
   }
-  return gis::CrsTransformer::ForThread(request_crs, dataset_crs, out);
+  const Status status =
+      gis::CrsTransformer::ForThread(request_crs, dataset_crs, out);
+  if (status.ok()) return status;
+  return Status::InvalidArgument("crs: " + status.message());
 }
 
 }  // namespace

@@ -3,8 +3,14 @@
 // the dataset's CRS once per request, with the calling thread's cached PROJ
 // transformer (locator::gis::CrsTransformer::ForThread).
 //
-// Errors are InvalidArgument: an unknown CRS, a CRS sent to a dataset that
-// has none, a point outside the transformation's area of use (named by its
+// The request's CRS is held to the request CRS policy
+// (common/gis/request_crs_policy.h): bounded in length, and PROJ opens no
+// file for it outside its own data directories; a CRS that failed once
+// fails again without PROJ being asked.
+//
+// Errors are InvalidArgument: an unknown CRS, one too long or naming a file
+// PROJ may not open, a CRS sent to a dataset that has none (these start
+// "crs: "), a point outside the transformation's area of use (named by its
 // index). Non-finite points are left as they are, for the engine's own
 // check and message.
 //

@@ -27,6 +27,7 @@ struct ServingFlags {
   std::string threads;
   std::string max_batch_points;
   std::string max_profile_crossings;
+  std::string max_profile_samples;
   std::string max_grid_cells;
   TransportFlags transport;
 };
@@ -47,6 +48,9 @@ struct HttpFlags {
   std::string listen;
   std::string max_body_bytes;
   std::vector<std::string> cors_origins;
+  std::string max_grid_cells;
+  std::string max_connections_per_address;
+  bool public_status = false;
 };
 
 void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
@@ -74,6 +78,11 @@ void AddServingFlags(const ServingConfig& defaults, ServingFlags* flags,
           ->default_value(std::to_string(defaults.max_profile_crossings)),
       "a Profile whose line crosses more triangle edges (holes included) "
       "fails with RESOURCE_EXHAUSTED")(
+      "max-profile-samples",
+      po::value(&flags->max_profile_samples)
+          ->default_value(std::to_string(defaults.max_profile_samples)),
+      "a Profile asking for more evenly spaced samples fails with "
+      "RESOURCE_EXHAUSTED")(
       "max-grid-cells",
       po::value(&flags->max_grid_cells)
           ->default_value(std::to_string(defaults.max_grid_cells)),
@@ -110,6 +119,13 @@ Status ReadServingFlags(const ServingFlags& flags, ServingConfig* config) {
   if (Status status =
           ParseCountAs("max-profile-crossings", flags.max_profile_crossings, 1,
                        uint64_t{1} << 40, &config->max_profile_crossings);
+      !status.ok()) {
+    return status;
+  }
+  // A reply holds the samples in one protobuf repeated field.
+  if (Status status = ParseCountAs(
+          "max-profile-samples", flags.max_profile_samples, 1,
+          std::numeric_limits<int>::max(), &config->max_profile_samples);
       !status.ok()) {
     return status;
   }
@@ -176,7 +192,22 @@ void AddHttpFlags(const ServerConfig& defaults, HttpFlags* flags,
       "larger HTTP request bodies get 413 (bytes; B, KiB, MiB, GiB suffix)")(
       "http-cors-origin", po::value(&flags->cors_origins)->composing(),
       "an origin (scheme://host[:port], exact) whose web pages may call the "
-      "HTTP server (CORS); repeatable; none = CORS off");
+      "HTTP server (CORS); repeatable; none = CORS off")(
+      "http-max-grid-cells",
+      po::value(&flags->max_grid_cells)
+          ->default_value(std::to_string(defaults.http_max_grid_cells)),
+      "an HTTP :grid of more cells fails with RESOURCE_EXHAUSTED (its answer "
+      "is one JSON text of ~20 bytes per cell; gRPC streams up to "
+      "--max-grid-cells)")(
+      "http-max-connections-per-address",
+      po::value(&flags->max_connections_per_address)
+          ->default_value(
+              std::to_string(defaults.http_max_connections_per_address)),
+      "HTTP connections one client address may hold open; more get 503 "
+      "(behind a reverse proxy, every client has the proxy's address)")(
+      "http-public-status", po::bool_switch(&flags->public_status),
+      "/api/stats and /api/edges answer without a token even with "
+      "--token-file (they show the dataset's source and coordinates)");
 }
 
 // An exact origin as browsers send it: http(s)://host[:port], nothing after.
@@ -215,6 +246,20 @@ Status ReadHttpFlags(const HttpFlags& flags, ServerConfig* config) {
     if (Status status = CheckCorsOrigin(origin); !status.ok()) return status;
   }
   config->http_cors_origins = flags.cors_origins;
+  if (Status status = ParseCountAs("http-max-grid-cells", flags.max_grid_cells,
+                                   1, std::numeric_limits<int>::max(),
+                                   &config->http_max_grid_cells);
+      !status.ok()) {
+    return status;
+  }
+  if (Status status = ParseCountAs("http-max-connections-per-address",
+                                   flags.max_connections_per_address, 1,
+                                   config->http_max_connections,
+                                   &config->http_max_connections_per_address);
+      !status.ok()) {
+    return status;
+  }
+  config->http_public_status = flags.public_status;
   return Status::OK();
 }
 

@@ -38,6 +38,10 @@ struct ServingConfig {
   // --max-profile-crossings: a Profile whose line crosses more triangle
   // edges gets RESOURCE_EXHAUSTED.
   uint64_t max_profile_crossings = 1'000'000;
+  // --max-profile-samples: a Profile asking for more samples gets
+  // RESOURCE_EXHAUSTED. A sample is ~50 bytes of reply (~150 in JSON), so
+  // the default's reply stays far inside the default message limit.
+  uint32_t max_profile_samples = 100'000;
   // --max-grid-cells: a Grid of more cells gets RESOURCE_EXHAUSTED.
   uint64_t max_grid_cells = uint64_t{1} << 24;
   // TLS, connection limits, keepalive and the default deadline.
@@ -86,6 +90,17 @@ struct ServerConfig {
   // --http-cors-origin, repeatable: the exact origins (scheme://host[:port])
   // whose pages may call the HTTP server; empty: CORS is off.
   std::vector<std::string> http_cors_origins;
+  // --http-max-grid-cells: an HTTP :grid of more cells gets
+  // RESOURCE_EXHAUSTED (its answer is one JSON text, ~20 bytes per cell).
+  uint64_t http_max_grid_cells = uint64_t{1} << 20;
+  // HTTP connections open at once (not a flag), and
+  // --http-max-connections-per-address: those one client address may hold
+  // open; more get 503.
+  size_t http_max_connections = 512;
+  size_t http_max_connections_per_address = 64;
+  // --http-public-status: /api/stats and /api/edges answer without a
+  // token even when tokens are required.
+  bool http_public_status = false;
 
   bool http_enabled() const { return !http_host.empty(); }
 };

@@ -1,10 +1,12 @@
 #include "server/server_runner.h"
 
+#include <google/protobuf/descriptor.h>
 #include <grpcpp/ext/proto_server_reflection_plugin.h>
 #include <grpcpp/health_check_service_interface.h>
 
 #include <csignal>
 #include <iostream>
+#include <iterator>
 #include <utility>
 
 #include "locator/v1/locator.grpc.pb.h"
@@ -50,7 +52,33 @@ void SetConnectionLimits(const TransportConfig& transport,
                               transport.max_ping_strikes);
 }
 
+// The methods of the services Start() adds, in this gRPC's version (the
+// default health service is not a protobuf-generated one, so no descriptor
+// lists them). A method a later gRPC adds is counted as unknown until it is
+// listed here.
+constexpr std::string_view kBuiltInMethods[] = {
+    "/grpc.health.v1.Health/Check",
+    "/grpc.health.v1.Health/Watch",
+    "/grpc.reflection.v1alpha.ServerReflection/ServerReflectionInfo",
+};
+
 }  // namespace
+
+std::vector<std::string> ServerRunner::MethodsServed(
+    const std::vector<std::string_view>& services) {
+  std::vector<std::string> methods(std::begin(kBuiltInMethods),
+                                   std::end(kBuiltInMethods));
+  for (const std::string_view name : services) {
+    const google::protobuf::ServiceDescriptor* service =
+        google::protobuf::DescriptorPool::generated_pool()->FindServiceByName(
+            std::string(name));
+    for (int i = 0; service != nullptr && i < service->method_count(); ++i) {
+      methods.push_back("/" + service->full_name() + "/" +
+                        service->method(i)->name());
+    }
+  }
+  return methods;
+}
 
 ServerRunner::ServerRunner(std::string_view program)
     : program_(program),
@@ -76,12 +104,19 @@ Status ServerRunner::Start(
                            Credentials(config.transport.tls), &port);
   builder.SetMaxReceiveMessageSize(static_cast<int>(config.max_message_bytes));
   builder.SetMaxSendMessageSize(static_cast<int>(config.max_message_bytes));
+  // gRPC sets SO_REUSEPORT by default, so a second server could bind the
+  // same port and silently take a share of the connections. Without it, an
+  // address in use fails here.
+  builder.AddChannelArgument(GRPC_ARG_ALLOW_REUSEPORT, 0);
   SetConnectionLimits(config.transport, &builder);
   for (grpc::Service* service : services) builder.RegisterService(service);
   builder.experimental().SetInterceptorCreators(std::move(interceptors));
   created->server_ = builder.BuildAndStart();
   if (created->server_ == nullptr || port == 0) {
-    return Status::Unavailable("cannot listen on " + config.ListenAddress());
+    return Status::Unavailable(
+        "cannot listen on " + config.ListenAddress() +
+        ": the address is in use or not this machine's (gRPC's error above "
+        "says which)");
   }
   created->SetServing(false);
   std::cout << program << " listening on " << config.listen_host << ":" << port

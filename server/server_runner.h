@@ -4,7 +4,9 @@
 // Start() builds the server with the default health service and
 // reflection, TLS and the connection limits of the config's
 // TransportConfig, marks it NOT_SERVING, starts it and prints "<program>
-// listening on HOST:PORT" (the port actually bound) on stdout. Run() then
+// listening on HOST:PORT" (the port actually bound) on stdout. A port in
+// use by another server fails (gRPC's default SO_REUSEPORT is off, so two
+// servers never share a port's connections). Run() then
 // drives the loop on the calling thread until SIGINT or SIGTERM, or until
 // Stop(): the server goes NOT_SERVING, the OnDrain() hooks run (the
 // services refuse new calls and wait for theirs to end), gRPC shuts down,
@@ -45,7 +47,8 @@ class ServerRunner {
 
   // Starts `services` on config's address as described above, with
   // `interceptors` seeing every call, into *runner. Unavailable "cannot
-  // listen on ADDRESS" if the address cannot be bound.
+  // listen on ADDRESS: ..." if the address cannot be bound (in use, by
+  // another server too).
   static Status Start(
       std::string_view program, const ServingConfig& config,
       const std::vector<grpc::Service*>& services,
@@ -53,6 +56,14 @@ class ServerRunner {
           grpc::experimental::ServerInterceptorFactoryInterface>>
           interceptors,
       std::unique_ptr<ServerRunner>* runner);
+
+  // The methods a server Start()ed with the protobuf services named
+  // `services` (e.g. "locator.v1.Locator") answers, as
+  // "/package.Service/Method": theirs, and those of the health and
+  // reflection services Start() adds. A name that is not a generated
+  // service linked into the program adds none.
+  static std::vector<std::string> MethodsServed(
+      const std::vector<std::string_view>& services);
 
   ServerRunner(const ServerRunner&) = delete;
   ServerRunner& operator=(const ServerRunner&) = delete;

@@ -1,5 +1,7 @@
 #include "server/status_mapping.h"
 
+#include "common/input_text.h"
+
 namespace locator {
 namespace {
 
@@ -47,12 +49,18 @@ grpc::StatusCode ToGrpcCode(Refusal refusal) {
 }  // namespace
 
 grpc::Status ToGrpcStatus(const Status& status) {
+  return ToGrpcStatus(status, status.message());
+}
+
+grpc::Status ToGrpcStatus(const Status& status, std::string_view message) {
   if (status.ok()) return grpc::Status::OK;
-  return grpc::Status(ToGrpcCode(status.code()), status.message());
+  return grpc::Status(ToGrpcCode(status.code()),
+                      TruncatedMessage(message, kMaxStatusMessageBytes));
 }
 
 grpc::Status ToGrpcStatus(Refusal refusal, const std::string& message) {
-  return grpc::Status(ToGrpcCode(refusal), message);
+  return grpc::Status(ToGrpcCode(refusal),
+                      TruncatedMessage(message, kMaxStatusMessageBytes));
 }
 
 unsigned HttpStatusFor(grpc::StatusCode code) {

@@ -5,6 +5,9 @@
 #include <limits>
 #include <string>
 
+#include "common/input_text.h"
+#include "server/core/wide_math.h"
+
 namespace locator {
 namespace {
 
@@ -58,18 +61,27 @@ Status GridShape(const v1::GridRequest& request, RasterSpec* spec) {
     return Status::InvalidArgument("cell_size must be finite and positive");
   }
   BoundingBox& box = spec->box;
-  const double columns = std::ceil(box.width() / cell);
-  const double rows = std::ceil(box.height() / cell);
+  // Step() and AddProduct() hold a box wider than the largest double.
+  const double columns = std::ceil(Step(box.min_x, box.max_x, cell));
+  const double rows = std::ceil(Step(box.min_y, box.max_y, cell));
   constexpr double kMaxSide = std::numeric_limits<uint32_t>::max();
   if (!(columns <= kMaxSide) || !(rows <= kMaxSide)) {
-    return Status::ResourceExhausted(
-        "cell_size " + std::to_string(cell) + " makes a grid of " +
-        std::to_string(columns) + " x " + std::to_string(rows) + " cells");
+    return Status::ResourceExhausted("cell_size " + NumberText(cell) +
+                                     " makes a grid of " + NumberText(columns) +
+                                     " x " + NumberText(rows) + " cells");
   }
   spec->width = static_cast<uint32_t>(std::max(columns, 1.0));
   spec->height = static_cast<uint32_t>(std::max(rows, 1.0));
-  box.max_x = box.min_x + spec->width * cell;
-  box.min_y = box.max_y - spec->height * cell;
+  box.max_x = AddProduct(box.min_x, spec->width, cell);
+  box.min_y = AddProduct(box.max_y, spec->height, -cell);
+  if (!std::isfinite(box.max_x) || !std::isfinite(box.min_y)) {
+    return Status::InvalidArgument(
+        "cell_size " + NumberText(cell) +
+        " grows the box to whole cells beyond the largest double, " +
+        NumberText(std::numeric_limits<double>::max()) +
+        ": the box's east and south edges, min_x + width x cell_size and "
+        "max_y - height x cell_size, must stay within it");
+  }
   return Status::OK();
 }
 
@@ -133,11 +145,7 @@ Status FromGridRequest(const v1::GridRequest& request, uint64_t max_cells,
       !s.ok()) {
     return s;
   }
-  if (Status s = CheckRasterSpec(
-          RasterSpec{.box = spec->box, .width = 1, .height = 1});
-      !s.ok()) {
-    return s;
-  }
+  if (Status s = CheckRasterBox(spec->box); !s.ok()) return s;
   if (Status s = GridShape(request, spec); !s.ok()) return s;
   if (spec->cells() > max_cells) {
     return Status::ResourceExhausted(

@@ -7,11 +7,18 @@
 // Query parameters: server=URL (where locatord's HTTP server is; default:
 // this page's origin), dataset=NAME (the one shown first), click=X,Y (after
 // the map is drawn, click the pixel at dataset point (X, Y), as a user
-// would: scripts and tests use it).
+// would: scripts and tests use it). The fragment may carry #token=TOKEN
+// (it never reaches a server; the page removes it from the address bar).
+//
+// The token typed in goes to this page's own origin only: before it goes to
+// another (a ?server= elsewhere, which anyone can put in a link), the user
+// is asked, naming that origin, and the answer holds for the page's life.
 'use strict';
 
 const params = new URLSearchParams(location.search);
 const SERVER = (params.get('server') || '').replace(/\/$/, '');
+// Origin -> whether the user agreed to send it the token.
+const tokenConsent = new Map([[location.origin, true]]);
 const MARGIN_PX = 16;
 const DRAG_THRESHOLD_PX = 4;
 
@@ -60,10 +67,24 @@ function setField(id, value, text) {
   element.textContent = text === undefined ? '–' : text;
 }
 
+// Whether the token may go to `url`: always to this page's origin, to
+// another once the user has agreed (asked once per origin).
+function mayReceiveToken(url) {
+  const origin = new URL(url, location.href).origin;
+  if (!tokenConsent.has(origin)) {
+    tokenConsent.set(origin, confirm(
+        `Send your token to ${origin}? This page is ${location.origin}; ` +
+        'send it only to a server you trust.'));
+  }
+  return tokenConsent.get(origin);
+}
+
 async function call(method, path, body) {
   const headers = {};
   const token = document.getElementById('token').value.trim();
-  if (token !== '') headers.Authorization = `Bearer ${token}`;
+  if (token !== '' && mayReceiveToken(SERVER + path)) {
+    headers.Authorization = `Bearer ${token}`;
+  }
   if (body !== undefined) headers['Content-Type'] = 'application/json';
   const response = await fetch(SERVER + path, {
     method,
@@ -256,5 +277,10 @@ async function loadDatasets() {
 }
 
 listen();
+const linkToken = new URLSearchParams(location.hash.slice(1)).get('token');
+if (linkToken !== null) {
+  document.getElementById('token').value = linkToken;
+  history.replaceState(null, '', location.pathname + location.search);
+}
 document.getElementById('token').addEventListener('change', loadDatasets);
 loadDatasets();

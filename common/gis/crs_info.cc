@@ -19,7 +19,7 @@ constexpr size_t kMemoCapacity = 8;
 // The horizontal part of `crs`: the first component of a compound CRS, the
 // source of a bound CRS, else `crs` itself.
 PjPtr HorizontalCrs(const PJ* crs) {
-  PJ_CONTEXT* ctx = ThreadProjContext();
+  PJ_CONTEXT* ctx = ThreadProjContext().get();
   switch (proj_get_type(crs)) {
     case PJ_TYPE_COMPOUND_CRS:
       return PjPtr(proj_crs_get_sub_crs(ctx, crs, 0));
@@ -35,7 +35,7 @@ int EpsgCode(const PJ* crs) {
   if (authority != nullptr && std::strcmp(authority, "EPSG") == 0) {
     return std::atoi(proj_get_id_code(crs, 0));
   }
-  PJ_CONTEXT* ctx = ThreadProjContext();
+  PJ_CONTEXT* ctx = ThreadProjContext().get();
   int* confidence = nullptr;
   PJ_OBJ_LIST* matches = proj_identify(ctx, crs, "EPSG", nullptr, &confidence);
   int code = 0;
@@ -52,9 +52,12 @@ int EpsgCode(const PJ* crs) {
 }  // namespace
 
 Status DescribeCrs(std::string_view crs, CrsInfo* info) {
+  GuardedProjContext& guarded = ThreadProjContext();
   PjPtr created;
-  if (Status status = CreateCrs(crs, &created); !status.ok()) return status;
-  PJ_CONTEXT* ctx = ThreadProjContext();
+  if (Status status = CreateCrs(guarded, crs, &created); !status.ok()) {
+    return status;
+  }
+  PJ_CONTEXT* ctx = guarded.get();
   *info = CrsInfo();
   const char* name = proj_get_name(created.get());
   info->name = name == nullptr ? "" : name;

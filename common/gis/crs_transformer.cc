@@ -5,20 +5,24 @@
 #include <sstream>
 #include <utility>
 
+#include "common/gis/crs_verdicts.h"
+#include "common/gis/request_crs_policy.h"
+
 namespace locator::gis {
 namespace {
 
-// A transformation from `from` to `to`, normalized to x = lon/easting.
+// A transformation from `from` to `to`, normalized to x = lon/easting, in
+// the calling thread's request context.
 Status CreateTransformation(const PJ* from, const PJ* to, PjPtr* out) {
-  PJ_CONTEXT* ctx = ThreadProjContext();
+  PJ_CONTEXT* ctx = ThreadRequestProjContext().get();
   PjPtr raw(proj_create_crs_to_crs_from_pj(ctx, from, to, nullptr, nullptr));
   if (raw != nullptr) {
     out->reset(proj_normalize_for_visualization(ctx, raw.get()));
   }
   if (*out == nullptr) {
-    return Status::InvalidArgument(std::string("no transformation from '") +
-                                   proj_get_name(from) + "' to '" +
-                                   proj_get_name(to) + "': " + LastProjError());
+    return Status::InvalidArgument(
+        std::string("no transformation from '") + proj_get_name(from) +
+        "' to '" + proj_get_name(to) + "': " + LastProjError(ctx));
   }
   return Status::OK();
 }
@@ -38,6 +42,25 @@ bool Transform(PJ* pj, PJ_DIRECTION direction, Point2* p) {
   return true;
 }
 
+// Lets the request context open the grids the dataset's CRS names: the
+// operator chose them.
+void AdmitGridsOf(const std::string& dataset_crs) {
+  GuardedProjContext& ctx = ThreadProjContext();
+  PjPtr crs;
+  if (CreateCrs(ctx, dataset_crs, &crs).ok()) {
+    for (const GridUse& grid : GridsOf(ctx, crs.get())) {
+      if (!grid.file.empty()) AdmitProjFile(grid.file);
+    }
+  }
+  ctx.TakeRefusal();  // a grid it may not open is reported by the transform
+}
+
+// The key of a (request CRS, dataset CRS) pair in the verdicts.
+std::string PairKey(const std::string& request_crs,
+                    const std::string& dataset_crs) {
+  return std::to_string(request_crs.size()) + ":" + request_crs + dataset_crs;
+}
+
 }  // namespace
 
 bool CrsTransformer::AreaOfUse::Contains(double lon, double lat) const {
@@ -51,14 +74,17 @@ CrsTransformer::~CrsTransformer() = default;
 Status CrsTransformer::Create(const std::string& request_crs,
                               const std::string& dataset_crs,
                               std::unique_ptr<CrsTransformer>* out) {
+  AdmitGridsOf(dataset_crs);
+  GuardedProjContext& guarded = ThreadRequestProjContext();
   PjPtr request, dataset;
-  if (Status status = CreateCrs(request_crs, &request); !status.ok()) {
+  if (Status status = CreateRequestCrs(request_crs, &request); !status.ok()) {
     return status;
   }
-  if (Status status = CreateCrs(dataset_crs, &dataset); !status.ok()) {
+  if (Status status = CreateCrs(guarded, dataset_crs, &dataset); !status.ok()) {
     return status;
   }
   std::unique_ptr<CrsTransformer> created(new CrsTransformer);
+  created->context_ = guarded.get();
   created->request_crs_ = request_crs;
   created->dataset_crs_ = dataset_crs;
   if (Status status = CreateTransformation(request.get(), dataset.get(),
@@ -66,7 +92,7 @@ Status CrsTransformer::Create(const std::string& request_crs,
       !status.ok()) {
     return status;
   }
-  PJ_CONTEXT* ctx = ThreadProjContext();
+  PJ_CONTEXT* ctx = guarded.get();
   PjPtr geodetic(proj_crs_get_geodetic_crs(ctx, request.get()));
   const PJ_TYPE geodetic_type =
       geodetic == nullptr ? PJ_TYPE_UNKNOWN : proj_get_type(geodetic.get());
@@ -79,6 +105,11 @@ Status CrsTransformer::Create(const std::string& request_crs,
                                            &created->request_to_lon_lat_);
       !status.ok()) {
     return status;
+  }
+  // A grid either CRS names that the transformations needed and could not
+  // open: PROJ would have picked another transformation without it.
+  if (Status refused = RefusedFileError(guarded, request_crs); !refused.ok()) {
+    return refused;
   }
   for (const PJ* crs : {request.get(), dataset.get()}) {
     AreaOfUse area;
@@ -100,6 +131,9 @@ Status CrsTransformer::ForThread(const std::string& request_crs,
     std::string dataset_crs;
     std::unique_ptr<CrsTransformer> transformer;
   };
+  // The context is made before the cache, so that it outlives the
+  // transformers' PROJ objects when the thread exits.
+  ThreadRequestProjContext();
   // Most recently used first.
   thread_local std::vector<Entry> cache;
   const auto hit =
@@ -111,8 +145,15 @@ Status CrsTransformer::ForThread(const std::string& request_crs,
     *out = cache.front().transformer.get();
     return Status::OK();
   }
+  // Refused before it is used as a key.
+  if (Status status = CheckRequestCrsLength(request_crs); !status.ok()) {
+    return status;
+  }
+  static CrsVerdicts* const verdicts = new CrsVerdicts();
   std::unique_ptr<CrsTransformer> created;
-  if (Status status = Create(request_crs, dataset_crs, &created);
+  if (Status status = verdicts->Decide(
+          PairKey(request_crs, dataset_crs),
+          [&] { return Create(request_crs, dataset_crs, &created); });
       !status.ok()) {
     return status;
   }
@@ -146,7 +187,7 @@ Status CrsTransformer::ToDataset(std::span<Point2> points) const {
     if (!Transform(request_to_dataset_.get(), PJ_FWD, &points[i])) {
       return Status::InvalidArgument(PointText(i, original) +
                                      " cannot be transformed " + Describe() +
-                                     ": " + LastProjError());
+                                     ": " + LastProjError(context_));
     }
   }
   return Status::OK();
@@ -156,9 +197,9 @@ Status CrsTransformer::ToRequest(std::span<Point2> points) const {
   for (size_t i = 0; i < points.size(); ++i) {
     const Point2 original = points[i];
     if (!Transform(request_to_dataset_.get(), PJ_INV, &points[i])) {
-      return Status::InvalidArgument(PointText(i, original) +
-                                     " cannot be transformed back " +
-                                     Describe() + ": " + LastProjError());
+      return Status::InvalidArgument(
+          PointText(i, original) + " cannot be transformed back " + Describe() +
+          ": " + LastProjError(context_));
     }
   }
   return Status::OK();

@@ -6,12 +6,20 @@
 // the conversion of request points to longitude/latitude for the
 // area-of-use check, and the areas of use of both CRSs.
 //
+// The request CRS is a request's (request_crs_policy.h: bounded in length,
+// made in the thread's request context, so PROJ opens only its own data
+// files); the dataset CRS is the operator's, and the grids it names are
+// admitted to the request context (AdmitProjFile) before the transformation
+// is made.
+//
 // Invariant: both CRSs were known to PROJ at creation and every PJ belongs
-// to the creating thread's PROJ context.
+// to the creating thread's request context.
 //
 // Thread-safety: none. PROJ objects are not thread-safe and creating one is
 // slow (milliseconds, a database lookup), so callers use ForThread(): a
-// bounded per-thread cache keyed by the (request CRS, dataset CRS) pair.
+// bounded per-thread cache keyed by the (request CRS, dataset CRS) pair,
+// behind the process-wide verdicts (CrsVerdicts) that make a failing pair
+// fail without being made again.
 
 #ifndef LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_
 #define LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_
@@ -32,14 +40,16 @@ class CrsTransformer {
   // Pairs a thread's cache holds; the least recently used one goes first.
   static constexpr size_t kCacheCapacity = 16;
 
-  // Creates a transformer; InvalidArgument naming the CRS PROJ does not
-  // know, or the pair it cannot transform between.
+  // Creates a transformer on the calling thread; InvalidArgument naming the
+  // CRS PROJ does not know, the pair it cannot transform between, or the
+  // file the request context did not let PROJ open.
   static Status Create(const std::string& request_crs,
                        const std::string& dataset_crs,
                        std::unique_ptr<CrsTransformer>* out);
 
-  // The calling thread's transformer for the pair, created on first use.
-  // *out stays valid until this thread's next ForThread call.
+  // The calling thread's transformer for the pair, created on first use
+  // unless the pair is known to fail. *out stays valid until this thread's
+  // next ForThread call.
   static Status ForThread(const std::string& request_crs,
                           const std::string& dataset_crs, CrsTransformer** out);
 
@@ -70,6 +80,7 @@ class CrsTransformer {
 
   std::string request_crs_;
   std::string dataset_crs_;
+  PJ_CONTEXT* context_ = nullptr;  // the creating thread's request context
   PjPtr request_to_dataset_;
   PjPtr request_to_lon_lat_;
   std::vector<AreaOfUse> areas_;

@@ -1,7 +1,6 @@
 #include "common/gis/gdal_support.h"
 
 #include <cpl_conv.h>
-#include <cpl_error.h>
 #include <cpl_string.h>
 #include <gdal.h>
 #include <gdal_priv.h>
@@ -55,22 +54,44 @@ std::vector<std::string> GdalFileList(GDALDataset& dataset) {
 
 Status VectorFileList(const std::string& source,
                       const std::vector<std::string>& open_options,
+                      const std::string& driver,
                       std::vector<std::string>* files) {
   RegisterGdalDrivers();
   std::vector<const char*> options;
   for (const std::string& option : open_options)
     options.push_back(option.c_str());
   options.push_back(nullptr);
+  const char* const only_driver[] = {driver.c_str(), nullptr};
   CPLErrorReset();
-  GDALDatasetUniquePtr dataset(
-      GDALDataset::Open(source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
-                        nullptr, options.data(), nullptr));
+  GDALDatasetUniquePtr dataset(GDALDataset::Open(
+      source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
+      driver.empty() ? nullptr : only_driver, options.data(), nullptr));
   if (dataset == nullptr) {
     return Status::InvalidArgument(source +
                                    ": GDAL cannot open it: " + LastGdalError());
   }
   *files = GdalFileList(*dataset);
   return Status::OK();
+}
+
+GdalErrorTrap::GdalErrorTrap() { CPLPushErrorHandlerEx(Handle, this); }
+
+GdalErrorTrap::~GdalErrorTrap() { CPLPopErrorHandler(); }
+
+std::string GdalErrorTrap::TakeFailure() {
+  std::string failure;
+  failure.swap(failure_);
+  failed_ = false;
+  return failure;
+}
+
+void CPL_STDCALL GdalErrorTrap::Handle(CPLErr level, CPLErrorNum /*number*/,
+                                       const char* message) {
+  auto* trap = static_cast<GdalErrorTrap*>(CPLGetErrorHandlerUserData());
+  if (level < CE_Failure || trap == nullptr || trap->failed_) return;
+  trap->failed_ = true;
+  trap->failure_ =
+      message != nullptr && *message != '\0' ? message : "no detail";
 }
 
 }  // namespace locator::gis

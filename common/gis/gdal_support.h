@@ -1,12 +1,16 @@
 // What every GDAL user in locator_gis needs: the drivers registered once per
-// process, GDAL's last error message for a Status, CRSs as WKT and the files
-// a dataset reads.
+// process, GDAL's last error message for a Status, GdalErrorTrap, which
+// keeps the failures GDAL reports while a read is under way, CRSs as WKT and
+// the files a dataset reads.
 //
-// Thread-safety: both functions may be called from any thread (registration
-// runs once; GDAL's error state is per thread).
+// Thread-safety: the functions may be called from any thread (registration
+// runs once; GDAL's error state and its handler stack are per thread). A
+// GdalErrorTrap belongs to the thread that made it.
 
 #ifndef LOCATOR_COMMON_GIS_GDAL_SUPPORT_H_
 #define LOCATOR_COMMON_GIS_GDAL_SUPPORT_H_
+
+#include <cpl_error.h>
 
 #include <string>
 #include <vector>
@@ -25,6 +29,29 @@ void RegisterGdalDrivers();
 // GDAL left none.
 std::string LastGdalError();
 
+// While it lives, GDAL's errors on this thread come here instead of stderr:
+// it keeps the first failure (CE_Failure or CE_Fatal) and drops warnings.
+// GDAL's drivers report a failed read this way and then carry on or end
+// the layer early, as if it ended there: a reader must look.
+class GdalErrorTrap {
+ public:
+  GdalErrorTrap();
+  ~GdalErrorTrap();
+  GdalErrorTrap(const GdalErrorTrap&) = delete;
+  GdalErrorTrap& operator=(const GdalErrorTrap&) = delete;
+
+  // The first failure's message since construction or the last call, or ""
+  // if there was none; forgets it.
+  std::string TakeFailure();
+
+ private:
+  static void CPL_STDCALL Handle(CPLErr level, CPLErrorNum number,
+                                 const char* message);
+
+  std::string failure_;
+  bool failed_ = false;
+};
+
 // `srs` as WKT2 (2019).
 std::string SpatialRefToWkt(const OGRSpatialReference& srs);
 
@@ -38,10 +65,11 @@ Status UserCrsToWkt(const std::string& crs, std::string* wkt);
 std::vector<std::string> GdalFileList(GDALDataset& dataset);
 
 // GdalFileList of the vector source `source` opened with `open_options`
-// (NAME=VALUE each), without reading a feature. InvalidArgument with GDAL's
-// message when GDAL cannot open it.
+// (NAME=VALUE each) by `driver` (a short name; "" for any), without reading
+// a feature. InvalidArgument with GDAL's message when GDAL cannot open it.
 Status VectorFileList(const std::string& source,
                       const std::vector<std::string>& open_options,
+                      const std::string& driver,
                       std::vector<std::string>* files);
 
 }  // namespace locator::gis

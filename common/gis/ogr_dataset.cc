@@ -12,23 +12,11 @@
 #include <utility>
 
 #include "common/gis/gdal_support.h"
+#include "common/gis/ogr_constraints.h"
+#include "common/gis/ogr_features.h"
 
 namespace locator::gis {
 namespace {
-
-// Names the source, the layer and (optionally) the feature in messages.
-struct Where {
-  std::string source;
-  std::string layer;
-
-  std::string Prefix() const { return source + ": layer '" + layer + "'"; }
-  std::string Feature(GIntBig fid) const {
-    return Prefix() + ": feature " + std::to_string(fid);
-  }
-  Status Bad(GIntBig fid, const std::string& what) const {
-    return Status::InvalidArgument(Feature(fid) + ": " + what);
-  }
-};
 
 Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
   RegisterGdalDrivers();
@@ -36,9 +24,16 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
   for (const std::string& option : spec.open_options) {
     open_options.AddString(option.c_str());
   }
+  const char* const only_driver[] = {spec.driver.c_str(), nullptr};
+  if (!spec.driver.empty() &&
+      GDALGetDriverByName(spec.driver.c_str()) == nullptr) {
+    return Status::InvalidArgument(spec.source + ": no GDAL driver '" +
+                                   spec.driver + "' (driver=)");
+  }
   CPLErrorReset();
   out->reset(GDALDataset::Open(spec.source.c_str(),
-                               GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr,
+                               GDAL_OF_VECTOR | GDAL_OF_READONLY,
+                               spec.driver.empty() ? nullptr : only_driver,
                                open_options.List(), nullptr));
   if (*out != nullptr) return Status::OK();
   VSIStatBufL stat;
@@ -46,7 +41,9 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
     return Status::NotFound(spec.source + ": no such file or directory");
   }
   return Status::InvalidArgument(
-      spec.source + ": not a readable OGR vector source: " + LastGdalError());
+      spec.source + ": not a readable OGR vector source" +
+      (spec.driver.empty() ? "" : " for driver " + spec.driver) + ": " +
+      LastGdalError());
 }
 
 std::string LayerNames(GDALDataset& source) {
@@ -78,18 +75,10 @@ Status FindLayer(GDALDataset& source, const std::string& source_name,
   return Status::OK();
 }
 
-Status CheckFinite(const Where& where, GIntBig fid, const OGRPoint& p) {
-  if (std::isfinite(p.getX()) && std::isfinite(p.getY()) &&
-      (!p.Is3D() || std::isfinite(p.getZ()))) {
-    return Status::OK();
-  }
-  return where.Bad(fid, "non-finite coordinate");
-}
-
 // Reads the value of field `index` of `feature`: a number, or a text that
 // is one.
-Status FieldValue(const Where& where, const OGRFeature& feature, int index,
-                  double* value) {
+Status FieldValue(const FeatureLocation& where, const OGRFeature& feature,
+                  int index, double* value) {
   const std::string name = feature.GetFieldDefnRef(index)->GetNameRef();
   if (!feature.IsFieldSetAndNotNull(index)) {
     return where.Bad(feature.GetFID(), "field '" + name + "' is null");
@@ -110,7 +99,7 @@ Status FieldValue(const Where& where, const OGRFeature& feature, int index,
 // Reads the points layer into out->points and out->values.
 class PointReader {
  public:
-  PointReader(Where where, const DatasetLimits& limits, Dataset* out)
+  PointReader(FeatureLocation where, const DatasetLimits& limits, Dataset* out)
       : where_(std::move(where)), limits_(limits), out_(out) {}
 
   Status Read(OGRLayer& layer, const OgrDatasetSpec& spec) {
@@ -129,8 +118,11 @@ class PointReader {
       }
     }
     geometry_z_ = z_index_ < 0 && OGR_GT_HasZ(layer.GetGeomType());
-    for (const OGRFeatureUniquePtr& feature : layer) {
-      if (Status status = AddFeature(*feature); !status.ok()) return status;
+    if (Status status = ForEachFeature(
+            where_, layer,
+            [this](const OGRFeature& feature) { return AddFeature(feature); });
+        !status.ok()) {
+      return status;
     }
     if (out_->points.empty()) {
       return Status::InvalidArgument(
@@ -190,114 +182,12 @@ class PointReader {
     return Status::OK();
   }
 
-  const Where where_;
+  const FeatureLocation where_;
   const DatasetLimits& limits_;
   Dataset* const out_;
   int z_index_ = -1;
   bool geometry_z_ = false;
 };
-
-// Appends `curve`'s points to *line; Z values too when `keep_z`.
-Status AppendCurve(const Where& where, GIntBig fid, const OGRSimpleCurve& curve,
-                   bool keep_z, Polyline* line) {
-  for (const OGRPoint& point : curve) {
-    if (Status status = CheckFinite(where, fid, point); !status.ok()) {
-      return status;
-    }
-    line->points.push_back(Point2{point.getX(), point.getY()});
-    if (keep_z) line->values.push_back(point.getZ());
-  }
-  return Status::OK();
-}
-
-// The polylines of one breaklines feature.
-Status ReadBreakline(const Where& where, GIntBig fid, const OGRGeometry& g,
-                     bool keep_z, std::vector<Polyline>* out) {
-  switch (wkbFlatten(g.getGeometryType())) {
-    case wkbLineString: {
-      Polyline line;
-      if (Status status = AppendCurve(where, fid, *g.toLineString(),
-                                      keep_z && g.Is3D(), &line);
-          !status.ok()) {
-        return status;
-      }
-      if (line.points.size() < 2) {
-        return where.Bad(fid, "a breakline with fewer than 2 points");
-      }
-      out->push_back(std::move(line));
-      return Status::OK();
-    }
-    case wkbMultiLineString:
-      for (const OGRLineString* part : *g.toMultiLineString()) {
-        if (Status status = ReadBreakline(where, fid, *part, keep_z, out);
-            !status.ok()) {
-          return status;
-        }
-      }
-      return Status::OK();
-    default:
-      return where.Bad(fid, std::string("a ") + g.getGeometryName() +
-                                " where breaklines are expected (LineString, "
-                                "MultiLineString)");
-  }
-}
-
-// The rings of one domain feature, exterior and interior alike.
-Status ReadDomain(const Where& where, GIntBig fid, const OGRGeometry& g,
-                  std::vector<Polyline>* out) {
-  switch (wkbFlatten(g.getGeometryType())) {
-    case wkbPolygon:
-      for (const OGRLinearRing* ring : *g.toPolygon()) {
-        Polyline polyline;
-        if (Status status = AppendCurve(where, fid, *ring, false, &polyline);
-            !status.ok()) {
-          return status;
-        }
-        const auto& p = polyline.points;
-        if (p.size() > 1 && p.front().x == p.back().x &&
-            p.front().y == p.back().y) {
-          polyline.points.pop_back();  // rings close implicitly
-        }
-        if (polyline.points.size() < 3) {
-          return where.Bad(fid, "a ring with fewer than 3 distinct points");
-        }
-        out->push_back(std::move(polyline));
-      }
-      return Status::OK();
-    case wkbMultiPolygon:
-      for (const OGRPolygon* part : *g.toMultiPolygon()) {
-        if (Status status = ReadDomain(where, fid, *part, out); !status.ok()) {
-          return status;
-        }
-      }
-      return Status::OK();
-    default:
-      return where.Bad(fid, std::string("a ") + g.getGeometryName() +
-                                " where domain polygons are expected "
-                                "(Polygon, MultiPolygon)");
-  }
-}
-
-// Reads every feature of a breaklines (domain == false) or domain layer.
-Status ReadConstraintLayer(const Where& where, OGRLayer& layer, bool domain,
-                           bool keep_z, DatasetConstraints* out) {
-  size_t features = 0;
-  for (const OGRFeatureUniquePtr& feature : layer) {
-    ++features;
-    const OGRGeometry* geometry = feature->GetGeometryRef();
-    const GIntBig fid = feature->GetFID();
-    if (geometry == nullptr) return where.Bad(fid, "no geometry");
-    if (geometry->IsEmpty()) return where.Bad(fid, "empty geometry");
-    const Status status =
-        domain ? ReadDomain(where, fid, *geometry, &out->rings)
-               : ReadBreakline(where, fid, *geometry, keep_z, &out->breaklines);
-    if (!status.ok()) return status;
-  }
-  if (features == 0) {
-    return Status::InvalidArgument(where.Prefix() + " has no features");
-  }
-  return Status::OK();
-}
 
 std::string ToWkt(const OGRSpatialReference& srs) {
   char* wkt = nullptr;
@@ -364,7 +254,8 @@ Status LoadOgrDataset(const std::string& spec_text, Dataset* out,
   }
   std::vector<OGRLayer*> layers = {points};
   if (Status status =
-          PointReader(Where{spec.source, points->GetName()}, limits, &dataset)
+          PointReader(FeatureLocation{spec.source, points->GetName()}, limits,
+                      &dataset)
               .Read(*points, spec);
       !status.ok()) {
     return status;
@@ -379,9 +270,9 @@ Status LoadOgrDataset(const std::string& spec_text, Dataset* out,
       return status;
     }
     layers.push_back(layer);
-    if (Status status =
-            ReadConstraintLayer(Where{spec.source, name}, *layer, domain,
-                                dataset.has_values(), &dataset.constraints);
+    if (Status status = ReadConstraintLayer(
+            FeatureLocation{spec.source, name}, *layer, domain,
+            dataset.has_values(), &dataset.constraints);
         !status.ok()) {
       return status;
     }

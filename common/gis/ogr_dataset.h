@@ -17,8 +17,11 @@
 // is to blame: NotFound for a missing file, layer or field; InvalidArgument
 // for an unreadable source, a bad where clause, a geometry of the wrong
 // kind, an empty or non-finite geometry, a null or non-numeric z, layers in
-// different CRSs, an unknown a_srs and an empty layer; ResourceExhausted
-// past DatasetLimits::max_points.
+// different CRSs, an unknown a_srs and an empty layer, and for any failure
+// GDAL reports while it reads a feature (a corrupt file: GDAL would end the
+// layer there, and the dataset would silently lack the rest), which names
+// the feature by FID or, when GDAL could not read it, by its number in the
+// layer; ResourceExhausted past DatasetLimits::max_points.
 //
 // Thread-safety: may be called from several threads at once (GDAL dataset
 // handles are not shared; GDAL's error state is per thread).

@@ -54,9 +54,10 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
     if (name == "breaklines") field = &out->breaklines_layer;
     if (name == "domain") field = &out->domain_layer;
     if (name == "a_srs") field = &out->assigned_crs;
+    if (name == "driver") field = &out->driver;
     if (field == nullptr) {
       return UnknownSpecOption(
-          spec, name, "layer, z, where, breaklines, domain, a_srs, oo");
+          spec, name, "layer, z, where, breaklines, domain, a_srs, oo, driver");
     }
     if (!field->empty()) return error("option '" + name + "' given twice");
     if (value.empty()) return error("option '" + name + "' is empty");

@@ -18,6 +18,11 @@
 //                     ignoring the source's own (ogr2ogr -a_srs)
 //   oo=NAME=VALUE     a GDAL open option (ogr2ogr -oo), repeatable, e.g.
 //                     oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y for a CSV
+//   driver=NAME       open the source with this GDAL driver only (its short
+//                     name: GPKG, CSV, "ESRI Shapefile"; ogr2ogr -if)
+//
+// A spec that comes in a request (a Reload's) may use only what
+// untrusted_ogr_spec.h allows; the operator's own may use all of GDAL.
 //
 // Thread-safety: free functions; an OgrDatasetSpec is a plain value.
 
@@ -44,6 +49,8 @@ struct OgrDatasetSpec {
   std::string assigned_crs;
   // "NAME=VALUE" each, in the order given.
   std::vector<std::string> open_options;
+  // The only GDAL driver that may open the source; "" for any.
+  std::string driver;
 };
 
 // True when `spec` names an OGR source (the "ogr:" prefix or an OGR

@@ -1,49 +1,88 @@
 #include "common/gis/proj_objects.h"
 
+#include "common/input_text.h"
+
 namespace locator::gis {
 namespace {
 
-struct ContextDeleter {
-  void operator()(PJ_CONTEXT* ctx) const { proj_context_destroy(ctx); }
-};
+// Compound, bound and derived CRSs nest; PROJ's own objects go a few levels
+// deep at most.
+constexpr int kMaxCrsNesting = 8;
 
-// Messages quote at most this much of a CRS (a WKT can be kilobytes).
-constexpr size_t kQuotedCrsChars = 80;
+void CollectGrids(GuardedProjContext& ctx, const PJ* crs, int depth,
+                  std::vector<GridUse>* grids) {
+  if (crs == nullptr || depth > kMaxCrsNesting) return;
+  PJ_CONTEXT* const pj_ctx = ctx.get();
+  if (proj_get_type(crs) == PJ_TYPE_COMPOUND_CRS) {
+    for (int i = 0;; ++i) {
+      PjPtr part(proj_crs_get_sub_crs(pj_ctx, crs, i));
+      if (part == nullptr) break;
+      CollectGrids(ctx, part.get(), depth + 1, grids);
+    }
+    return;
+  }
+  // A bound CRS's transformation, or a derived CRS's deriving conversion.
+  if (PjPtr operation(proj_crs_get_coordoperation(pj_ctx, crs));
+      operation != nullptr) {
+    const int count =
+        proj_coordoperation_get_grid_used_count(pj_ctx, operation.get());
+    for (int i = 0; i < count; ++i) {
+      const char* name = nullptr;
+      const char* file = nullptr;
+      if (proj_coordoperation_get_grid_used(pj_ctx, operation.get(), i, &name,
+                                            &file, nullptr, nullptr, nullptr,
+                                            nullptr, nullptr)) {
+        grids->push_back(
+            GridUse{name == nullptr ? "" : name, file == nullptr ? "" : file});
+      }
+    }
+  }
+  PjPtr base(proj_get_source_crs(pj_ctx, crs));
+  CollectGrids(ctx, base.get(), depth + 1, grids);
+}
 
 }  // namespace
 
-std::string QuotedCrs(std::string_view crs) {
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on
-  // "'" + std::string(...).
-  std::string quoted = "'";
-  quoted.append(crs.substr(0, kQuotedCrsChars));
-  quoted.append(crs.size() > kQuotedCrsChars ? "...'" : "'");
-  return quoted;
+std::string QuotedCrs(std::string_view crs) { return QuotedInput(crs); }
+
+GuardedProjContext& ThreadProjContext() {
+  thread_local GuardedProjContext context(ProjFileScope::kAnyRegularFile);
+  return context;
 }
 
-PJ_CONTEXT* ThreadProjContext() {
-  thread_local std::unique_ptr<PJ_CONTEXT, ContextDeleter> context(
-      proj_context_create());
-  return context.get();
+GuardedProjContext& ThreadRequestProjContext() {
+  thread_local GuardedProjContext context(ProjFileScope::kDataDirectories);
+  return context;
 }
 
-std::string LastProjError() {
-  PJ_CONTEXT* ctx = ThreadProjContext();
+std::string LastProjError(PJ_CONTEXT* ctx) {
   const char* message = proj_context_errno_string(ctx, proj_context_errno(ctx));
   return message == nullptr ? "unknown PROJ error" : message;
 }
 
-Status CreateCrs(std::string_view crs, PjPtr* out) {
-  PJ_CONTEXT* ctx = ThreadProjContext();
+Status RefusedFileError(GuardedProjContext& ctx, std::string_view crs) {
+  const std::string refusal = ctx.TakeRefusal();
+  if (refusal.empty()) return Status::OK();
+  return Status::InvalidArgument(
+      "CRS " + QuotedCrs(crs) +
+      " names a file PROJ may not open here: " + refusal);
+}
+
+Status CreateCrs(GuardedProjContext& ctx, std::string_view crs, PjPtr* out) {
   std::string text(crs);
   if (text.starts_with("+proj=") &&
       text.find("type=crs") == std::string::npos) {
     text += " +type=crs";
   }
-  PjPtr created(text.empty() ? nullptr : proj_create(ctx, text.c_str()));
+  ctx.TakeRefusal();  // only this creation's refusals count
+  PjPtr created(text.empty() ? nullptr : proj_create(ctx.get(), text.c_str()));
+  if (Status refused = RefusedFileError(ctx, crs); !refused.ok()) {
+    return refused;
+  }
   if (created == nullptr) {
-    return Status::InvalidArgument("unknown CRS " + QuotedCrs(crs) + ": " +
-                                   (text.empty() ? "empty" : LastProjError()));
+    return Status::InvalidArgument(
+        "unknown CRS " + QuotedCrs(crs) + ": " +
+        (text.empty() ? "empty" : LastProjError(ctx.get())));
   }
   if (!proj_is_crs(created.get())) {
     return Status::InvalidArgument(
@@ -52,6 +91,12 @@ Status CreateCrs(std::string_view crs, PjPtr* out) {
   }
   *out = std::move(created);
   return Status::OK();
+}
+
+std::vector<GridUse> GridsOf(GuardedProjContext& ctx, const PJ* crs) {
+  std::vector<GridUse> grids;
+  CollectGrids(ctx, crs, 0, &grids);
+  return grids;
 }
 
 }  // namespace locator::gis

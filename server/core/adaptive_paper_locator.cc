@@ -7,6 +7,7 @@
 
 #include "server/core/hot_regions.h"
 #include "server/core/mesh_walk.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 
@@ -18,6 +19,26 @@ constexpr double kFatten = 0.1;
 bool Intersects(const BoundingBox& a, const BoundingBox& b) {
   return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y &&
          b.min_y <= a.max_y;
+}
+
+// r grown by kFatten of its size on every side. In Wide where r is wider
+// than a double (a dataset spanning +-1e308), and then clamped to the
+// doubles: a fat region must stay finite.
+BoundingBox Fatten(const BoundingBox& r) {
+  const BoundingBox fat = r.Inflated(kFatten);
+  if (IsFinite({fat.min_x, fat.min_y}) && IsFinite({fat.max_x, fat.max_y}))
+      [[likely]] {
+    return fat;
+  }
+  const auto grow = [](double lo, double hi, double* fat_lo, double* fat_hi) {
+    const Wide margin = (Wide{hi} - lo) * kFatten;
+    *fat_lo = static_cast<double>(std::max(lo - margin, -kMaxDouble));
+    *fat_hi = static_cast<double>(std::min(hi + margin, kMaxDouble));
+  };
+  BoundingBox wide;
+  grow(r.min_x, r.max_x, &wide.min_x, &wide.max_x);
+  grow(r.min_y, r.max_y, &wide.min_y, &wide.max_y);
+  return wide;
 }
 
 BoundingBox FaceBox(const ServingMesh& mesh, uint32_t f) {
@@ -79,7 +100,7 @@ void AdaptivePaperLocator::Tune() const {
   s->histogram = counts_;
   s->regions = FindHotRegions(histogram_.grid(), counts_);
   for (const BoundingBox& r : s->regions) {
-    s->fat.push_back(r.Inflated(kFatten));
+    s->fat.push_back(Fatten(r));
     SampleRegion(s->fat.back(), s.get());
   }
   // A region whose sampling found nothing cannot serve queries.
@@ -93,7 +114,8 @@ void AdaptivePaperLocator::SampleRegion(const BoundingBox& fat,
   // breadth-first search over the faces that overlap it, then draw the
   // samples uniformly without replacement. Same distribution as the paper's
   // rejection sampling, with a bounded running time.
-  const Point2 centre{(fat.min_x + fat.max_x) / 2, (fat.min_y + fat.max_y) / 2};
+  const Point2 centre =
+      Midpoint({fat.min_x, fat.min_y}, {fat.max_x, fat.max_y});
   const uint32_t seed = FaceNear(mesh_, mesh_.DefaultStart(), centre);
   std::vector<std::pair<Point2, uint32_t>> edges;
   std::unordered_set<uint32_t> seen{seed};
@@ -110,7 +132,7 @@ void AdaptivePaperLocator::SampleRegion(const BoundingBox& fat,
       if (hull || f < n) {
         const Point2& a = mesh_.CornerPoint(f, Ccw(i));
         const Point2& b = mesh_.CornerPoint(f, Cw(i));
-        const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+        const Point2 mid = Midpoint(a, b);
         if (fat.Contains(mid)) edges.emplace_back(mid, f);
       }
       if (!hull && !seen.count(n) && Intersects(FaceBox(mesh_, n), fat)) {

@@ -30,10 +30,12 @@ std::array<double, 3> ExactBarycentric(const Point2& a, const Point2& b,
 }
 
 // Barycentric coordinates of q in (a, b, c) from cross products in `Real`,
-// into *result; false when Real cannot resolve them: when the area is
-// within Real's rounding error of its terms, or when a term leaves the
-// range where that error is relative (above kMaxMagnitude, below
-// kMinMagnitude), or a coordinate is not finite.
+// into *result; false when Real cannot resolve them to within kTolerance:
+// when a cross product's rounding error (a few epsilon times the magnitude
+// of its terms) is too large against the area, or a term leaves the range
+// where that error is relative (above max_magnitude, below min_magnitude),
+// or a coordinate is not finite. A needle's area is small against its
+// terms, so its coordinates need more precision than a plump triangle's.
 template <class Real>
 bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
                    const Point2& q, Real min_magnitude, Real max_magnitude,
@@ -42,20 +44,30 @@ bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
                   Real* magnitude) {
     const Real left = (Real{u.x} - o.x) * (Real{v.y} - o.y);
     const Real right = (Real{u.y} - o.y) * (Real{v.x} - o.x);
-    if (magnitude != nullptr) *magnitude = std::abs(left) + std::abs(right);
+    *magnitude = std::abs(left) + std::abs(right);
     return left - right;
   };
   Real magnitude = 0;
   const Real area = cross(a, b, c, &magnitude);
   // Each difference and product rounds once: a relative error of a few
   // epsilon per term; 8 epsilon leaves a margin.
-  constexpr Real kRelativeError = 8 * std::numeric_limits<Real>::epsilon();
+  constexpr Real kRoundoff = 8 * std::numeric_limits<Real>::epsilon();
   if (!(magnitude >= min_magnitude && magnitude <= max_magnitude &&
-        std::abs(area) > kRelativeError * magnitude)) {
+        std::abs(area) > kRoundoff * magnitude)) {
     return false;
   }
-  const Real ba = cross(q, b, c, nullptr) / area;
-  const Real bb = cross(q, c, a, nullptr) / area;
+  Real magnitude_a = 0;
+  Real magnitude_b = 0;
+  const Real ba = cross(q, b, c, &magnitude_a) / area;
+  const Real bb = cross(q, c, a, &magnitude_b) / area;
+  // A coordinate n / area is off by (the error of n + |n / area| times
+  // that of the area) / |area|; at most kTolerance.
+  constexpr Real kTolerance = 0x1p-40;
+  const Real bound = kTolerance / kRoundoff * std::abs(area);
+  if (!(magnitude_a + std::abs(ba) * magnitude <= bound &&
+        magnitude_b + std::abs(bb) * magnitude <= bound)) {
+    return false;
+  }
   *result = {static_cast<double>(ba), static_cast<double>(bb),
              static_cast<double>(1 - ba - bb)};
   for (const double coordinate : *result) {
@@ -66,14 +78,15 @@ bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
 
 }  // namespace
 
-// Barycentric coordinates of q in (a, b, c); the location type then pins
-// the exact zeros and ones. The cross products square coordinate
-// differences, so in double they overflow beyond ~1e154 and underflow below
-// ~1e-154. Most triangles are well inside that range and take double;
-// the rest take long double, whose exponent range covers every double;
-// and when the area is within long double's rounding error of its terms (a
-// needle triangle spanning 1e-300..1e150), it may be 0 or have the wrong
-// sign, so the answer comes from ExactBarycentric.
+// Barycentric coordinates of q in (a, b, c), to within 2^-40; the location
+// type then pins the exact zeros and ones. The cross products square
+// coordinate differences, so in double they overflow beyond ~1e154 and
+// underflow below ~1e-154. Most triangles are well inside that range and
+// plump enough for double; the rest take long double, whose exponent range
+// covers every double and whose precision resolves needles 2^11 times
+// thinner; and the thinnest needles (one spanning 1e-300..1e150, whose
+// area in long double may be 0 or have the wrong sign) take
+// ExactBarycentric.
 std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
                                   const Point2& c, const Point2& q) {
   std::array<double, 3> result;

@@ -1,6 +1,6 @@
 // Circles through three points: CGAL's exact in-circle predicate
-// (side_of_oriented_circle) and its circumcentre construction, on plain
-// points, like orientation.h. The kernel's types stay in this header.
+// (side_of_oriented_circle) on plain points, like orientation.h. The
+// kernel's types stay in this header.
 //
 // Thread-safety: pure functions.
 
@@ -25,14 +25,6 @@ inline bool InsideCircumcircle(const Point2& a, const Point2& b,
   using circle_internal::ToCgal;
   return CGAL::side_of_oriented_circle(ToCgal(a), ToCgal(b), ToCgal(c),
                                        ToCgal(q)) == CGAL::ON_POSITIVE_SIDE;
-}
-
-// The centre of the circle through a, b and c (not collinear), rounded.
-inline Point2 Circumcenter(const Point2& a, const Point2& b, const Point2& c) {
-  using circle_internal::ToCgal;
-  const circle_internal::CgalPoint m =
-      CGAL::circumcenter(ToCgal(a), ToCgal(b), ToCgal(c));
-  return Point2{m.x(), m.y()};
 }
 
 }  // namespace locator

@@ -53,6 +53,7 @@ Status ParsePolyText(std::string_view text, std::string_view filename,
       }
       segment.points.push_back(ds.points[i]);
     }
+    segment.name = Cat("segment ", f.field[0], " at ", where.Prefix());
     ds.constraints.segments.push_back(std::move(segment));
   }
 

@@ -124,6 +124,10 @@ class WktReader {
   Status Error(const Token& at, std::string_view what) const {
     return Where{filename_, at.line}.Error(what);
   }
+  // "file:line" of a token.
+  std::string At(const Token& t) const {
+    return Where{filename_, t.line}.Prefix();
+  }
 
   Status Expect(TokenKind kind, std::string_view what) {
     const Token t = tokens_.Take();
@@ -237,13 +241,15 @@ class WktReader {
   }
 
   Status ReadLineString(const Token& tag) {
+    const Token start = tokens_.Peek();
     Coordinates c;
     Status s = ReadCoordinates(tag, &c);
     if (!s.ok()) return s;
     if (c.points.size() < 2) {
       return Error(tag, "a LINESTRING needs at least 2 points");
     }
-    out_->breaklines.push_back({std::move(c.points), std::move(c.z)});
+    out_->breaklines.push_back({std::move(c.points), std::move(c.z),
+                                Cat("the line string at ", At(start))});
     return Status::OK();
   }
 
@@ -258,7 +264,8 @@ class WktReader {
       if (s.ok()) s = CheckRing(start, ring, &c);
       if (s.ok() && ring > 0) s = CheckHoleInside(start, ring, c, exterior);
       if (!s.ok()) return s;
-      out_->rings.push_back({std::move(c.points), std::move(c.z)});
+      out_->rings.push_back({std::move(c.points), std::move(c.z),
+                             Cat(RingName(ring), " at ", At(start))});
       if (tokens_.Peek().kind != TokenKind::kComma) break;
       tokens_.Take();
     }
@@ -268,9 +275,12 @@ class WktReader {
 
   // A ring is closed (its last point repeats its first, which is dropped:
   // Polyline rings close implicitly) and has at least 3 distinct points.
+  static std::string RingName(size_t ring) {
+    return ring == 0 ? "the exterior ring" : Cat("interior ring ", ring);
+  }
+
   Status CheckRing(const Token& start, size_t ring, Coordinates* c) const {
-    const std::string name =
-        ring == 0 ? "the exterior ring" : Cat("interior ring ", ring);
+    const std::string name = RingName(ring);
     if (c->points.size() < 4) {
       return Error(start, Cat(name, " has ", c->points.size(),
                               " point(s); a ring needs at least 4 (the "

@@ -171,10 +171,10 @@ class Engine {
   // The surface along `line` (see profile.h): its exact breakpoints,
   // options.samples evenly spaced samples and the gaps outside the hull or
   // the domain. The walk to line[0] starts where the strategy would start a
-  // locate of it. InvalidArgument for fewer than 2 points, a non-finite one
-  // or an interpolation the dataset refuses; ResourceExhausted when the
-  // line would enter more than options.max_faces triangles (see
-  // TraceProfile in profile_trace.h).
+  // locate of it. InvalidArgument for fewer than 2 points, a non-finite one,
+  // a line longer than the largest double or an interpolation the dataset
+  // refuses; ResourceExhausted when the line would enter more than
+  // options.max_faces triangles (see TraceProfile in profile_trace.h).
   Status TraceProfile(std::span<const Point2> line,
                       const ProfileOptions& options, Profile* out) const;
 

@@ -35,15 +35,19 @@ inline uint32_t HilbertIndex(uint32_t x, uint32_t y) {
 }
 
 // The Hilbert position of p's cell in a 2^16 x 2^16 grid over `box`; points
-// outside the box take the nearest border cell.
+// outside the box take the nearest border cell. Coordinates are halved
+// first, so that no difference overflows for a box or a p anywhere in the
+// doubles; halving is exact but in the subnormal range (far below a cell),
+// so keys are the same as from the plain differences.
 inline uint32_t HilbertKey(const Point2& p, const BoundingBox& box) {
   constexpr double kCells = 65536;
-  const auto cell = [](double v, double lo, double extent) {
-    const double t = extent > 0 ? (v - lo) / extent * kCells : 0;
-    return static_cast<uint32_t>(std::clamp(t, 0.0, kCells - 1));
+  const auto cell = [](double v, double lo, double hi) {
+    const double extent = hi * 0.5 - lo * 0.5;
+    const double t = extent > 0 ? (v * 0.5 - lo * 0.5) / extent * kCells : 0;
+    return static_cast<uint32_t>(t > 0 ? std::min(t, kCells - 1) : 0);
   };
-  return HilbertIndex(cell(p.x, box.min_x, box.width()),
-                      cell(p.y, box.min_y, box.height()));
+  return HilbertIndex(cell(p.x, box.min_x, box.max_x),
+                      cell(p.y, box.min_y, box.max_y));
 }
 
 // The indices of `points` sorted along the Hilbert curve over `box` (ties

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <utility>
 
+#include "server/core/wide_math.h"
+
 namespace locator {
 
 namespace {
@@ -54,9 +56,11 @@ void HotRegionTuner::MeasureCrossingRatios() {
   crossing_measured_ = true;
   // A segment of length L along x crosses about L * sum|dy| / area edges
   // (and along y, L * sum|dx| / area), summing over the edges around it.
+  // The sums are in Wide: an edge of a dataset spanning +-1e308 is longer
+  // than a double, and so may be a sum of many short ones.
   const size_t cells = grid_.cells();
-  std::vector<double> sum_dx(cells, 0.0), sum_dy(cells, 0.0);
-  double all_dx = 0, all_dy = 0;
+  std::vector<Wide> sum_dx(cells, 0), sum_dy(cells, 0);
+  Wide all_dx = 0, all_dy = 0;
   // Each edge once: from the face with the smaller index, or the hull side.
   for (uint32_t f = 0; f < mesh_.num_faces(); ++f) {
     for (int i = 0; i < 3; ++i) {
@@ -64,22 +68,25 @@ void HotRegionTuner::MeasureCrossingRatios() {
       if (!ServingMesh::IsHull(n) && n < f) continue;
       const Point2& a = mesh_.CornerPoint(f, Ccw(i));
       const Point2& b = mesh_.CornerPoint(f, Cw(i));
-      const size_t c = grid_.CellOf({(a.x + b.x) / 2, (a.y + b.y) / 2});
-      sum_dx[c] += std::abs(a.x - b.x);
-      sum_dy[c] += std::abs(a.y - b.y);
-      all_dx += std::abs(a.x - b.x);
-      all_dy += std::abs(a.y - b.y);
+      const size_t c = grid_.CellOf(Midpoint(a, b));
+      const Wide dx = std::abs(Wide{a.x} - b.x);
+      const Wide dy = std::abs(Wide{a.y} - b.y);
+      sum_dx[c] += dx;
+      sum_dy[c] += dy;
+      all_dx += dx;
+      all_dy += dy;
     }
   }
-  const double aspect = grid_.cell_width() / grid_.cell_height();
+  const Wide aspect = grid_.CellAspect();
   for (size_t c = 0; c < cells; ++c) {
     // Cells without edges of both directions take the dataset's ratio.
     const bool own = sum_dx[c] > 0 && sum_dy[c] > 0;
-    const double dx = own ? sum_dx[c] : all_dx;
-    const double dy = own ? sum_dy[c] : all_dy;
+    const Wide dx = own ? sum_dx[c] : all_dx;
+    const Wide dy = own ? sum_dy[c] : all_dy;
     crossing_ratio_[c] =
-        dx > 0 && dy > 0 ? std::clamp(aspect * dy / dx, 1 / kMaxCrossingRatio,
-                                      kMaxCrossingRatio)
+        dx > 0 && dy > 0 ? static_cast<double>(std::clamp(
+                               aspect * dy / dx, 1 / Wide{kMaxCrossingRatio},
+                               Wide{kMaxCrossingRatio}))
                          : 1.0;
   }
 }

@@ -1,7 +1,5 @@
 #include "server/core/mesh_cache.h"
 
-#include <malloc.h>
-
 #include <cerrno>
 #include <cinttypes>
 #include <cstdio>
@@ -9,6 +7,7 @@
 #include <memory>
 #include <utility>
 
+#include "common/freed_memory.h"
 #include "server/core/dataset_fingerprint.h"
 #include "server/core/file_io.h"
 #include "server/core/given_mesh.h"
@@ -17,27 +16,8 @@
 #define XXH_INLINE_ALL
 #include <xxhash.h>
 
-// Sanitizers replace malloc: glibc's arenas then stay uninitialised, and
-// malloc_trim() would set them up unsynchronised, racing another thread's
-// call (a crash seen under ASAN with two datasets built at once).
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define LOCATOR_MALLOC_REPLACED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define LOCATOR_MALLOC_REPLACED 1
-#endif
-
 namespace locator {
 namespace {
-
-// Returns the pages of freed blocks to the system (glibc's malloc only).
-void ReturnFreedMemory() {
-#ifndef LOCATOR_MALLOC_REPLACED
-  malloc_trim(0);
-#endif
-}
 
 std::string GeneratedKeyPath(const std::string& dir,
                              const GeneratorSpec& spec) {

@@ -29,9 +29,13 @@ struct NaturalNeighbor {
 // Sibson's coordinates of q into `out` (cleared first). `f` is a face whose
 // closed triangle contains q. Preconditions: the mesh has no constrained
 // edges (it is Delaunay), q is finite. Returns false, with `out` empty, when q
-// is outside the closed convex hull. On a vertex: that vertex with weight 1. On
-// a hull edge: its two endpoints, weighted linearly along the edge (the limit
-// of Sibson's coordinates there).
+// is outside the closed convex hull (or, never seen, on the line of an edge
+// of its conflict zone's boundary). On a vertex: that vertex with weight 1.
+// On a hull edge: its two endpoints, weighted linearly along the edge (the
+// limit of Sibson's coordinates there). The areas are computed in long
+// double in a frame scaled to the conflict zone, so the weights are finite
+// and right at every scale of the dataset, and again exactly where needles
+// near q make the long double ones doubtful.
 bool SibsonCoordinates(const ServingMesh& mesh, uint32_t f, const Point2& q,
                        std::vector<NaturalNeighbor>* out);
 

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
+#include "common/input_text.h"
 #include "common/str_cat.h"
 #include "server/core/mesh_walk.h"
 #include "server/core/profile_walk.h"
 #include "server/core/surface_value.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 
@@ -29,15 +32,37 @@ class ProfileBuilder {
                  const ProfileOptions& options)
       : mesh_(mesh), line_(line), options_(options) {}
 
+  // The length of every segment and where it starts along the line.
+  // InvalidArgument when the line is longer than the largest double: its
+  // distances could not be represented.
+  Status Measure() {
+    double offset = 0;
+    Wide total = 0;
+    for (size_t s = 0; s + 1 < line_.size(); ++s) {
+      const Wide length = Distance(line_[s], line_[s + 1]);
+      total += length;
+      segment_start_.push_back(offset);
+      segment_length_.push_back(Narrow(length));
+      offset += segment_length_.back();
+      if (total > kMaxDouble || !std::isfinite(offset)) {
+        return Status::InvalidArgument(StrCat(
+            {"profile: the line up to line point ", std::to_string(s + 1),
+             " is longer than the largest double, ",
+             NumberText(std::numeric_limits<double>::max()),
+             ": distances along it cannot be represented; the line's length "
+             "must stay within that"}));
+      }
+    }
+    return Status::OK();
+  }
+
   Status Trace(uint32_t start) {
     uint32_t hint = start;
-    double offset = 0;
     for (size_t s = 0; s + 1 < line_.size(); ++s) {
       const Point2& p = line_[s];
       const Point2& q = line_[s + 1];
-      const double length = std::hypot(q.x - p.x, q.y - p.y);
-      segment_start_.push_back(offset);
-      segment_length_.push_back(length);
+      const double offset = segment_start_[s];
+      const double length = segment_length_[s];
       MeshWalkOutcome at;
       Status status = WalkTo(hint, p, s, offset, &at);
       if (!status.ok()) return status;
@@ -56,11 +81,11 @@ class ProfileBuilder {
                 ServingMesh::kNoFace);
       }
       stretches_.push_back(trace.last);
-      offset += length;
       hint = trace.end_face;
     }
     MeshWalkOutcome at;
-    return WalkTo(hint, line_.back(), line_.size() - 2, offset, &at);
+    return WalkTo(hint, line_.back(), line_.size() - 2,
+                  segment_start_.back() + segment_length_.back(), &at);
   }
 
   void Finish(Profile* out) {
@@ -101,6 +126,7 @@ class ProfileBuilder {
   Status WalkTo(uint32_t hint, const Point2& v, size_t s, double distance,
                 MeshWalkOutcome* at) {
     *at = Walk(mesh_, hint, v);
+    if (stops_.empty()) first_face_ = at->face;
     faces_ += at->faces_visited;
     if (faces_ > options_.max_faces) return TooManyFaces(options_.max_faces);
     AddStop(ProfilePointKind::kLineVertex, v, distance, s,
@@ -151,66 +177,53 @@ class ProfileBuilder {
                                       segment_start_.end(), distance) -
                      segment_start_.begin() - 1;
     *segment = static_cast<uint32_t>(s);
-    const Point2& p = line_[s];
-    const Point2& q = line_[s + 1];
     const double f =
         segment_length_[s] > 0
             ? std::clamp((distance - segment_start_[s]) / segment_length_[s],
                          0.0, 1.0)
             : 0.0;
-    return {p.x + f * (q.x - p.x), p.y + f * (q.y - p.y)};
+    return Lerp(line_[s], line_[s + 1], f);
   }
 
+  // Each sample is located on its own, by a walk from the previous one's
+  // face: where the distances cannot tell the line's stops apart (a 1e160
+  // long line over unit triangles puts them all at one distance), the
+  // stretches could not say which one a sample is in.
   void AddSamples(Profile* out) const {
     const uint32_t n = options_.samples;
-    size_t j = 0;  // the stretch the previous sample was in
+    uint32_t hint = first_face_;
     for (uint32_t i = 0; i < n; ++i) {
       ProfilePoint sample;
       sample.kind = ProfilePointKind::kSample;
-      sample.distance = i == 0       ? 0
-                        : i == n - 1 ? out->length
-                                     : out->length * i / (n - 1);
+      // In Wide, where length * i cannot overflow.
+      sample.distance =
+          i == 0       ? 0
+          : i == n - 1 ? out->length
+                       : static_cast<double>(Wide{out->length} * i / (n - 1));
       sample.point = PointAt(sample.distance, &sample.segment);
       if (n > 1 && i == n - 1) sample.point = line_.back();
-      while (j + 1 < stretches_.size() &&
-             stops_[j + 1].point.distance < sample.distance) {
-        ++j;
-      }
-      // At a stop between a gap and a defined stretch, the defined one.
-      size_t k = j;
-      while (stretches_[k].face == ServingMesh::kNoFace &&
-             k + 1 < stretches_.size() &&
-             stops_[k + 1].point.distance <= sample.distance) {
-        ++k;
-      }
-      const uint32_t face = stretches_[k].face;
+      const MeshWalkOutcome at = Walk(mesh_, hint, sample.point);
+      hint = at.face;
+      // On the domain's boundary, the defined side.
+      const uint32_t face = ClosedDomainFace(mesh_, at);
       if (face != ServingMesh::kNoFace) {
         sample.triangle_id = face;
         if (mesh_.has_values()) {
           sample.has_value = true;
           sample.value =
-              options_.interpolation == Interpolation::kLinear
-                  ? Lerp(stops_[k].point, stops_[k + 1].point, sample.distance)
-                  : ValueAt(mesh_, face, sample.point, options_.interpolation);
+              ValueAt(mesh_, face, sample.point, options_.interpolation);
         }
       }
       out->samples.push_back(sample);
     }
   }
 
-  // The linear value at `distance` between two stops with values.
-  static double Lerp(const ProfilePoint& a, const ProfilePoint& b,
-                     double distance) {
-    const double span = b.distance - a.distance;
-    if (span <= 0) return a.value;
-    const double f = std::clamp((distance - a.distance) / span, 0.0, 1.0);
-    return a.value + f * (b.value - a.value);
-  }
-
   const ServingMesh& mesh_;
   const std::span<const Point2> line_;
   const ProfileOptions& options_;
   uint64_t faces_ = 0;
+  // Where the walk to the line's first vertex ended.
+  uint32_t first_face_ = 0;
   std::vector<Stop> stops_;
   std::vector<ProfileRegion> stretches_;
   // Per segment: the distance where it starts, and its length.
@@ -236,7 +249,8 @@ Status TraceProfile(const ServingMesh& mesh, uint32_t start,
     }
   }
   ProfileBuilder builder(mesh, line, options);
-  const Status status = builder.Trace(start);
+  Status status = builder.Measure();
+  if (status.ok()) status = builder.Trace(start);
   if (!status.ok()) return status;
   builder.Finish(out);
   return Status::OK();

@@ -22,7 +22,9 @@ namespace locator {
 // mesh.has_values(): breakpoints and samples take ValueAt() with
 // options.interpolation (the caller has checked CheckInterpolation).
 // ResourceExhausted when the walk would enter more than options.max_faces
-// faces; InvalidArgument for fewer than 2 points or a non-finite one.
+// faces; InvalidArgument for fewer than 2 points, a non-finite one, or a
+// line longer than the largest double (its distances would overflow).
+// Every point, distance and value of the profile is finite.
 [[nodiscard]] Status TraceProfile(const ServingMesh& mesh, uint32_t start,
                                   std::span<const Point2> line,
                                   const ProfileOptions& options, Profile* out);

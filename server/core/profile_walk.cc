@@ -6,14 +6,12 @@
 
 #include "common/str_cat.h"
 #include "server/core/orientation.h"
+#include "server/core/segment_crossing.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 
 namespace {
-
-double Cross(const Point2& o, const Point2& u, const Point2& v) {
-  return (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
-}
 
 // -1, 0 or 1 as a is before, at or after b, lexicographically (x, then y):
 // CGAL's compare_xy, exact on doubles.
@@ -106,13 +104,18 @@ class SegmentWalker {
   void LeaveHull() {
     Finish({ServingMesh::kNoFace, LocationType::kOutsideConvexHull});
   }
+  // Stops at `point`, which is on the segment: its fraction comes from
+  // projecting it. In Wide: the squares of coordinate differences overflow
+  // a double beyond ~1e154 and underflow below ~1e-154.
   void Stop(const ProfileRegion& before, ProfilePointKind kind,
             const Point2& point) {
-    const double dx = q_.x - p_.x;
-    const double dy = q_.y - p_.y;
-    const double t =
-        ((point.x - p_.x) * dx + (point.y - p_.y) * dy) / (dx * dx + dy * dy);
-    out_->stops.push_back({before, kind, point, std::clamp(t, 0.0, 1.0)});
+    const Wide dx = Wide{q_.x} - p_.x;
+    const Wide dy = Wide{q_.y} - p_.y;
+    const Wide t = ((Wide{point.x} - p_.x) * dx + (Wide{point.y} - p_.y) * dy) /
+                   (dx * dx + dy * dy);
+    out_->stops.push_back(
+        {before, kind, point,
+         static_cast<double>(std::clamp(t, Wide{0}, Wide{1}))});
   }
   // Stops at corner v of face f.
   void StopAtVertex(const ProfileRegion& before, uint32_t f, uint32_t v) {
@@ -121,15 +124,10 @@ class SegmentWalker {
     vertex_ = v;
     state_ = State::kAtVertex;
   }
-  // Where the line crosses the edge (a, b), rounded.
+  // Where the segment crosses the edge (a, b), rounded.
   void StopOnEdge(const ProfileRegion& before, uint32_t a, uint32_t b) {
-    const Point2& pa = PointOf(a);
-    const Point2& pb = PointOf(b);
-    const double oa = Cross(p_, q_, pa);
-    const double ob = Cross(p_, q_, pb);
-    const double s = oa == ob ? 0.5 : std::clamp(oa / (oa - ob), 0.0, 1.0);
     Stop(before, ProfilePointKind::kEdgeCrossing,
-         {pa.x + s * (pb.x - pa.x), pa.y + s * (pb.y - pa.y)});
+         SegmentCrossing(p_, q_, PointOf(a), PointOf(b)));
   }
   // Crosses edge i of face_ (already recorded, if at all) into its
   // neighbour.

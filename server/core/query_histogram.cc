@@ -1,6 +1,9 @@
 #include "server/core/query_histogram.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "server/core/wide_math.h"
 
 namespace locator {
 
@@ -11,20 +14,33 @@ int QueryHistogram::ThreadShard() {
   return shard;
 }
 
+namespace {
+
+// size / (hi - lo); in Wide for a box wider than the largest double, and
+// at most the largest double for a box narrower than a few denormals.
+double CellsPerUnit(int size, double lo, double hi) {
+  const double span = hi - lo;
+  const Wide cells =
+      std::isfinite(span) ? Wide{size / span} : size / (Wide{hi} - lo);
+  return static_cast<double>(std::min(cells, kMaxDouble));
+}
+
+}  // namespace
+
 GridGeometry::GridGeometry(const BoundingBox& box, int size)
     : box_(box), size_(size < 1 ? 1 : size) {
   if (!(box_.width() > 0)) box_.max_x = box_.min_x + 1;
   if (!(box_.height() > 0)) box_.max_y = box_.min_y + 1;
-  inv_w_ = size_ / box_.width();
-  inv_h_ = size_ / box_.height();
+  inv_w_ = CellsPerUnit(size_, box_.min_x, box_.max_x);
+  inv_h_ = CellsPerUnit(size_, box_.min_y, box_.max_y);
   max_ = std::nextafter(static_cast<double>(size_), 0.0);
 }
 
 BoundingBox GridGeometry::CellBox(int column, int row) const {
-  const double w = box_.width() / size_;
-  const double h = box_.height() / size_;
-  return BoundingBox{box_.min_x + column * w, box_.min_y + row * h,
-                     box_.min_x + (column + 1) * w, box_.min_y + (row + 1) * h};
+  return BoundingBox{GridLine(box_.min_x, box_.max_x, column, size_),
+                     GridLine(box_.min_y, box_.max_y, row, size_),
+                     GridLine(box_.min_x, box_.max_x, column + 1, size_),
+                     GridLine(box_.min_y, box_.max_y, row + 1, size_)};
 }
 
 QueryHistogram::QueryHistogram(const GridGeometry& grid) : grid_(grid) {
@@ -77,8 +93,7 @@ void QueryHistogram::Drain(std::vector<double>* into) {
 }
 
 size_t QueryHistogram::MemoryBytes() const {
-  return stride_ * kShards *
-         (sizeof(std::atomic<uint32_t>) + sizeof(uint32_t));
+  return stride_ * kShards * (sizeof(std::atomic<uint32_t>) + sizeof(uint32_t));
 }
 
 }  // namespace locator

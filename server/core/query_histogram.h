@@ -43,15 +43,20 @@ class GridGeometry {
   size_t CellOf(const Point2& p) const {
     return static_cast<size_t>(Row(p.y)) * size_ + Column(p.x);
   }
-  // Fractional grid coordinates of p, clamped into [0, size).
+  // Fractional grid coordinates of p, clamped into [0, size). For a box
+  // wider than the largest double, an x further than that from min_x takes
+  // the last column (the difference overflows): it only steers walk starts.
   double GridX(double x) const { return Clamp((x - box_.min_x) * inv_w_); }
   double GridY(double y) const { return Clamp((y - box_.min_y) * inv_h_); }
   int Column(double x) const { return static_cast<int>(GridX(x)); }
   int Row(double y) const { return static_cast<int>(GridY(y)); }
   // The rectangle of cell (column, row).
   BoundingBox CellBox(int column, int row) const;
+  // A cell's size (infinite for a grid of 1 over a box wider than the
+  // largest double), and its width over its height (never NaN).
   double cell_width() const { return 1.0 / inv_w_; }
   double cell_height() const { return 1.0 / inv_h_; }
+  double CellAspect() const { return inv_h_ / inv_w_; }
 
  private:
   // Clamps in double before any integer conversion: far-away (or 1e308)

@@ -14,6 +14,7 @@
 #include "common/geometry.h"
 #include "common/status.h"
 #include "server/core/interpolation.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 
@@ -24,19 +25,25 @@ struct RasterSpec {
   double nodata = std::numeric_limits<double>::quiet_NaN();
   Interpolation interpolation = Interpolation::kLinear;
 
-  double cell_width() const { return box.width() / width; }
-  double cell_height() const { return box.height() / height; }
+  // Box width / width and box height / height, also for a box wider or
+  // higher than the largest double (infinite only when the cell itself is).
+  double cell_width() const { return Step(box.min_x, box.max_x, width); }
+  double cell_height() const { return Step(box.min_y, box.max_y, height); }
   uint64_t cells() const { return uint64_t{width} * height; }
-  // The centre of cell (col, row).
+  // The centre of cell (col, row): finite for any box of finite doubles.
   Point2 CellCentre(uint32_t col, uint32_t row) const {
-    return Point2{box.min_x + (col + 0.5) * cell_width(),
-                  box.max_y - (row + 0.5) * cell_height()};
+    return Point2{GridLine(box.min_x, box.max_x, col + 0.5, width),
+                  GridLine(box.max_y, box.min_y, row + 0.5, height)};
   }
 };
 
+// OK if `box` can bound a raster: finite, with min < max on both axes;
+// InvalidArgument saying which is not otherwise.
+[[nodiscard]] Status CheckRasterBox(const BoundingBox& box);
+
 // OK if `spec` describes a raster: a finite box with min < max on both
-// axes, width and height >= 1, and finite cell sizes; InvalidArgument
-// naming the problem otherwise.
+// axes, width and height >= 1, and cell sizes that are positive finite
+// doubles; InvalidArgument naming the problem otherwise.
 [[nodiscard]] Status CheckRasterSpec(const RasterSpec& spec);
 
 }  // namespace locator

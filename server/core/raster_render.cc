@@ -1,15 +1,16 @@
 #include "server/core/raster_render.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
+#include "common/input_text.h"
 #include "server/core/mesh_walk.h"
 #include "server/core/surface_value.h"
 
 namespace locator {
 
-Status CheckRasterSpec(const RasterSpec& spec) {
-  const BoundingBox& b = spec.box;
+Status CheckRasterBox(const BoundingBox& b) {
   if (!IsFinite(Point2{b.min_x, b.min_y}) ||
       !IsFinite(Point2{b.max_x, b.max_y})) {
     return Status::InvalidArgument("the raster's box must be finite");
@@ -18,16 +19,27 @@ Status CheckRasterSpec(const RasterSpec& spec) {
     return Status::InvalidArgument(
         "the raster's box must have min_x < max_x and min_y < max_y");
   }
+  return Status::OK();
+}
+
+Status CheckRasterSpec(const RasterSpec& spec) {
+  const BoundingBox& b = spec.box;
+  if (Status s = CheckRasterBox(b); !s.ok()) return s;
   if (spec.width == 0 || spec.height == 0) {
     return Status::InvalidArgument("the raster needs width and height >= 1");
   }
-  if (!std::isfinite(b.width()) || !std::isfinite(b.height()) ||
-      !(spec.cell_width() > 0) || !(spec.cell_height() > 0)) {
+  const double cell_width = spec.cell_width();
+  const double cell_height = spec.cell_height();
+  if (!(cell_width > 0) || !(cell_height > 0) || !std::isfinite(cell_width) ||
+      !std::isfinite(cell_height)) {
     return Status::InvalidArgument(
-        "the raster's cells are not representable: box " +
-        std::to_string(b.width()) + " x " + std::to_string(b.height()) +
+        "the raster's cells are not representable: the box " +
+        PointText({b.min_x, b.min_y}) + " - " + PointText({b.max_x, b.max_y}) +
         " over " + std::to_string(spec.width) + " x " +
-        std::to_string(spec.height) + " cells");
+        std::to_string(spec.height) + " cells makes cells of " +
+        NumberText(cell_width) + " x " + NumberText(cell_height) +
+        "; a cell's width and height must be positive doubles, at most " +
+        NumberText(std::numeric_limits<double>::max()));
   }
   return Status::OK();
 }

@@ -1,6 +1,7 @@
 #include "server/core/serving_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <queue>
 #include <unordered_set>
@@ -11,6 +12,7 @@
 #include "server/core/hilbert.h"
 #include "server/core/orientation.h"
 #include "server/core/segment_distance.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 
@@ -261,10 +263,21 @@ void ServingMesh::Describe(uint32_t f, LocationType type, int feature,
   }
   if (has_values()) {
     out->has_value = true;
-    for (int i = 0; i < 3; ++i) {
-      out->value += out->barycentric[i] * a_.values[Corner(f, i)];
-    }
+    out->value = CornerValue(f, out->barycentric);
   }
+}
+
+double ServingMesh::CornerValue(uint32_t f,
+                                const std::array<double, 3>& b) const {
+  double value = 0;
+  for (int i = 0; i < 3; ++i) value += b[i] * a_.values[Corner(f, i)];
+  if (std::isfinite(value)) [[likely]] {
+    return value;
+  }
+  // Values near +-DBL_MAX overflowed the double sum.
+  ConvexSum wide;
+  for (int i = 0; i < 3; ++i) wide.Add(b[i], a_.values[Corner(f, i)]);
+  return wide.value();
 }
 
 }  // namespace locator

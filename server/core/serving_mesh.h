@@ -173,6 +173,10 @@ class ServingMesh {
   // With Detail::kLocation it leaves barycentric and value out.
   void Describe(uint32_t f, LocationType type, int feature, const Point2& q,
                 LocateResult* out, Detail detail = Detail::kFull) const;
+  // The sum of b[i] times the value of corner i of f: the linear value at
+  // barycentrics b. Finite, between the corners' values, even for values
+  // near +-DBL_MAX. Precondition: has_values().
+  double CornerValue(uint32_t f, const std::array<double, 3>& b) const;
   // For a point on edge/vertex `feature` (kEdge/kVertex) of the
   // out-of-domain face f, an in-domain face sharing it (updating f and
   // feature); false if none.

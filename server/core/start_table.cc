@@ -5,15 +5,18 @@
 #include <utility>
 
 #include "server/core/mesh_walk.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 
 namespace {
 
+// Finite for any cell of any grid (GridLine), so every walk has a finite
+// target.
 Point2 SubCellCentre(const BoundingBox& cell, const SubGrid& sub_grid,
                      uint32_t sx, uint32_t sy) {
-  return Point2{cell.min_x + (sx + 0.5) * cell.width() / sub_grid.columns,
-                cell.min_y + (sy + 0.5) * cell.height() / sub_grid.rows};
+  return Point2{GridLine(cell.min_x, cell.max_x, sx + 0.5, sub_grid.columns),
+                GridLine(cell.min_y, cell.max_y, sy + 0.5, sub_grid.rows)};
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "server/core/barycentric.h"
 #include "server/core/natural_neighbor.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
 namespace {
@@ -14,18 +15,16 @@ double LinearValue(const ServingMesh& mesh, uint32_t f, const Point2& q) {
   const std::array<double, 3> b =
       Barycentric(mesh.CornerPoint(f, 0), mesh.CornerPoint(f, 1),
                   mesh.CornerPoint(f, 2), q);
-  double value = 0;
-  for (int i = 0; i < 3; ++i) {
-    value += b[i] * mesh.arrays().values[mesh.Corner(f, i)];
-  }
-  return value;
+  return mesh.CornerValue(f, b);
 }
 
+// The squared distances are in Wide: in double, every corner would be at
+// distance inf from a q 1e160 away, and the nearest lost.
 double NearestValue(const ServingMesh& mesh, uint32_t f, const Point2& q) {
   int best = 0;
-  double best_distance = -1;
+  Wide best_distance = -1;
   for (int i = 0; i < 3; ++i) {
-    const double d = SquaredDistance(mesh.CornerPoint(f, i), q);
+    const Wide d = SquaredDistanceWide(mesh.CornerPoint(f, i), q);
     const bool nearer =
         best_distance < 0 || d < best_distance ||
         (d == best_distance && mesh.PublicId(mesh.Corner(f, i)) <
@@ -42,15 +41,16 @@ double NaturalNeighborValue(const ServingMesh& mesh, uint32_t f,
                             const Point2& q) {
   thread_local std::vector<NaturalNeighbor> neighbors;
   // q is in the closed triangle f, so inside the closed hull: Sibson's
-  // coordinates exist.
+  // coordinates exist (but for the degenerate case SibsonCoordinates
+  // allows, where the linear value is the best at hand).
   if (!SibsonCoordinates(mesh, f, q, &neighbors)) {
     return LinearValue(mesh, f, q);
   }
-  double value = 0;
+  ConvexSum value;
   for (const NaturalNeighbor& n : neighbors) {
-    value += n.weight * mesh.arrays().values[n.vertex];
+    value.Add(n.weight, mesh.arrays().values[n.vertex]);
   }
-  return value;
+  return value.value();
 }
 
 }  // namespace

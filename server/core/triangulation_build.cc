@@ -2,39 +2,21 @@
 // rings, and the crossings between constraints (see triangulation_builder.h).
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <numeric>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
+#include "common/input_text.h"
 #include "server/core/triangulation.h"
 #include "server/core/triangulation_builder.h"
+#include "server/core/wide_math.h"
 
 namespace locator {
-
-namespace {
-
-double Distance(const Point2& a, const Point2& b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
-
-}  // namespace
-
-std::string Triangulation::Builder::PointText(const Point2& p) {
-  // The shortest text that reads back as the same double.
-  const auto shortest = [](double v) {
-    char text[32];
-    const auto [end, error] = std::to_chars(text, text + sizeof(text), v);
-    return std::string(text, error == std::errc() ? end : text);
-  };
-  return "(" + shortest(p.x) + ", " + shortest(p.y) + ")";
-}
 
 Status Triangulation::Builder::InsertPoints() {
   const std::vector<Point2>& pts = dataset_.points;
@@ -135,7 +117,8 @@ Status Triangulation::Builder::InsertPolylines(
     const std::string& what) {
   for (size_t l = 0; l < lines.size(); ++l) {
     const Polyline& line = lines[l];
-    const std::string name = what + " " + std::to_string(l);
+    const std::string name =
+        line.name.empty() ? what + " " + std::to_string(l) : line.name;
     if (!line.values.empty() && line.values.size() != line.points.size()) {
       return Status::InvalidArgument(
           name + " has " + std::to_string(line.values.size()) + " values for " +
@@ -149,7 +132,9 @@ Status Triangulation::Builder::InsertPolylines(
     std::vector<Vertex_handle> vertices;
     for (size_t k = 0; k < line.points.size(); ++k) {
       const Point2& p = line.points[k];
-      const std::string point = name + " point " + std::to_string(k);
+      const std::string point =
+          line.name.empty() ? name + " point " + std::to_string(k)
+                            : "point " + std::to_string(k) + " of " + name;
       if (!IsFinite(p)) {
         return Status::InvalidArgument(point + " has a non-finite coordinate");
       }
@@ -165,8 +150,15 @@ Status Triangulation::Builder::InsertPolylines(
     }
     const size_t segments = closed ? vertices.size() : vertices.size() - 1;
     for (size_t k = 0; k < segments; ++k) {
+      // "ring 0 segment 2", or after the source's own name: "segment 2 of
+      // the exterior ring at a.wkt:3", and for a polyline of one segment (a
+      // .poly segment) that name alone.
+      const std::string segment =
+          line.name.empty() ? name + " segment " + std::to_string(k)
+          : segments == 1   ? name
+                            : "segment " + std::to_string(k) + " of " + name;
       AddSegment(vertices[k], vertices[(k + 1) % vertices.size()], kind,
-                 name + " segment " + std::to_string(k));
+                 segment);
     }
   }
   return Status::OK();
@@ -207,11 +199,12 @@ Status Triangulation::Builder::NameCrossings() {
       const auto [where, fresh] = claimed.emplace(v, k);
       if (fresh && !created) continue;
       if (fresh) {
-        const double ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
-        const double av = Distance(FromCgal(a->point()), FromCgal(v->point()));
-        const double w = ab > 0 ? std::min(1.0, av / ab) : 0.0;
+        // In Wide: the distances and the values may reach +-DBL_MAX.
+        const Wide ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
+        const Wide av = Distance(FromCgal(a->point()), FromCgal(v->point()));
+        const Wide w = ab > 0 ? std::min(Wide{1}, av / ab) : 0;
         v->info() = VertexInfo{static_cast<int64_t>(t_.by_input_.size()),
-                               (1 - w) * a->info().value + w * b->info().value};
+                               Lerp(a->info().value, b->info().value, w)};
         t_.by_input_.push_back(v);
         continue;
       }

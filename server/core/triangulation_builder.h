@@ -75,9 +75,6 @@ class Triangulation::Builder {
   int RingCount(Face_handle f, int i) const;
   bool IsBarrier(Face_handle f, int i) const;
 
-  // "(x, y)", for messages.
-  static std::string PointText(const Point2& p);
-
   bool IsBoundary(ConstraintKind kind) const {
     return kind == ConstraintKind::kRing || kind == ConstraintKind::kSegment ||
            kind == ConstraintKind::kMesh;

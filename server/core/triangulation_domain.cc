@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/input_text.h"
 #include "server/core/triangulation.h"
 #include "server/core/triangulation_builder.h"
 

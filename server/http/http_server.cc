@@ -8,6 +8,8 @@
 #include <optional>
 #include <utility>
 
+#include "common/freed_memory.h"
+
 namespace locator {
 namespace {
 
@@ -28,40 +30,87 @@ std::string Unbracketed(const std::string& host) {
   return host;
 }
 
+// Whether `error` is the parser's complaint about what the client sent (as
+// opposed to the client closing or the connection failing).
+bool IsParseError(const beast::error_code& error) {
+  return error.category() ==
+             http::make_error_code(http::error::bad_method).category() &&
+         error != http::error::end_of_stream &&
+         error != http::error::partial_message;
+}
+
+// The client's address, IPv4-mapped IPv6 addresses as IPv4 ("" if the
+// socket has none: it is already closed).
+std::string ClientAddress(const tcp::socket& socket) {
+  beast::error_code error;
+  asio::ip::address address = socket.remote_endpoint(error).address();
+  if (error) return "";
+  if (address.is_v6() && address.to_v6().is_v4_mapped()) {
+    address = asio::ip::make_address_v4(asio::ip::v4_mapped, address.to_v6());
+  }
+  return address.to_string();
+}
+
 }  // namespace
 
 // One client connection: reads a request, hands it to the handler, writes
 // its reply, and repeats while the client keeps the connection alive. Owned
 // by the completion handlers in flight (shared_from_this) or, while the
 // handler works, by the server's awaiting_reply_, so it lives exactly as
-// long as it has work pending and never outlives the server. Its members
-// are only touched on the server's thread.
-class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
+// long as it has work pending and never outlives the server. It is in the
+// server's connection table from Read() on (a refused one never is) and
+// idle there while it waits for a request header. Its members are only
+// touched on the server's thread.
+class HttpServer::Connection : public std::enable_shared_from_this<Connection>,
+                               public ConnectionTable::Member {
  public:
-  Connection(HttpServer* server, tcp::socket socket)
-      : server_(server), stream_(std::move(socket)) {
-    ++server_->open_connections_;
+  Connection(HttpServer* server, tcp::socket socket, std::string address)
+      : server_(server),
+        stream_(std::move(socket)),
+        address_(std::move(address)) {}
+  ~Connection() {
+    server_->connections_.Close(this);
+    if (refused_) --server_->refusing_;
   }
-  ~Connection() { --server_->open_connections_; }
+
+  const std::string& address() const { return address_; }
 
   void Read() {
     parser_.emplace();
     parser_->header_limit(kMaxHeaderBytes);
-    parser_->body_limit(server_->max_body_bytes_);
+    parser_->body_limit(server_->limits_.max_body_bytes);
     stream_.expires_after(kIdleTimeout);
+    server_->connections_.SetIdle(this, true);
     http::async_read_header(
         stream_, buffer_, *parser_,
         [self = shared_from_this()](beast::error_code error, size_t) {
+          self->server_->connections_.SetIdle(self.get(), false);
           // A Content-Length over the body limit fails here, with the
-          // header read. Closed, timed out, malformed or over the header
-          // limit: drop the connection (the destructor closes the socket).
+          // header read. Closed, timed out or shed: drop the connection
+          // (the destructor closes the socket).
           if (error == http::error::body_limit) {
-            self->Dispatch(/*body_too_large=*/true);
+            self->Dispatch(HttpRequest::Problem::kBodyTooLarge);
+          } else if (error == http::error::header_limit) {
+            self->DispatchProblem(HttpRequest::Problem::kHeaderTooLarge, "");
+          } else if (IsParseError(error)) {
+            self->DispatchProblem(HttpRequest::Problem::kMalformed,
+                                  error.message());
           } else if (!error) {
             self->ReadBody();
           }
         });
   }
+
+  // Answers a connection the table refused with `problem`, without reading
+  // anything.
+  void Refuse(HttpRequest::Problem problem) {
+    refused_ = true;
+    ++server_->refusing_;
+    DispatchProblem(problem, address_);
+  }
+
+  // ConnectionTable::Member: the pending read ends (operation_aborted).
+  void Shed() override { stream_.close(); }
 
  private:
   void ReadBody() {
@@ -69,11 +118,14 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
       http::async_read(
           stream_, buffer_, *parser_,
           [self = shared_from_this()](beast::error_code error, size_t) {
-            // A chunked body grew over the limit.
+            // A chunked body grew over the limit, or a chunk is malformed.
             if (error == http::error::body_limit) {
-              self->Dispatch(/*body_too_large=*/true);
+              self->Dispatch(HttpRequest::Problem::kBodyTooLarge);
+            } else if (IsParseError(error)) {
+              self->DispatchProblem(HttpRequest::Problem::kMalformed,
+                                    error.message());
             } else if (!error) {
-              self->Dispatch(/*body_too_large=*/false);
+              self->Dispatch(HttpRequest::Problem::kNone);
             }
           });
     };
@@ -92,7 +144,8 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
   }
 
   // Hands the request read so far to the handler.
-  void Dispatch(bool body_too_large) {
+  void Dispatch(HttpRequest::Problem problem) {
+    const bool body_too_large = problem == HttpRequest::Problem::kBodyTooLarge;
     const http::request<http::string_body>& message = parser_->get();
     HttpRequest request;
     request.method = message.method() == http::verb::head
@@ -110,13 +163,28 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
       for (char& c : name) c = static_cast<char>(std::tolower(c));
       request.headers.emplace_back(std::move(name), std::string(field.value()));
     }
-    request.body_too_large = body_too_large;
+    request.problem = problem;
     if (!body_too_large) request.body = std::move(parser_->get().body());
     // An unread body leaves the stream mid-message: close after replying.
     keep_alive_ = message.keep_alive() && !body_too_large;
     linger_ = body_too_large;
     head_ = message.method() == http::verb::head;
     version_ = message.version();
+    server_->handler_(std::move(request),
+                      server_->AwaitReply(shared_from_this()));
+  }
+
+  // Hands a request that could not be read to the handler: it holds
+  // nothing but the problem. The stream is at an unknown place in what
+  // the client sends, so the connection closes after the answer.
+  void DispatchProblem(HttpRequest::Problem problem, std::string detail) {
+    HttpRequest request;
+    request.problem = problem;
+    request.problem_detail = std::move(detail);
+    keep_alive_ = false;
+    linger_ = true;
+    head_ = false;
+    version_ = 11;
     server_->handler_(std::move(request),
                       server_->AwaitReply(shared_from_this()));
   }
@@ -140,8 +208,13 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
     http::async_write(
         stream_, response_,
         [self = shared_from_this()](beast::error_code error, size_t) {
+          // A large body would otherwise stay allocated while the
+          // connection waits for its next request.
+          const size_t written = self->response_.body().size();
+          self->response_ = {};
+          if (written >= kTrimAfterBytes) ReturnFreedMemory();
           if (error) return;
-          if (!self->response_.keep_alive()) {
+          if (!self->keep_alive_) {
             beast::error_code ignored;
             self->stream_.socket().shutdown(tcp::socket::shutdown_send,
                                             ignored);
@@ -169,6 +242,8 @@ class HttpServer::Connection : public std::enable_shared_from_this<Connection> {
 
   HttpServer* const server_;
   beast::tcp_stream stream_;
+  const std::string address_;
+  bool refused_ = false;  // counted in the server's refusing_
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
   http::response<http::string_body> response_;  // kept alive while written
@@ -246,18 +321,19 @@ std::optional<std::string_view> HttpRequest::Header(
   return std::nullopt;
 }
 
-HttpServer::HttpServer(size_t max_body_bytes, HttpHandler handler)
-    : max_body_bytes_(max_body_bytes),
+HttpServer::HttpServer(HttpLimits limits, HttpHandler handler)
+    : limits_(limits),
       handler_(std::move(handler)),
+      connections_(limits.max_connections, limits.max_connections_per_address),
       reply_gate_(std::make_shared<ReplyGate>(&io_context_)),
       acceptor_(io_context_),
       accept_retry_(io_context_) {}
 
-Status HttpServer::Start(const std::string& host, int port,
-                         size_t max_body_bytes, HttpHandler handler,
+Status HttpServer::Start(const std::string& host, int port, HttpLimits limits,
+                         HttpHandler handler,
                          std::unique_ptr<HttpServer>* server) {
   std::unique_ptr<HttpServer> created(
-      new HttpServer(max_body_bytes, std::move(handler)));
+      new HttpServer(limits, std::move(handler)));
   if (Status status = created->Listen(host, port); !status.ok()) {
     return status;
   }
@@ -308,12 +384,28 @@ void HttpServer::Accept() {
       });
       return;
     }
-    // Over the limit the socket is closed as it goes out of scope.
-    if (open_connections_ < kMaxConnections) {
-      std::make_shared<Connection>(this, std::move(socket))->Read();
-    }
+    Open(std::move(socket));
     Accept();
   });
+}
+
+void HttpServer::Open(tcp::socket socket) {
+  std::string address = ClientAddress(socket);
+  if (address.empty()) return;  // gone already
+  auto connection =
+      std::make_shared<Connection>(this, std::move(socket), std::move(address));
+  const ConnectionTable::Refusal refusal =
+      connections_.Open(connection.get(), connection->address());
+  if (refusal == ConnectionTable::Refusal::kNone) {
+    connection->Read();
+    return;
+  }
+  // Beyond kMaxRefusing the socket closes as `connection` goes.
+  if (refusing_ < kMaxRefusing) {
+    connection->Refuse(refusal == ConnectionTable::Refusal::kAddressFull
+                           ? HttpRequest::Problem::kAddressFull
+                           : HttpRequest::Problem::kServerBusy);
+  }
 }
 
 }  // namespace locator

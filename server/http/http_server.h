@@ -5,17 +5,27 @@
 // Owns an io_context, the listening socket, every connection and one thread
 // that runs them all, asynchronously, so it never shares a thread with the
 // gRPC server and a slow client holds nothing but its own connection.
-// Limits: kMaxConnections at once (further ones are closed on accept),
-// kMaxHeaderBytes per request header, HttpOptions::max_body_bytes per
-// request body, kIdleTimeout for a connection waiting for (or sending) a
-// message. A body over the limit is not read: the handler gets the request
-// with body_too_large set and an empty body, and after its answer the
-// connection reads and drops what the client still sends (up to
-// kMaxLingerBytes, for at most kLingerTimeout, so that the client gets to
-// read the answer) and closes. "Expect: 100-continue" is answered before the
-// body is read. HEAD reaches the handler as GET, and its answer goes out
-// without the body. A malformed request closes the connection. Keep-alive is
-// honoured.
+//
+// Limits (HttpLimits): at most max_connections open and
+// max_connections_per_address from one client address (ConnectionTable:
+// when all are open, the connection idle longest is shed for a new one);
+// kMaxHeaderBytes per request header, max_body_bytes per request body,
+// kIdleTimeout for a connection waiting for (or sending) a message.
+//
+// A request that cannot be served as sent still reaches the handler, with
+// HttpRequest::problem set, so that every client gets an answer rather than
+// a reset: a body over the limit (not read: the handler gets the header
+// and an empty body), a header over the limit, a malformed request (an
+// absurd Content-Length, a bad request line), and a connection refused by
+// the limits above (an empty request, answered before anything is read; at
+// most kMaxRefusing of these at once, further ones are closed). After such
+// an answer the connection reads and drops what the client still sends (up
+// to kMaxLingerBytes, for at most kLingerTimeout, so that the client gets to
+// read the answer) and closes. "Expect: 100-continue" is answered before
+// the body is read. HEAD reaches the handler as GET, and its answer goes
+// out without the body. Keep-alive is honoured. After writing a body of at
+// least kTrimAfterBytes the server returns freed memory to the system
+// (ReturnFreedMemory): glibc would otherwise keep a large reply's pages.
 //
 // Thread-safety: the handler is called on the server's thread, one request
 // at a time, and must return quickly; the reply function may be called from
@@ -45,6 +55,7 @@
 
 #include "common/mutex.h"
 #include "common/status.h"
+#include "server/http/connection_table.h"
 
 namespace locator {
 
@@ -57,8 +68,21 @@ struct HttpRequest {
   // Header fields as sent, names in lower case.
   std::vector<std::pair<std::string, std::string>> headers;
   std::string body;
-  // The body was over the limit and was not read.
-  bool body_too_large = false;
+
+  // What kept the request from being read whole (see above); the
+  // connection closes after its answer.
+  enum class Problem {
+    kNone,
+    kBodyTooLarge,    // the header is there, the body was not read
+    kHeaderTooLarge,  // nothing else is there
+    kMalformed,       // nothing else is there; problem_detail says what
+    kAddressFull,     // refused: the client address has its share open
+    kServerBusy,      // refused: every connection is busy
+  };
+  Problem problem = Problem::kNone;
+  // For kMalformed, the parser's complaint; for the refusals, the client's
+  // address.
+  std::string problem_detail;
 
   // The value of header `name` (lower case), or nullopt.
   std::optional<std::string_view> Header(std::string_view name) const;
@@ -77,26 +101,27 @@ using HttpReply = std::function<void(HttpResponse response)>;
 // Handles one request (see the thread-safety note above).
 using HttpHandler = std::function<void(HttpRequest request, HttpReply reply)>;
 
-struct HttpOptions {
+struct HttpLimits {
   // Larger request bodies are not read (see above).
   size_t max_body_bytes = size_t{16} << 20;
-  // Origins allowed to call the server from web pages (CORS; see
-  // CorsPolicy); empty: CORS off.
-  std::vector<std::string> cors_origins;
+  // Connections open at once, in all and from one client address.
+  size_t max_connections = 512;
+  size_t max_connections_per_address = 64;
 };
 
 class HttpServer {
  public:
-  static constexpr size_t kMaxConnections = 512;
   static constexpr size_t kMaxHeaderBytes = 8 * 1024;
   static constexpr std::chrono::seconds kIdleTimeout{30};
   static constexpr size_t kMaxLingerBytes = size_t{64} << 20;
   static constexpr std::chrono::seconds kLingerTimeout{5};
+  static constexpr size_t kMaxRefusing = 64;
+  static constexpr size_t kTrimAfterBytes = size_t{1} << 20;
 
   // Listens on host:port (port 0: the OS picks) and starts serving with
-  // `handler`, reading bodies up to `max_body_bytes`. IOError naming the
-  // address if it cannot be bound.
-  static Status Start(const std::string& host, int port, size_t max_body_bytes,
+  // `handler` within `limits`. IOError naming the address if it cannot be
+  // bound.
+  static Status Start(const std::string& host, int port, HttpLimits limits,
                       HttpHandler handler, std::unique_ptr<HttpServer>* server);
 
   // Stops accepting, closes every connection and joins the thread.
@@ -127,9 +152,12 @@ class HttpServer {
     boost::asio::io_context* io_context_ GUARDED_BY(mu_);  // null: closed
   };
 
-  HttpServer(size_t max_body_bytes, HttpHandler handler);
+  HttpServer(HttpLimits limits, HttpHandler handler);
   Status Listen(const std::string& host, int port);
   void Accept();
+  // Server's thread: opens a connection on `socket`, or answers it with
+  // the refusal, as the connection table decides.
+  void Open(boost::asio::ip::tcp::socket socket);
   // Server's thread: keeps `connection` until its reply; returns the reply
   // function that answers it.
   HttpReply AwaitReply(std::shared_ptr<Connection> connection);
@@ -137,12 +165,13 @@ class HttpServer {
   void Answer(uint64_t id, HttpResponse response);
   void Abandon(uint64_t id);
 
-  const size_t max_body_bytes_;
+  const HttpLimits limits_;
   const HttpHandler handler_;
-  // Connections open now; only touched on the server's thread. Declared
-  // before io_context_: connections still queued in it decrement it while
-  // it is destroyed.
-  size_t open_connections_ = 0;
+  // The connections open now, and the refused ones still being answered;
+  // only touched on the server's thread. Declared before io_context_:
+  // connections still queued in it leave them while it is destroyed.
+  ConnectionTable connections_;
+  size_t refusing_ = 0;
   boost::asio::io_context io_context_;
   const std::shared_ptr<ReplyGate> reply_gate_;
   // Connections waiting for their handler's reply, by reply id; only

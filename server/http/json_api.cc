@@ -1,14 +1,19 @@
 #include "server/http/json_api.h"
 
 #include <google/protobuf/util/json_util.h>
+#include <prometheus/gauge.h>
 
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
 
 #include "common/proto_json.h"
 #include "server/http/api_error.h"
+#include "server/http/grid_json.h"
+#include "server/status_mapping.h"
+#include "server/surface_convert.h"
 
 namespace locator {
 namespace {
@@ -72,24 +77,45 @@ grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
   return grpc::Status::OK;
 }
 
+// `registry`, or a new one kept in `own` when it is null.
+prometheus::Registry& RegistryOr(prometheus::Registry* registry,
+                                 std::shared_ptr<prometheus::Registry>* own) {
+  if (registry != nullptr) return *registry;
+  *own = std::make_shared<prometheus::Registry>();
+  return **own;
+}
+
 }  // namespace
 
 // One line per API method.
 const JsonApi::DatasetRoute JsonApi::kDatasetRoutes[] = {
     {"locate", AccessPolicy::Scope::kData,
      &JsonApi::ServeUnary<v1::LocateRequest, v1::LocateResponse,
-                          &LocatorService::RunLocate>},
-    {"locateBatch", AccessPolicy::Scope::kData, &JsonApi::ServeLocateBatch},
+                          &LocatorService::RunLocate>,
+     std::numeric_limits<size_t>::max()},
+    {"locateBatch", AccessPolicy::Scope::kData, &JsonApi::ServeLocateBatch,
+     kCheapBatchBodyBytes},
     {"profile", AccessPolicy::Scope::kData,
      &JsonApi::ServeUnary<v1::ProfileRequest, v1::ProfileResponse,
-                          &LocatorService::RunProfile>},
-    {"grid", AccessPolicy::Scope::kData,
-     &JsonApi::ServeUnary<v1::GridRequest, v1::GridResponse,
-                          &LocatorService::RunGrid>},
+                          &LocatorService::RunProfile>,
+     0},
+    {"grid", AccessPolicy::Scope::kData, &JsonApi::ServeGrid, 0},
 };
 
-JsonApi::JsonApi(LocatorService* service)
-    : service_(service), workers_(kThreads) {}
+JsonApi::JsonApi(LocatorService* service, JsonApiOptions options,
+                 prometheus::Registry* registry)
+    : service_(service),
+      options_(options),
+      running_(prometheus::BuildGauge()
+                   .Name("locator_http_calls_running")
+                   .Help("HTTP/JSON API calls running, by lane")
+                   .Register(RegistryOr(registry, &own_registry_))),
+      waiting_(prometheus::BuildGauge()
+                   .Name("locator_http_calls_waiting")
+                   .Help("HTTP/JSON API calls queued for a thread, by lane")
+                   .Register(RegistryOr(registry, &own_registry_))),
+      cheap_("cheap", kCheapThreads, running_, waiting_),
+      expensive_("expensive", kExpensiveThreads, running_, waiting_) {}
 
 JsonApi::~JsonApi() { Shutdown(); }
 
@@ -152,6 +178,8 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
       reply(MethodNotAllowed(request, "POST"));
       return;
     }
+    // The deadline runs from the call's arrival: time queued counts.
+    const CallDeadline deadline = service_->DefaultDeadline();
     LocatorService::Admission call;
     if (grpc::Status refused = service_->Admit(request.Header("authorization"),
                                                route.scope, name, &call);
@@ -159,10 +187,16 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
       reply(ApiError(refused));
       return;
     }
-    workers_.Submit([this, serve = route.serve, call = std::move(call),
-                     request = std::move(request),
-                     reply = std::move(reply)]() mutable {
-      (this->*serve)(std::move(call), request, std::move(reply));
+    ApiLane& lane =
+        request.body.size() <= route.cheap_up_to_bytes ? cheap_ : expensive_;
+    lane.Submit([this, serve = route.serve, deadline, call = std::move(call),
+                 request = std::move(request),
+                 reply = std::move(reply)]() mutable {
+      if (deadline.Passed()) {
+        reply(ApiError(deadline.ExceededStatus("waiting for a thread")));
+        return;
+      }
+      (this->*serve)(std::move(call), deadline, request, std::move(reply));
     });
     return;
   }
@@ -171,6 +205,7 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
 
 template <typename Request, typename Response, auto run>
 void JsonApi::ServeUnary(LocatorService::Admission call,
+                         const CallDeadline& /*deadline*/,
                          const HttpRequest& request, HttpReply reply) {
   Request parsed;
   if (grpc::Status bad = ParseBody(request, call.dataset->name(), &parsed);
@@ -184,6 +219,7 @@ void JsonApi::ServeUnary(LocatorService::Admission call,
 }
 
 void JsonApi::ServeLocateBatch(LocatorService::Admission call,
+                               const CallDeadline& deadline,
                                const HttpRequest& request, HttpReply reply) {
   // Both live until the batch has finished, which may be on another thread.
   struct Batch {
@@ -200,7 +236,7 @@ void JsonApi::ServeLocateBatch(LocatorService::Admission call,
   service_->RunLocateBatch(
       std::move(call), batch->request,
       BatchLocator::CallControl{
-          .deadline = service_->DefaultDeadline(),
+          .deadline = deadline,
           .cancelled = nullptr,
           .finish =
               [batch, reply = std::move(reply)](const grpc::Status& status) {
@@ -208,6 +244,38 @@ void JsonApi::ServeLocateBatch(LocatorService::Admission call,
                                   : ApiError(status));
               }},
       &batch->response);
+}
+
+void JsonApi::ServeGrid(LocatorService::Admission call,
+                        const CallDeadline& deadline,
+                        const HttpRequest& request, HttpReply reply) {
+  v1::GridRequest parsed;
+  if (grpc::Status bad = ParseBody(request, call.dataset->name(), &parsed);
+      !bad.ok()) {
+    reply(ApiError(bad));
+    return;
+  }
+  // The HTTP limit is checked first, so that its error names its flag.
+  RasterSpec spec;
+  if (Status shape = FromGridRequest(parsed, options_.max_grid_cells, &spec);
+      shape.code() == Status::Code::kResourceExhausted) {
+    reply(ApiError(grpc::Status(
+        grpc::StatusCode::RESOURCE_EXHAUSTED,
+        shape.message() +
+            " (--http-max-grid-cells: an HTTP :grid answers in one JSON "
+            "text; the gRPC Grid streams up to --max-grid-cells)")));
+    return;
+  }
+  if (grpc::Status refused = service_->GridSpec(call, parsed, &spec);
+      !refused.ok()) {
+    reply(ApiError(refused));
+    return;
+  }
+  std::string json;
+  const grpc::Status status = GridJson(*call.engine, spec, deadline, &json);
+  reply(status.ok() ? HttpResponse{.content_type = kJsonContentType,
+                                   .body = std::move(json)}
+                    : ApiError(status));
 }
 
 }  // namespace locator

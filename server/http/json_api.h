@@ -20,42 +20,65 @@
 //
 // Every call is admitted by LocatorService::Admit, as a gRPC call is (the
 // "authorization: Bearer <token>" header, the same scopes, the drain), and
-// runs the service's own Run*() method, so the answers, limits and errors
-// are the gRPC ones. An error is the gRPC status as an ApiError (HTTP status
-// by HttpStatusFor); malformed JSON is 400 naming the parse error, an
-// unknown path 404, a method a path does not take 405 with Allow. A
-// LocateBatch is held to the server's default deadline (504 past it): HTTP
-// carries none of its own.
+// runs the service's own Run*() method (a grid: GridSpec and GridJson), so
+// the answers, limits and errors are the gRPC ones, and a :grid is also held
+// to JsonApiOptions::max_grid_cells, since its answer is one JSON text. An
+// error is the gRPC status as an ApiError (HTTP status by HttpStatusFor);
+// malformed JSON is 400 naming the parse error, an unknown path 404, a
+// method a path does not take 405 with Allow. HTTP carries no deadline, so
+// every call is held to the server's default deadline from its arrival
+// (504 past it): a call still queued then is not run, and a batch or grid
+// stops between blocks.
 //
-// Admission runs on the HTTP server's thread; parsing, locating and
-// printing on the API's own worker threads (kThreads), and a large batch
-// also on the service's batch workers.
+// Admission and ListDatasets run on the HTTP server's thread; the dataset
+// methods in one of two lanes (ApiLane): "cheap" (kCheapThreads threads)
+// runs :locate and a :locateBatch of at most kCheapBatchBodyBytes, and
+// "expensive" (kExpensiveThreads) runs the larger batches, :profile and
+// :grid, so that a cheap call never waits behind an expensive one. A large
+// batch also uses the service's batch workers.
 //
-// Owns its workers. Thread-safety: Handle() and Shutdown() may be called
-// from any thread.
+// Owns its lanes. Thread-safety: Handle() and Shutdown() may be called from
+// any thread.
 
 #ifndef LOCATOR_SERVER_HTTP_JSON_API_H_
 #define LOCATOR_SERVER_HTTP_JSON_API_H_
 
+#include <prometheus/registry.h>
+
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <string_view>
 
+#include "server/call_deadline.h"
 #include "server/drain_gate.h"
+#include "server/http/api_lane.h"
 #include "server/http/http_server.h"
 #include "server/locator_service.h"
-#include "server/worker_pool.h"
 
 namespace locator {
 
+struct JsonApiOptions {
+  // A :grid of more cells fails with RESOURCE_EXHAUSTED
+  // (--http-max-grid-cells): its answer is one JSON text of about 20 bytes
+  // per cell, so the default keeps it near 20 MB.
+  uint64_t max_grid_cells = uint64_t{1} << 20;
+};
+
 class JsonApi {
  public:
-  // Threads that parse, run and print API calls.
-  static constexpr size_t kThreads = 2;
+  static constexpr size_t kCheapThreads = 2;
+  static constexpr size_t kExpensiveThreads = 1;
+  // A :locateBatch body up to this size (a few thousand points) is cheap.
+  static constexpr size_t kCheapBatchBodyBytes = 64 * 1024;
   // Where the API's paths start.
   static constexpr std::string_view kPathPrefix = "/v1/";
 
-  // Serves `service` (not owned; it must outlive the API).
-  explicit JsonApi(LocatorService* service);
+  // Serves `service` (not owned; it must outlive the API) within `options`,
+  // with the lanes' gauges in `registry` (null: a registry of its own,
+  // which nothing reads).
+  explicit JsonApi(LocatorService* service, JsonApiOptions options = {},
+                   prometheus::Registry* registry = nullptr);
   // Shutdown().
   ~JsonApi();
 
@@ -71,9 +94,10 @@ class JsonApi {
   void Shutdown();
 
   // The API method of a dataset: POST /v1/datasets/{name}:{method}. Runs
-  // on a worker with the admitted call and the request whose body it
-  // parses, and answers through `reply`.
+  // in a lane with the admitted call, its deadline and the request whose
+  // body it parses, and answers through `reply`.
   using DatasetMethod = void (JsonApi::*)(LocatorService::Admission call,
+                                          const CallDeadline& deadline,
                                           const HttpRequest& request,
                                           HttpReply reply);
 
@@ -81,28 +105,38 @@ class JsonApi {
   // A unary call: parses the body into Request, runs `run` and answers its
   // Response.
   template <typename Request, typename Response, auto run>
-  void ServeUnary(LocatorService::Admission call, const HttpRequest& request,
-                  HttpReply reply);
+  void ServeUnary(LocatorService::Admission call, const CallDeadline& deadline,
+                  const HttpRequest& request, HttpReply reply);
   void ServeLocateBatch(LocatorService::Admission call,
+                        const CallDeadline& deadline,
                         const HttpRequest& request, HttpReply reply);
+  void ServeGrid(LocatorService::Admission call, const CallDeadline& deadline,
+                 const HttpRequest& request, HttpReply reply);
   // POST /v1/datasets/{name}:{method}.
   void ServeDatasetMethod(HttpRequest request, std::string name,
                           std::string method, HttpReply reply);
   // GET /v1/datasets.
   void ServeListDatasets(const HttpRequest& request, HttpReply reply);
 
-  // The method table: one line per API method of a dataset.
+  // The method table: one line per API method of a dataset. A call whose
+  // body has at most cheap_up_to_bytes runs in the cheap lane.
   struct DatasetRoute {
     std::string_view method;
     AccessPolicy::Scope scope;
     DatasetMethod serve;
+    size_t cheap_up_to_bytes;
   };
   static const DatasetRoute kDatasetRoutes[];
 
   LocatorService* const service_;
+  const JsonApiOptions options_;
   // Counts the calls whose reply is pending, for the destructor.
   DrainGate pending_;
-  WorkerPool workers_;  // last: stopped first
+  std::shared_ptr<prometheus::Registry> own_registry_;  // when given none
+  prometheus::Family<prometheus::Gauge>& running_;
+  prometheus::Family<prometheus::Gauge>& waiting_;
+  ApiLane cheap_;  // last two: stopped first
+  ApiLane expensive_;
 };
 
 }  // namespace locator

@@ -100,6 +100,18 @@ JsonWriter& JsonWriter::Number(double value) {
   return *this;
 }
 
+JsonWriter& JsonWriter::ProtoNumber(double value) {
+  if (std::isnan(value)) return String("NaN");
+  if (std::isinf(value)) return String(value > 0 ? "Infinity" : "-Infinity");
+  return Number(value);
+}
+
+JsonWriter& JsonWriter::Raw(std::string_view json) {
+  BeforeValue();
+  text_.append(json);
+  return *this;
+}
+
 JsonWriter& JsonWriter::Integer(uint64_t value) {
   BeforeValue();
   text_ += std::to_string(value);

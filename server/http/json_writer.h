@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace locator {
@@ -28,12 +29,27 @@ class JsonWriter {
   JsonWriter& String(std::string_view value);
   // Shortest text that reads back as `value`; null if it is not finite.
   JsonWriter& Number(double value);
+  // As protobuf's JSON mapping writes a double: Number(), but the strings
+  // "NaN", "Infinity" and "-Infinity" where it is not finite.
+  JsonWriter& ProtoNumber(double value);
   JsonWriter& Integer(uint64_t value);
   JsonWriter& Bool(bool value);
   JsonWriter& Null();
+  // A value that is already JSON text (not checked).
+  JsonWriter& Raw(std::string_view json);
 
+  // Room for `bytes` of text in all, so that a large text grows once.
+  void Reserve(size_t bytes) { text_.reserve(bytes); }
   // The text written so far.
   const std::string& text() const { return text_; }
+  // Moves the text out; the writer is empty afterwards.
+  std::string TakeText() {
+    std::string text = std::move(text_);
+    text_.clear();
+    empty_.clear();
+    after_key_ = false;
+    return text;
+  }
 
  private:
   // Writes the comma that separates a value from its predecessor.

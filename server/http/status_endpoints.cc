@@ -114,13 +114,14 @@ HttpResponse FileOf(std::span<const EmbeddedFile> files,
 StatusEndpoints::StatusEndpoints(StatusSources sources)
     : sources_(std::move(sources)) {}
 
-HttpResponse StatusEndpoints::Handle(std::string_view path,
-                                     std::string_view query) const {
+HttpResponse StatusEndpoints::Handle(
+    std::string_view path, std::string_view query,
+    std::optional<std::string_view> authorization) const {
   if (path == "/metrics") {
     return HttpResponse{200, kMetricsContentType, sources_.metrics_text()};
   }
   if (path.starts_with("/api/")) {
-    return Api(path, QueryParameter(query, "dataset"));
+    return Api(path, QueryParameter(query, "dataset"), authorization);
   }
   if (path == kWebPrefix.substr(0, kWebPrefix.size() - 1)) {
     // Its files name each other relative to the directory.
@@ -136,8 +137,15 @@ HttpResponse StatusEndpoints::Handle(std::string_view path,
   return FileOf(StatusPageFiles(), path == "/" ? "index.html" : path.substr(1));
 }
 
-HttpResponse StatusEndpoints::Api(std::string_view path,
-                                  std::string_view dataset) const {
+HttpResponse StatusEndpoints::Api(
+    std::string_view path, std::string_view dataset,
+    std::optional<std::string_view> authorization) const {
+  if ((path == "/api/stats" || path == "/api/edges") && sources_.authorize) {
+    if (grpc::Status refused = sources_.authorize(authorization);
+        !refused.ok()) {
+      return ApiError(refused);
+    }
+  }
   if (path == "/api/stats") {
     v1::GetStatsResponse stats;
     const Status status = sources_.stats(dataset, &stats);

@@ -24,7 +24,10 @@
 //   otherwise    404
 //
 // The /api/ paths take ?dataset=NAME (default: the default dataset); an
-// unknown name is 404 with an ApiError body.
+// unknown name is 404 with an ApiError body. /api/stats and /api/edges show
+// what GetStats shows (the source, real coordinates), so they are admitted
+// as GetStats is, by StatusSources::authorize (401 / 403 with an ApiError
+// body when it refuses); the other paths are public.
 //
 // Owns nothing but the functions it reads from; the statistics are fetched
 // per request, so a swapped engine shows at once. They come already
@@ -35,8 +38,11 @@
 #ifndef LOCATOR_SERVER_HTTP_STATUS_ENDPOINTS_H_
 #define LOCATOR_SERVER_HTTP_STATUS_ENDPOINTS_H_
 
+#include <grpcpp/support/status.h>
+
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,7 +77,15 @@ using EdgeSource =
 using HistorySource = std::function<Status(std::string_view dataset,
                                            const StatsHistory** history)>;
 
+// OK if a request presenting `authorization` (its Authorization header;
+// nullopt without one) may read a dataset's statistics and edges, otherwise
+// the refusal (UNAUTHENTICATED / PERMISSION_DENIED).
+using StatusAuthorizer =
+    std::function<grpc::Status(std::optional<std::string_view> authorization)>;
+
 struct StatusSources {
+  // Null: /api/stats and /api/edges are public (--http-public-status).
+  StatusAuthorizer authorize;
   StatsSource stats;
   EdgeSource edges;
   HistorySource history;
@@ -83,13 +97,17 @@ class StatusEndpoints {
  public:
   explicit StatusEndpoints(StatusSources sources);
 
-  // The response for a GET of `path` with the query string `query`.
-  HttpResponse Handle(std::string_view path, std::string_view query = {}) const;
+  // The response for a GET of `path` with the query string `query` and the
+  // Authorization header `authorization`.
+  HttpResponse Handle(
+      std::string_view path, std::string_view query = {},
+      std::optional<std::string_view> authorization = std::nullopt) const;
 
  private:
   // The response for an /api/ path about `dataset`, or 404 for another
   // path.
-  HttpResponse Api(std::string_view path, std::string_view dataset) const;
+  HttpResponse Api(std::string_view path, std::string_view dataset,
+                   std::optional<std::string_view> authorization) const;
 
   const StatusSources sources_;
 };

@@ -1,5 +1,6 @@
 #include "server/http/status_server.h"
 
+#include <boost/beast/core/string.hpp>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -9,14 +10,35 @@
 
 #include "server/http/api_error.h"
 #include "server/metrics/metrics_text.h"
+#include "server/server_runner.h"
 
 namespace locator {
+namespace {
+
+// Whether `content_type` (a Content-Type value; nullopt if none) is JSON:
+// "application/json", parameters such as "; charset=utf-8" allowed.
+bool IsJsonContentType(std::optional<std::string_view> content_type) {
+  if (!content_type.has_value()) return false;
+  std::string_view media = content_type->substr(0, content_type->find(';'));
+  while (!media.empty() && (media.back() == ' ' || media.back() == '\t')) {
+    media.remove_suffix(1);
+  }
+  while (!media.empty() && (media.front() == ' ' || media.front() == '\t')) {
+    media.remove_prefix(1);
+  }
+  return boost::beast::iequals(
+      boost::beast::string_view(media.data(), media.size()),
+      "application/json");
+}
+
+}  // namespace
 
 StatusServer::StatusServer(LocatorService* service, HttpOptions options)
     : service_(service),
       options_(std::move(options)),
       registry_(std::make_shared<prometheus::Registry>()),
-      rpc_metrics_(registry_.get()),
+      rpc_metrics_(registry_.get(), ServerRunner::MethodsServed(
+                                        {v1::Locator::service_full_name()})),
       engine_collector_(std::make_shared<EngineCollector>([service] {
         std::vector<DatasetStatsSample> samples;
         for (const auto& slot : service->datasets().slots()) {
@@ -30,6 +52,13 @@ StatusServer::StatusServer(LocatorService* service, HttpOptions options)
         return samples;
       })),
       endpoints_(StatusSources{
+          .authorize =
+              options_.public_status
+                  ? StatusAuthorizer()
+                  : [service](std::optional<std::string_view> authorization) {
+                      return service->access_policy().CheckAuthorization(
+                          authorization, AccessPolicy::Scope::kData);
+                    },
           .stats =
               [service](std::string_view dataset, v1::GetStatsResponse* out) {
                 return service->CurrentStats(dataset, out);
@@ -53,7 +82,7 @@ StatusServer::StatusServer(LocatorService* service, HttpOptions options)
                 return MetricsText({registry_, engine_collector_});
               }}),
       cors_(options_.cors_origins),
-      api_(service) {
+      api_(service, options_.api, registry_.get()) {
   for (const auto& slot : service->datasets().slots()) {
     histories_.try_emplace(slot->name());
   }
@@ -68,7 +97,7 @@ StatusServer::NewInterceptorFactory() {
 
 Status StatusServer::Listen(const std::string& host, int port) {
   return HttpServer::Start(
-      host, port, options_.max_body_bytes,
+      host, port, options_.limits,
       [this](HttpRequest request, HttpReply reply) {
         Route(std::move(request), std::move(reply));
       },
@@ -90,17 +119,19 @@ void StatusServer::Route(HttpRequest request, HttpReply reply) {
     cors_.Apply(origin, &response);
     reply(std::move(response));
   };
-  if (request.body_too_large) {
-    reply(ApiError(
-        grpc::Status(grpc::StatusCode::RESOURCE_EXHAUSTED,
-                     "the request body is larger than this server's limit "
-                     "of " +
-                         std::to_string(options_.max_body_bytes) +
-                         " bytes (--http-max-body-bytes)"),
-        413));
+  if (request.problem != HttpRequest::Problem::kNone) {
+    reply(ProblemAnswer(request));
     return;
   }
   if (request.path.starts_with(JsonApi::kPathPrefix)) {
+    if (request.method == "POST" &&
+        !IsJsonContentType(request.Header("content-type"))) {
+      reply(ApiError(grpc::Status(grpc::StatusCode::INVALID_ARGUMENT,
+                                  "a POST to the API must have Content-Type: "
+                                  "application/json"),
+                     415));
+      return;
+    }
     api_.Handle(std::move(request), std::move(reply));
     return;
   }
@@ -110,7 +141,49 @@ void StatusServer::Route(HttpRequest request, HttpReply reply) {
                        .headers = {{"Allow", "GET, HEAD"}}});
     return;
   }
-  reply(endpoints_.Handle(request.path, request.query));
+  reply(endpoints_.Handle(request.path, request.query,
+                          request.Header("authorization")));
+}
+
+HttpResponse StatusServer::ProblemAnswer(const HttpRequest& request) const {
+  using Problem = HttpRequest::Problem;
+  const auto error = [](grpc::StatusCode code, const std::string& message,
+                        unsigned http_status) {
+    return ApiError(grpc::Status(code, message), http_status);
+  };
+  const HttpLimits& limits = options_.limits;
+  std::string busy;
+  switch (request.problem) {
+    case Problem::kBodyTooLarge:
+      return error(grpc::StatusCode::RESOURCE_EXHAUSTED,
+                   "the request body is larger than this server's limit of " +
+                       std::to_string(limits.max_body_bytes) +
+                       " bytes (--http-max-body-bytes)",
+                   413);
+    case Problem::kHeaderTooLarge:
+      return error(grpc::StatusCode::RESOURCE_EXHAUSTED,
+                   "the request header is larger than this server's limit "
+                   "of " +
+                       std::to_string(HttpServer::kMaxHeaderBytes) + " bytes",
+                   431);
+    case Problem::kMalformed:
+      return error(grpc::StatusCode::INVALID_ARGUMENT,
+                   "malformed HTTP request: " + request.problem_detail, 400);
+    case Problem::kAddressFull:
+      busy = request.problem_detail + " has " +
+             std::to_string(limits.max_connections_per_address) +
+             " connections open to this server, its limit "
+             "(--http-max-connections-per-address); close one or retry";
+      break;
+    case Problem::kNone:  // never asked
+    case Problem::kServerBusy:
+      busy = "all " + std::to_string(limits.max_connections) +
+             " connections of this server are busy; retry";
+      break;
+  }
+  HttpResponse answer = error(grpc::StatusCode::UNAVAILABLE, busy, 503);
+  answer.headers.emplace_back("Retry-After", "1");
+  return answer;
 }
 
 Status StatusServer::HistoryOf(std::string_view dataset,

@@ -4,8 +4,14 @@
 // the status page's charts, and the HTTP server that answers
 // StatusEndpoints' paths (GET), the HTTP/JSON API under /v1/ (JsonApi), and
 // CORS preflights (CorsPolicy, which also marks every answer to an allowed
-// origin). A request body over HttpOptions::max_body_bytes gets 413 with an
-// ApiError body.
+// origin). What the HTTP server could not read as a request gets an ApiError
+// and the connection closes: a body over the limit 413, a header over the
+// limit 431, a malformed request 400, a connection over the limits 503 with
+// Retry-After. A POST to the API must say Content-Type: application/json
+// (415 otherwise): a page of another origin can send a "simple" text/plain
+// POST without asking the browser first (no CORS preflight), and it would
+// run. With tokens, /api/stats and /api/edges want the data token as
+// GetStats does, unless HttpOptions::public_status.
 //
 // Owns all of them. It reads the datasets through the LocatorService it is
 // given, as GetStats answers them (already redacted, see
@@ -23,6 +29,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "server/http/cors_policy.h"
 #include "server/http/http_server.h"
@@ -34,6 +41,18 @@
 #include "server/metrics/rpc_metrics.h"
 
 namespace locator {
+
+struct HttpOptions {
+  // --http-max-body-bytes, --http-max-connections-per-address.
+  HttpLimits limits;
+  // --http-cors-origin: origins allowed to call the server from web pages
+  // (CORS; see CorsPolicy); empty: CORS off.
+  std::vector<std::string> cors_origins;
+  // --http-max-grid-cells.
+  JsonApiOptions api;
+  // --http-public-status: /api/stats and /api/edges answer without a token.
+  bool public_status = false;
+};
 
 class StatusServer {
  public:
@@ -62,6 +81,8 @@ class StatusServer {
  private:
   // Answers one HTTP request (HttpHandler).
   void Route(HttpRequest request, HttpReply reply);
+  // The answer to a request the HTTP server could not read (see above).
+  HttpResponse ProblemAnswer(const HttpRequest& request) const;
   // The history of dataset `dataset` ("": the default).
   Status HistoryOf(std::string_view dataset,
                    const StatsHistory** history) const;

@@ -83,7 +83,8 @@ class RpcMetricsInterceptorFactory final
 
 }  // namespace
 
-RpcMetrics::RpcMetrics(prometheus::Registry* registry)
+RpcMetrics::RpcMetrics(prometheus::Registry* registry,
+                       const std::vector<std::string>& methods)
     : requests_(prometheus::BuildCounter()
                     .Name("locator_rpc_requests_total")
                     .Help("gRPC calls finished, by method and status code")
@@ -95,7 +96,15 @@ RpcMetrics::RpcMetrics(prometheus::Registry* registry)
       duration_(prometheus::BuildHistogram()
                     .Name("locator_rpc_duration_seconds")
                     .Help("Time from a gRPC call's start to its status")
-                    .Register(*registry)) {}
+                    .Register(*registry)) {
+  WriterMutexLock lock(&mu_);
+  for (const std::string& method : methods) by_method_.try_emplace(method);
+}
+
+RpcMetrics::MethodSeries& RpcMetrics::SeriesOf(std::string_view method) {
+  const auto found = by_method_.find(method);
+  return found != by_method_.end() ? found->second : unknown_;
+}
 
 const RpcMetrics::Series& RpcMetrics::SeriesFor(std::string_view method,
                                                 grpc::StatusCode code) {
@@ -104,16 +113,17 @@ const RpcMetrics::Series& RpcMetrics::SeriesFor(std::string_view method,
                            : static_cast<size_t>(grpc::StatusCode::UNKNOWN);
   {
     ReaderMutexLock lock(&mu_);
-    const auto found = by_method_.find(method);
-    if (found != by_method_.end() && found->second[index].requests) {
-      return found->second[index];
-    }
+    const Series& series = SeriesOf(method)[index];
+    if (series.requests != nullptr) return series;
   }
   WriterMutexLock lock(&mu_);
-  MethodSeries& all = by_method_.try_emplace(std::string(method)).first->second;
+  MethodSeries& all = SeriesOf(method);
   Series& series = all[index];
   if (series.requests != nullptr) return series;  // another thread made it
-  const auto [service, name] = SplitMethod(method);
+  const auto [service, name] =
+      &all == &unknown_
+          ? std::pair(std::string(kUnknown), std::string(kUnknown))
+          : SplitMethod(method);
   const prometheus::Labels labels = {{"service", service}, {"method", name}};
   prometheus::Labels with_code = labels;
   with_code.emplace("code", std::string(GrpcCodeName(code)));

@@ -8,6 +8,12 @@
 //   locator_rpc_duration_seconds{service,method}     start to status sent
 // A series is created the first time its labels occur.
 //
+// Invariant: the label values come from a fixed set. Only the methods the
+// server serves (given at construction) are labelled by name; a call of
+// any other method, whose name the client chose, is counted under
+// service="unknown", method="unknown", so that clients cannot grow the
+// series (and /metrics) without bound. Codes are gRPC's 17.
+//
 // Thread-safety: Record() and the interceptors may run on any number of
 // threads at once; lookups of existing series take a shared lock only.
 
@@ -26,6 +32,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/mutex.h"
 
@@ -33,8 +40,13 @@ namespace locator {
 
 class RpcMetrics {
  public:
+  // The service and method label of calls of methods not served.
+  static constexpr std::string_view kUnknown = "unknown";
+
   // Adds the families above to `registry`, which must outlive this object.
-  explicit RpcMetrics(prometheus::Registry* registry);
+  // `methods` are those served, as "/package.Service/Method".
+  RpcMetrics(prometheus::Registry* registry,
+             const std::vector<std::string>& methods);
 
   RpcMetrics(const RpcMetrics&) = delete;
   RpcMetrics& operator=(const RpcMetrics&) = delete;
@@ -62,13 +74,17 @@ class RpcMetrics {
   // The series of (method, code), created on first use.
   const Series& SeriesFor(std::string_view method, grpc::StatusCode code)
       EXCLUDES(mu_);
+  // The series of `method`: its own if it is served, else unknown_.
+  MethodSeries& SeriesOf(std::string_view method) REQUIRES_SHARED(mu_);
 
   prometheus::Family<prometheus::Counter>& requests_;
   prometheus::Family<prometheus::Counter>& errors_;
   prometheus::Family<prometheus::Histogram>& duration_;
 
   SharedMutex mu_;
+  // One entry per served method; the keys are fixed at construction.
   std::map<std::string, MethodSeries, std::less<>> by_method_ GUARDED_BY(mu_);
+  MethodSeries unknown_ GUARDED_BY(mu_);
 };
 
 }  // namespace locator

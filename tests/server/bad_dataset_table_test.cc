@@ -24,6 +24,7 @@
 #include "server/core/dataset_fingerprint.h"
 #include "server/core/mesh_cache.h"
 #include "server/core/mesh_file.h"
+#include "tests/common/gis/gis_fixtures.h"
 #include "tests/server/dataset_table.h"
 
 namespace locator::test {
@@ -275,6 +276,21 @@ std::vector<DatasetRow> DatasetRows() {
        1,
        "'line': feature 0: a LINESTRING where points are expected (Point, "
        "MultiPoint)"},
+      {"GisCorruptGeoPackage",
+       "a GeoPackage of 2025 points with a corrupt page among its features",
+       "hill.gpkg",
+       "",
+       {},
+       1,
+       "{file}: layer 'hill': feature number ",
+       nullptr,
+       {},
+       "",
+       [](const std::string& path) {
+         gis::testing::UtmHillGeoPackage(
+             45, std::filesystem::path(path).parent_path().string());
+         gis::testing::CorruptMiddleDataPage(path);
+       }},
       {"GisEmptyLayer",
        "a GeoJSON FeatureCollection without features",
        "empty.geojson",

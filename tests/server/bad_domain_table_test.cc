@@ -102,11 +102,39 @@ std::vector<DatasetRow> DomainRows() {
        .contents = GridCsv(),
        .exit_code = 1,
        .message = CannotServe("{file}+{dir}/bowtie.wkt",
-                              "ring 0 segment 0 and ring 0 segment 2 cross at "
+                              "segment 0 of the exterior ring at "
+                              "{dir}/bowtie.wkt:2 and segment 2 of the "
+                              "exterior ring at {dir}/bowtie.wkt:2 cross at "
                               "(2, 2): a domain boundary must not intersect "
                               "itself"),
-       .more_files = {{"bowtie.wkt", "POLYGON ((0 0, 4 4, 4 0, 0 4, 0 0))\n"}},
+       .more_files = {{"bowtie.wkt",
+                       "\nPOLYGON ((0 0, 4 4, 4 0, 0 4, 0 0))\n"}},
        .spec = "{file}+{dir}/bowtie.wkt"},
+      {.name = "SelfIntersectingPoly",
+       .input = "a .poly whose segments 1 and 3 cross",
+       .file_name = "bowtie.poly",
+       .contents = "4 2 1 0\n1 0 0 1\n2 4 4 21\n3 4 0 9\n4 0 4 13\n"
+                   "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n",
+       .exit_code = 1,
+       .message = CannotServe("{file}",
+                              "segment 1 at {file}:7 and segment 3 at "
+                              "{file}:9 cross at (2, 2): a domain boundary "
+                              "must not intersect itself")},
+      {.name = "PolyDiagonalsCrossAtAPoint",
+       .input = "a .poly square with diagonals, numbered 9 and 10, crossing "
+                "at a node",
+       .file_name = "diagonals.poly",
+       .contents = "# a square and its centre\n"
+                   "5 2 1 0\n1 0 0 1\n2 4 0 9\n3 4 4 21\n4 0 4 13\n"
+                   "5 2 2 11\n"
+                   "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+                   "# the diagonals\n"
+                   "9 1 3\n10 2 4\n0\n",
+       .exit_code = 1,
+       .message = CannotServe("{file}",
+                              "segment 9 at {file}:14 and segment 10 at "
+                              "{file}:15 cross at (2, 2): a domain boundary "
+                              "must not intersect itself")},
       {.name = "HoleOutsideBoundary",
        .input = "a polygon whose hole is outside its exterior ring",
        .file_name = "grid.csv",

@@ -309,6 +309,44 @@ grpc::Status ReloadUnknownName(const Env& env) {
   return Reload(env.stub, "", &response, "lava");
 }
 
+// The size of the CRS LocateWithHugeCrs sends.
+constexpr size_t kHugeCrsBytes = size_t{10} << 20;
+
+// A Locate naming a 10 MiB CRS (the dataset has none). The refusal quotes a
+// short prefix of it: a message that echoed it all would overflow gRPC's
+// header limit and reach the client as another error.
+grpc::Status LocateWithHugeCrs(const Env& env) {
+  v1::LocateRequest request = LocateRequestFor({10.25, 20.5});
+  request.set_crs("+proj=longlat +ellps=WGS84 +towgs84=" +
+                  std::string(kHugeCrsBytes - 36, '0'));
+  grpc::ClientContext context;
+  v1::LocateResponse response;
+  const grpc::Status status = env.stub.Locate(&context, request, &response);
+  EXPECT_LT(status.error_message().size(), 300u) << status.error_message();
+  return status;
+}
+
+// A Profile across the dataset asking for `samples` evenly spaced samples;
+// when it succeeds, they must all be there.
+std::function<grpc::Status(const Env&)> ProfileWithSamples(uint32_t samples) {
+  return [samples](const Env& env) {
+    v1::ProfileRequest request;
+    for (const Point2& p : {Point2{10.25, 20.5}, Point2{30.5, 20.25}}) {
+      v1::Point* vertex = request.add_vertices();
+      vertex->set_x(p.x);
+      vertex->set_y(p.y);
+    }
+    request.set_samples(samples);
+    grpc::ClientContext context;
+    v1::ProfileResponse response;
+    const grpc::Status status = env.stub.Profile(&context, request, &response);
+    if (status.ok()) {
+      EXPECT_EQ(response.samples_size(), static_cast<int>(samples));
+    }
+    return status;
+  };
+}
+
 std::vector<CallRow> CallRows() {
   using std::chrono::milliseconds;
   const double big = 1e308;
@@ -368,6 +406,18 @@ std::vector<CallRow> CallRows() {
        kUnknownDataset},
       {"ReloadUnknownName", "Reload with name 'lava'", kLimits,
        ReloadUnknownName, Code::NOT_FOUND, kUnknownDataset},
+      {"LocateWithHugeCrs", "Locate naming a 10 MiB crs", kLimits,
+       LocateWithHugeCrs, Code::INVALID_ARGUMENT,
+       // Its first 80 bytes, and its size.
+       "the request names crs '+proj=longlat +ellps=wgs84 +towgs84=" +
+           std::string(44, '0') +
+           "...' (10485760 bytes) but the dataset has none"},
+      {"ProfileAtDefaultSampleLimit", "Profile of 10^5 samples (the limit)",
+       kLimits, ProfileWithSamples(100'000), Code::OK, ""},
+      {"ProfileOverDefaultSampleLimit", "Profile of 10^6 samples", kLimits,
+       ProfileWithSamples(1'000'000), Code::RESOURCE_EXHAUSTED,
+       "a profile of 1000000 samples exceeds this server's limit of 100000 "
+       "samples per request (locatord --max-profile-samples)"},
       {"BatchAtPointLimit", "LocateBatch of 1000 points (the limit)", kLimits,
        BatchCall(Queries(1000)), Code::OK, ""},
       {"BatchOverPointLimit", "LocateBatch of 1001 points (limit 1000)",

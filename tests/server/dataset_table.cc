@@ -43,7 +43,9 @@ std::string DatasetTableTest::Expand(std::string text) const {
 void DatasetTableTest::RunRow(const DatasetRow& row) {
   file_ =
       row.file_name.empty() ? row.contents : dir_.path() + "/" + row.file_name;
-  if (!row.file_name.empty()) {
+  if (row.make_file) {
+    row.make_file(file_);
+  } else if (!row.file_name.empty()) {
     std::ofstream(file_, std::ios::binary) << row.contents;
   }
   for (const DatasetFile& file : row.more_files) {

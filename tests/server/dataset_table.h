@@ -53,6 +53,9 @@ struct DatasetRow {
   // The --dataset argument when it is not the file's path, with "{file}"
   // and "{dir}" expanded, e.g. "{file}+{dir}/lake.wkt".
   std::string spec = "";
+  // Makes the row's file at the path it is given instead of writing
+  // `contents` (a binary file made with a tool at test time).
+  std::function<void(const std::string& path)> make_file = nullptr;
 };
 
 void PrintTo(const DatasetRow& row, std::ostream* out);

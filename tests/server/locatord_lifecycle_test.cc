@@ -1,6 +1,7 @@
-// locatord's life as a process, end to end: bad flags and exit codes, the
-// health transition while loading, re-tunes under concurrent load, and the
-// drain on SIGTERM. (Bad datasets and requests: the bad-input table.)
+// locatord's life as a process, end to end: bad flags and exit codes, a
+// gRPC address in use, the health transition while loading, re-tunes under
+// concurrent load, and the drain on SIGTERM. (Bad datasets and requests: the
+// bad-input table.)
 
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
@@ -33,6 +34,30 @@ TEST(LocatordStartupTest, BadFlagExitsTwoWithoutListening) {
   EXPECT_FALSE(server->WaitForListening().ok());
   EXPECT_EQ(server->WaitForExit(kExitTimeout), 2);
   EXPECT_THAT(server->StderrText(), HasSubstr("--threads"));
+}
+
+// gRPC would let a second server share the port (SO_REUSEPORT) and take
+// some of the first one's connections; locatord refuses to start instead.
+TEST(LocatordStartupTest, AGrpcAddressInUseExitsOneAndTheFirstKeepsServing) {
+  std::unique_ptr<ServerProcess> first;
+  const Status started = StartLocatord("uniform:2000:1", {}, &first);
+  ASSERT_TRUE(started.ok()) << started.ToString();
+  std::unique_ptr<ServerProcess> second;
+  ASSERT_TRUE(ServerProcess::Spawn(
+                  LOCATORD_PATH,
+                  {"--dataset", "uniform:2000:1", "--listen", first->target()},
+                  &second)
+                  .ok());
+  EXPECT_EQ(second->WaitForExit(kExitTimeout), 1);
+  EXPECT_THAT(second->StderrText(),
+              HasSubstr("cannot listen on " + first->target()));
+  // Every new connection still reaches the first server.
+  for (int i = 0; i < 20; ++i) {
+    v1::LocateResponse response;
+    const grpc::Status status =
+        LocateOne(*NewStub(*first), {0.5, 0.5}, &response);
+    EXPECT_TRUE(status.ok()) << status.error_message();
+  }
 }
 
 TEST(LocatordStartupTest, HealthGoesFromNotServingToServing) {

@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 
@@ -85,7 +86,7 @@ TEST(LocatordReloadPolicyTest,
           .ok());
   auto stub = NewStub(*server);
 
-  for (const std::string escape :
+  for (const std::string& escape :
        {std::string("../outside.csv"), dir + "/../outside.csv", outside,
         std::string("link.csv"), std::string("missing.csv")}) {
     const grpc::Status status = Reload(*stub, escape);
@@ -108,6 +109,54 @@ TEST(LocatordReloadPolicyTest,
   status = Reload(*stub, "uniform:500:3", &response);
   ASSERT_TRUE(status.ok()) << status.error_message();
   EXPECT_EQ(response.dataset().input_points(), 500u);
+}
+
+// The attacks of issue 26, hole 4, with the admin's Reload and a GeoPackage
+// inside the reload dir: open options that run SQL (ATTACH another file and
+// read it through a where sub-select; VACUUM INTO a new file) and where
+// clauses that call SQL functions are PERMISSION_DENIED before anything is
+// opened; no file is written and the dataset is not replaced.
+TEST(LocatordReloadPolicyTest, GisOptionsCannotRunSqlOrReachOtherFiles) {
+  ScratchDir root;
+  const std::string dir = root.path() + "/datasets";
+  fs::create_directory(dir);
+  const std::string gpkg = gis::testing::UtmHillGeoPackage(5, dir);
+  // A database outside the dir with a secret in it.
+  const std::string secret_db = gis::testing::UtmHillGeoPackage(3, root.path());
+  const std::string written = root.path() + "/out.db";
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(gpkg, {"--reload-dir", dir}, &server).ok());
+  auto stub = NewStub(*server);
+
+  const std::string attach =
+      "?oo=PRELUDE_STATEMENTS=ATTACH%20DATABASE%20'" + secret_db + "'%20AS%20x";
+  for (const std::string& requested : {
+           gpkg + attach +
+               "&where=(SELECT%20count(*)%20FROM%20x.hill)%20%3E%200",
+           gpkg + "?oo=PRELUDE_STATEMENTS=VACUUM%20INTO%20'" + written + "'",
+           gpkg + "?oo=prelude_statements=SELECT%201",
+           gpkg + "?where=(SELECT%20count(*)%20FROM%20sqlite_master)%20%3E%200",
+           gpkg + "?where=length(BlobFromFile('%2Fetc%2Fhostname'))%20%3E%200",
+           gpkg + "?where=load_extension('" + secret_db + "')%20IS%20NULL",
+           gpkg + "?a_srs=%2Bproj%3Dlonglat%20%2Bnadgrids%3D%2Fdev%2Fptmx",
+           "ogr:" + gpkg + "?driver=SQLite",
+       }) {
+    const grpc::Status status = Reload(*stub, requested);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::PERMISSION_DENIED)
+        << requested << ": " << status.error_message();
+  }
+  EXPECT_FALSE(fs::exists(written));
+  EXPECT_EQ(GetStats(*stub).generation(), 1u);
+
+  // Harmless options still reload: a plain where clause and an a_srs.
+  v1::ReloadResponse response;
+  const grpc::Status status = Reload(
+      *stub, gpkg + "?where=height%20%3E%200&a_srs=EPSG:32632", &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.dataset().input_points(), 25u);
+  EXPECT_EQ(response.dataset().source(),
+            fs::canonical(gpkg).string() +
+                "?where=height%20%3E%200&a_srs=EPSG:32632&driver=GPKG");
 }
 
 }  // namespace

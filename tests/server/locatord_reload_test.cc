@@ -1,6 +1,7 @@
 // Reload and SIGHUP end to end: the new dataset is served exactly (CGAL
-// agrees), a bad file keeps the old one serving and names file:line, and
-// calls in flight during a reload succeed and finish on the old engine.
+// agrees), a bad file keeps the old one serving and names file:line (with
+// --redact, as the client named it, and no server path), and calls in
+// flight during a reload succeed and finish on the old engine.
 // (The states during a build, held at a barrier, and the refusal of a second
 // reload meanwhile: locator_service_test, in process.)
 
@@ -25,6 +26,8 @@ namespace locator::test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::StartsWith;
 
 // What the in-flight test reloads.
 constexpr char kNextDataset[] = "uniform:20000:5";
@@ -80,6 +83,46 @@ TEST(LocatordReloadTest, ABadFileKeepsTheOldDatasetServing) {
   EXPECT_TRUE(LocateOne(*stub, {30.5, 20.25}, &located).ok());
   EXPECT_THAT(server->StderrText(),
               HasSubstr("reload failed, still serving the previous dataset"));
+}
+
+TEST(LocatordReloadTest, WithRedactAReloadErrorNamesTheFileAsTheClientDid) {
+  ScratchDir dir;
+  const std::string configured = dir.path() + "/configured.csv";
+  WriteUniformCsv(configured, 500, 1);
+  std::ofstream(dir.path() + "/bad.csv") << "x,y,z\n0,0,1\n1,oops,2\n";
+  WriteUniformCsv(dir.path() + "/points.csv", 500, 2);
+  std::ofstream(dir.path() + "/lines.wkt") << "LINESTRING (0.1 0.1, oops)\n";
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(StartLocatord(configured,
+                            {"--redact", "--reload-dir", dir.path()}, &server)
+                  .ok());
+  auto stub = NewStub(*server);
+  const auto reload_error = [&](const std::string& spec) {
+    v1::ReloadResponse response;
+    const grpc::Status status = Reload(*stub, spec, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << spec << ": " << status.error_message();
+    return status.error_message();
+  };
+
+  // Named relative to the reload dir.
+  const std::string relative = reload_error("bad.csv");
+  EXPECT_THAT(relative, StartsWith("bad.csv:3: 'oops' is not a number"));
+  EXPECT_THAT(relative, Not(HasSubstr(dir.path())));
+  // A file the loader reaches through the spec: by its file name.
+  const std::string reached = reload_error("points.csv+lines.wkt");
+  EXPECT_THAT(reached, StartsWith("lines.wkt:1:"));
+  EXPECT_THAT(reached, Not(HasSubstr(dir.path())));
+  // The configured dataset, broken after the start: by the dataset's name.
+  std::ofstream(configured) << "x,y,z\n0,0,1\n1,2,oops\n";
+  const std::string configured_error = reload_error("");
+  EXPECT_THAT(configured_error,
+              StartsWith("dataset 'default':3: 'oops' is not a number"));
+  EXPECT_THAT(configured_error, Not(HasSubstr(dir.path())));
+  // Named absolutely: the path the client gave, which it knows already.
+  EXPECT_THAT(reload_error(dir.path() + "/bad.csv"),
+              StartsWith(dir.path() + "/bad.csv:3: 'oops' is not a number"));
+  EXPECT_EQ(GetStats(*stub).generation(), 1u);
 }
 
 TEST(LocatordReloadTest, SighupReloadsTheConfiguredDataset) {

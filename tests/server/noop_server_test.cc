@@ -1,9 +1,10 @@
 // locator-noop-server end to end: canned answers in the real message shapes,
-// and the NestedBatch comparison service.
+// the NestedBatch comparison service, and an address in use.
 
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -89,6 +90,19 @@ TEST_F(NoopServerTest, NestedBatchAnswersOneFilledResponsePerPoint) {
   ASSERT_TRUE(stub->LocateNested(&context, request, &response).ok());
   ASSERT_EQ(response.results_size(), 100);
   EXPECT_EQ(response.results(99).vertex_ids_size(), 3);
+}
+
+// It serves like locatord (see ServerRunner): a second server on the same
+// port fails to start instead of sharing it.
+TEST_F(NoopServerTest, AnAddressInUseExitsOne) {
+  std::unique_ptr<ServerProcess> second;
+  ASSERT_TRUE(ServerProcess::Spawn(NOOP_SERVER_PATH,
+                                   {"--listen", server_->target()}, &second)
+                  .ok());
+  EXPECT_EQ(second->WaitForExit(std::chrono::seconds(30)), 1);
+  EXPECT_NE(second->StderrText().find("cannot listen on " + server_->target()),
+            std::string::npos)
+      << second->StderrText();
 }
 
 }  // namespace

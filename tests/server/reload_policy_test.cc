@@ -66,7 +66,7 @@ TEST_F(ReloadPolicyTest, TheConfiguredDatasetIsAlwaysAllowed) {
 
 TEST_F(ReloadPolicyTest, WithoutAReloadDirEverythingElseIsDenied) {
   const ReloadPolicy policy("uniform:300:7", "");
-  for (const std::string requested :
+  for (const std::string& requested :
        {secret_, root_.path() + "/missing.csv", std::string("uniform:500:1"),
         std::string("clusters:500:2"), dir_ + "/points.csv"}) {
     EXPECT_EQ(Resolved(policy, requested), "denied") << requested;
@@ -168,6 +168,93 @@ TEST_F(ReloadPolicyTest, MissingAndExistingFilesAreDeniedAlike) {
   // The dir itself and subdirectories are not datasets.
   EXPECT_EQ(Resolved(policy, "sub"), "denied");
   EXPECT_EQ(Resolved(policy, "."), "denied");
+}
+
+// GIS specs: the file must be inside, the options ones a request may use,
+// and the load may use only the driver that identified the file.
+class ReloadPolicyGisTest : public ReloadPolicyTest {
+ protected:
+  void SetUp() override {
+    ReloadPolicyTest::SetUp();
+    std::ofstream(dir_ + "/pts.geojson")
+        << R"({"type":"FeatureCollection","features":[{"type":"Feature",)"
+           R"("properties":{"h":1},"geometry":{"type":"Point",)"
+           R"("coordinates":[0,0]}}]})";
+    std::ofstream(dir_ + "/view.vrt")
+        << "<OGRVRTDataSource><OGRVRTLayer name=\"x\"><SrcDataSource>"
+        << secret_ << "</SrcDataSource></OGRVRTLayer></OGRVRTDataSource>";
+  }
+
+  // The refusal of `requested`, which must be PERMISSION_DENIED.
+  std::string Denial(const std::string& requested) {
+    std::string spec;
+    const grpc::Status status =
+        ReloadPolicy("uniform:300:7", dir_).Resolve(requested, &spec);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::PERMISSION_DENIED)
+        << requested << " resolved to " << spec;
+    return status.error_message();
+  }
+};
+
+TEST_F(ReloadPolicyGisTest, ASpecIsResolvedWithItsDriver) {
+  const ReloadPolicy policy("uniform:300:7", dir_);
+  const std::string geojson = Canonical(dir_ + "/pts.geojson");
+  EXPECT_EQ(Resolved(policy, "pts.geojson"), geojson + "?driver=GeoJSON");
+  EXPECT_EQ(Resolved(policy, "pts.geojson?z=h&where=h%20%3E%200"),
+            geojson + "?z=h&where=h%20%3E%200&driver=GeoJSON");
+  EXPECT_EQ(Resolved(policy, "pts.geojson?driver=GeoJSON"),
+            geojson + "?driver=GeoJSON");
+  // The options every kind takes pass as well.
+  EXPECT_EQ(Resolved(policy, "pts.geojson?max_error=0.5&z=h"),
+            geojson + "?max_error=0.5&z=h&driver=GeoJSON");
+  EXPECT_EQ(Resolved(policy, "ogr:points.csv?oo=X_POSSIBLE_NAMES=x"),
+            "ogr:" + Canonical(dir_ + "/points.csv") +
+                "?oo=X_POSSIBLE_NAMES=x&driver=CSV");
+}
+
+TEST_F(ReloadPolicyGisTest, OptionsThatRunSqlOrReachOtherFilesAreDenied) {
+  const struct {
+    std::string requested;
+    std::string message;
+  } kCases[] = {
+      {"pts.geojson?oo=PRELUDE_STATEMENTS=ATTACH%20DATABASE%20'" + secret_ +
+           "'%20AS%20x",
+       "oo=PRELUDE_STATEMENTS: not an open option a Reload may set"},
+      {"pts.geojson?oo=PRELUDE_STATEMENTS=VACUUM%20INTO%20'%2Ftmp%2Fout.db'",
+       "oo=PRELUDE_STATEMENTS"},
+      {"pts.geojson?where=h%20%3D%20(SELECT%20count(*)%20FROM%20x.t)",
+       "where=: at byte 12, expected ')', found 'count(*) FROM x.t)'"},
+      {"pts.geojson?where=length(BlobFromFile('%2Fetc%2Fpasswd'))%20%3E%200",
+       "where=: at byte 6"},
+      {"pts.geojson?a_srs=%2Bproj%3Dlonglat%20%2Bnadgrids%3D%2Fdev%2Fptmx",
+       "a_srs=: CRS '+proj=longlat +nadgrids=/dev/ptmx' names a file PROJ "
+       "may not open here"},
+      {"pts.geojson?driver=OGR_VRT", "driver=OGR_VRT: a Reload may read only"},
+      {"ogr:view.vrt", "not a format a Reload may read"},
+      {"ogr:points.csv?driver=GML", "driver=GML"},
+  };
+  for (const auto& c : kCases) {
+    EXPECT_THAT(Denial(c.requested), HasSubstr(c.message)) << c.requested;
+  }
+}
+
+// An option is refused before the file is looked at: the refusal is the
+// same for a file that exists and one that does not.
+TEST_F(ReloadPolicyGisTest, AnOptionIsDeniedAlikeWhateverTheFile) {
+  const std::string option = "?oo=PRELUDE_STATEMENTS=SELECT%201";
+  const std::string existing = Denial("pts.geojson" + option);
+  const std::string missing = Denial("missing.gpkg" + option);
+  EXPECT_EQ(existing.substr(existing.find("': ")),
+            missing.substr(missing.find("': ")));
+  EXPECT_THAT(Denial("missing.gpkg"), HasSubstr("is not a file in"));
+}
+
+TEST_F(ReloadPolicyGisTest, MalformedOptionsAreInvalidArgument) {
+  std::string spec;
+  const grpc::Status status = ReloadPolicy("uniform:300:7", dir_)
+                                  .Resolve("pts.geojson?colour=red", &spec);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(status.error_message(), HasSubstr("unknown option 'colour'"));
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ TEST(ServerConfigTest, DefaultsWithoutFlags) {
   EXPECT_EQ(config.serving.ListenAddress(), "127.0.0.1:50051");
   EXPECT_EQ(config.serving.max_message_bytes, 64u << 20);
   EXPECT_EQ(config.serving.max_batch_points, 1'000'000u);
+  EXPECT_EQ(config.serving.max_profile_samples, 100'000u);
   EXPECT_GE(config.serving.threads, 1u);
   EXPECT_EQ(config.engine.strategy, "self-tuning");
   EXPECT_TRUE(config.engine.tuning.background);
@@ -105,6 +106,8 @@ TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
                                "3",
                                "--max-batch-points",
                                "1000",
+                               "--max-profile-samples",
+                               "2500",
                                "--max-message-bytes",
                                "8MiB",
                                "--stats-interval-s",
@@ -125,6 +128,7 @@ TEST(ServerConfigTest, EveryFlagMapsToTheConfig) {
   EXPECT_TRUE(config.engine.tuning.background);
   EXPECT_EQ(config.serving.threads, 3u);
   EXPECT_EQ(config.serving.max_batch_points, 1000u);
+  EXPECT_EQ(config.serving.max_profile_samples, 2500u);
   EXPECT_EQ(config.serving.max_message_bytes, 8u << 20);
   EXPECT_EQ(config.stats_interval_s, 2.5);
   EXPECT_EQ(config.retune_interval_s, 30);
@@ -142,7 +146,9 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
        {"--tls-cert", "--tls-client-ca", "--token-file", "--admin-token-file",
         "--redact", "--max-concurrent-streams", "--min-ping-interval-ms",
         "--default-deadline-ms", "--max-dataset-points", "--http-listen",
-        "--state-dir", "--http-max-body-bytes", "--http-cors-origin"}) {
+        "--state-dir", "--http-max-body-bytes", "--http-cors-origin",
+        "--http-max-grid-cells", "--http-max-connections-per-address",
+        "--http-public-status", "--max-profile-samples"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
 }
@@ -162,6 +168,9 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--max-message-bytes", "100"},
       {"--max-message-bytes", "4GiB"},
       {"--max-batch-points", "0"},
+      {"--max-profile-samples", "0"},
+      {"--max-profile-samples", "-5"},
+      {"--max-profile-samples", "2147483648"},
       {"--stats-interval-s", "-1"},
       {"--retune-interval-s", "nan"},
       {"--listen", "50051"},
@@ -179,6 +188,12 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--http-cors-origin", "http://example.com/"},
       {"--http-cors-origin", "https://*.example.com"},
       {"--http-cors-origin", "ftp://example.com"},
+      {"--http-max-grid-cells", "0"},
+      {"--http-max-grid-cells", "3000000000"},
+      {"--http-max-grid-cells", "1e6"},
+      {"--http-max-connections-per-address", "0"},
+      {"--http-max-connections-per-address", "513"},
+      {"--http-max-connections-per-address", "many"},
       {"--max-dataset-points", "2"},
       {"--max-dataset-points", "5000000000"},
       {"--max-concurrent-streams", "0"},
@@ -271,6 +286,23 @@ TEST(ServerConfigTest, HttpFlagsMapToTheConfig) {
   EXPECT_EQ(config.http_cors_origins,
             (std::vector<std::string>{"https://maps.example.org",
                                       "http://localhost:8000"}));
+}
+
+TEST(ServerConfigTest, HttpLimitAndStatusFlagsMapToTheConfig) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({}, &config).ok());
+  EXPECT_EQ(config.http_max_grid_cells, uint64_t{1} << 20);
+  EXPECT_EQ(config.http_max_connections, 512u);
+  EXPECT_EQ(config.http_max_connections_per_address, 64u);
+  EXPECT_FALSE(config.http_public_status);
+  ASSERT_TRUE(Parse({"--http-max-grid-cells", "250000",
+                     "--http-max-connections-per-address", "512",
+                     "--http-public-status"},
+                    &config)
+                  .ok());
+  EXPECT_EQ(config.http_max_grid_cells, 250000u);
+  EXPECT_EQ(config.http_max_connections_per_address, 512u);
+  EXPECT_TRUE(config.http_public_status);
 }
 
 TEST(ServerConfigTest, MeshCacheMustBeADirectory) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -43,6 +44,23 @@ TEST(StatusMappingTest, EveryRefusalHasItsCodeAndKeepsTheMessage) {
     EXPECT_EQ(mapped.error_code(), code);
     EXPECT_EQ(mapped.error_message(), "why");
   }
+}
+
+// gRPC sends the message in a header: a longer one than the client accepts
+// would reach it as an unrelated error.
+TEST(StatusMappingTest, ALongMessageIsCutToFitAHeader) {
+  const std::string huge =
+      "the request names CRS '" + std::string(10 << 20, 'x');
+  for (const grpc::Status& mapped :
+       {ToGrpcStatus(Status::InvalidArgument(huge)),
+        ToGrpcStatus(Refusal::kPermissionDenied, huge)}) {
+    EXPECT_EQ(mapped.error_message().size(), kMaxStatusMessageBytes);
+    EXPECT_TRUE(
+        mapped.error_message().starts_with("the request names CRS 'xxx"));
+    EXPECT_TRUE(mapped.error_message().ends_with("xx..."));
+  }
+  const std::string longest(kMaxStatusMessageBytes, 'y');
+  EXPECT_EQ(ToGrpcStatus(Status::NotFound(longest)).error_message(), longest);
 }
 
 TEST(StatusMappingTest, EveryGrpcCodeHasTheGatewaysHttpStatus) {

@@ -45,15 +45,17 @@ Status ReadPayload(LasInput& input, const LasVlr& vlr, std::string_view what,
 // `crs` (anything PROJ reads) as WKT2.
 Status ToWkt2(const LasInput& input, std::string_view record,
               const std::string& crs, std::string* wkt) {
+  // The file's CRS is the operator's dataset's, as an OGR layer's is.
+  GuardedProjContext& ctx = ThreadProjContext();
   PjPtr created;
-  if (Status s = CreateCrs(crs, &created); !s.ok()) {
+  if (Status s = CreateCrs(ctx, crs, &created); !s.ok()) {
     return Bad(input, record, s.message());
   }
   const char* text =
-      proj_as_wkt(ThreadProjContext(), created.get(), PJ_WKT2_2019, nullptr);
+      proj_as_wkt(ctx.get(), created.get(), PJ_WKT2_2019, nullptr);
   if (text == nullptr) {
     return Bad(input, record,
-               "PROJ cannot write the CRS as WKT: " + LastProjError());
+               "PROJ cannot write the CRS as WKT: " + LastProjError(ctx.get()));
   }
   *wkt = text;
   return Status::OK();
@@ -154,7 +156,7 @@ Status GeoKeysCrs(LasInput& input, const LasHeader& header,
   std::unique_ptr<GTIF, GtifDeleter> gtif(GTIFNewSimpleTags(tags.get()));
   constexpr std::string_view kWhat = "GeoTIFF keys";
   if (gtif == nullptr) return Bad(input, kWhat, "libgeotiff cannot read them");
-  GTIFAttachPROJContext(gtif.get(), ThreadProjContext());
+  GTIFAttachPROJContext(gtif.get(), ThreadProjContext().get());
   GTIFDefn defn;
   if (!GTIFGetDefn(gtif.get(), &defn) || !defn.DefnSet) {
     return Bad(input, kWhat, "they define no coordinate reference system");

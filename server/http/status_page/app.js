@@ -6,6 +6,12 @@
 // attributes for scripts and tests. With several datasets (/v1/datasets), a
 // select switches the dataset shown (?dataset=NAME on every /api/ path; the
 // page's own ?dataset= picks the first one shown).
+//
+// When locatord wants tokens, /api/stats, /api/edges and /v1/datasets want
+// the data token: the page then shows "token required" and a token field,
+// and sends what is typed there as "Authorization: Bearer <token>" (a link
+// may carry it as #token=TOKEN: the fragment never reaches a server, and the
+// page removes it from the address bar). The token lives in the page only.
 'use strict';
 
 const REFRESH_MS = 1500;
@@ -22,6 +28,10 @@ const COLORS = {
 };
 
 let dataset = new URLSearchParams(location.search).get('dataset') || '';
+let token = new URLSearchParams(location.hash.slice(1)).get('token') || '';
+if (location.hash !== '') {
+  history.replaceState(null, '', location.pathname + location.search);
+}
 // /api/edges: the edge sample, the domain's boundary and the breaklines.
 const NO_EDGES = {segments: [], boundary: [], breaklines: []};
 let mapEdges = NO_EDGES;
@@ -270,9 +280,17 @@ function api(path) {
 }
 
 async function fetchJson(path) {
-  const response = await fetch(path, {cache: 'no-store'});
+  const headers = token === '' ? {} : {Authorization: `Bearer ${token}`};
+  const response = await fetch(path, {cache: 'no-store', headers});
   const body = await response.json();
   return {status: response.status, body};
+}
+
+// Asks for the data token: the server answered 401 or 403.
+function askForToken(status) {
+  showState(status === 401 ? 'token required' : 'token not accepted',
+            'locked');
+  document.getElementById('token').hidden = false;
 }
 
 // Fetches the map's edges once per serving generation (they change only
@@ -292,8 +310,8 @@ async function loadDatasets() {
   try {
     const list = await fetchJson('/v1/datasets');
     const datasets = list.status === 200 ? list.body.datasets || [] : [];
-    if (datasets.length < 2) return;
     const select = document.getElementById('dataset-select');
+    if (datasets.length < 2 || select.options.length > 0) return;
     for (const entry of datasets) {
       const option = document.createElement('option');
       option.value = entry.name;
@@ -323,6 +341,8 @@ async function refresh() {
       const history = await fetchJson(api('/api/history'));
       await ensureEdges(stats.body.generation);
       render(stats.body, history.body);
+    } else if (stats.status === 401 || stats.status === 403) {
+      askForToken(stats.status);
     } else {
       showState(stats.body.state || `HTTP ${stats.status}`, 'loading');
     }
@@ -333,4 +353,8 @@ async function refresh() {
   }
 }
 
+document.getElementById('token').addEventListener('change', (event) => {
+  token = event.target.value.trim();
+  loadDatasets();
+});
 loadDatasets().then(refresh);

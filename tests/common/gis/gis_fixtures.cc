@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <string_view>
 
 #include "tests/testing/run_binary.h"
 
@@ -62,6 +65,36 @@ std::string UtmHillGeoPackage(int n, const std::string& dir) {
   Ogr2Ogr(
       {"-f", "GPKG", gpkg, geojson, "-nln", "hill", "-a_srs", "EPSG:32633"});
   return gpkg;
+}
+
+int CorruptMiddleDataPage(const std::string& gpkg) {
+  std::string bytes;
+  {
+    std::ifstream in(gpkg, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // The SQLite file format: the page size (big-endian, 1 for 65536) at
+  // byte 16; a page's b-tree header first (after the 100-byte file header
+  // on page 1), type 0x0D for a table leaf.
+  EXPECT_GT(bytes.size(), 100u) << gpkg;
+  if (bytes.size() <= 100) return 0;
+  const unsigned raw = static_cast<unsigned char>(bytes[16]) << 8 |
+                       static_cast<unsigned char>(bytes[17]);
+  const size_t page_size = raw == 1 ? 65536 : raw;
+  constexpr std::string_view kGeometryBlob("GP\0", 3);
+  std::vector<size_t> data_pages;  // 0-based
+  for (size_t page = 1; (page + 1) * page_size <= bytes.size(); ++page) {
+    const std::string_view content(bytes.data() + page * page_size, page_size);
+    if (content[0] == 0x0D && content.find(kGeometryBlob) != content.npos) {
+      data_pages.push_back(page);
+    }
+  }
+  EXPECT_GE(data_pages.size(), 3u) << gpkg << ": too few data pages";
+  if (data_pages.empty()) return 0;
+  const size_t page = data_pages[data_pages.size() / 2];
+  std::fill_n(bytes.begin() + page * page_size, 8, '\xff');
+  std::ofstream(gpkg, std::ios::binary | std::ios::trunc) << bytes;
+  return static_cast<int>(page + 1);
 }
 
 std::string EpsgWkt2(int code) {

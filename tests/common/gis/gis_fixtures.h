@@ -42,6 +42,13 @@ std::string RunTool(const std::string& program,
 // ogr2ogr; returns its path.
 std::string UtmHillGeoPackage(int n, const std::string& dir);
 
+// Overwrites the header of the middle one of the data pages of the
+// GeoPackage `gpkg`'s feature tables (SQLite table leaf pages holding
+// GeoPackage geometry blobs), so that SQLite finds the file malformed part
+// way through the layer; returns that page's number (1-based). The same
+// file always gets the same page.
+int CorruptMiddleDataPage(const std::string& gpkg);
+
 // The WKT2 of the CRS EPSG:`code`, as GDAL writes it.
 std::string EpsgWkt2(int code);
 

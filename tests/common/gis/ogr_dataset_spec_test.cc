@@ -27,7 +27,8 @@ TEST(OgrDatasetSpecTest, ParsesEveryOption) {
       ParseOgrDatasetSpec(
           "ogr:a.csv?layer=pts&z=h&where=h%20%3E%2010%20AND%20k%3D'a%26b'"
           "&breaklines=lines&domain=area&a_srs=EPSG:32633"
-          "&oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y",
+          "&oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y&driver=ESRI%"
+          "20Shapefile",
           &spec)
           .ok());
   EXPECT_EQ(spec.source, "a.csv");
@@ -39,6 +40,7 @@ TEST(OgrDatasetSpecTest, ParsesEveryOption) {
   EXPECT_EQ(spec.assigned_crs, "EPSG:32633");
   EXPECT_THAT(spec.open_options,
               ElementsAre("X_POSSIBLE_NAMES=x", "Y_POSSIBLE_NAMES=y"));
+  EXPECT_EQ(spec.driver, "ESRI Shapefile");
 }
 
 TEST(OgrDatasetSpecTest, APathWithoutOptionsIsJustTheSource) {

@@ -333,5 +333,35 @@ TEST_F(OgrDatasetErrorTest, BadWhereUnknownCrsAndTooManyPoints) {
               "layer 'pts': more than 4 points (max_points limit)", limits);
 }
 
+// A GeoPackage with a corrupt page in the middle of its points: GDAL reads
+// the features before it, reports the corruption and ends the layer there.
+// The load fails naming the file, the layer and the feature; nothing of the
+// layer is served.
+TEST_F(OgrDatasetErrorTest, ACorruptGeoPackageFailsNamingTheFeature) {
+  const std::string gpkg = testing::UtmHillGeoPackage(45, dir_.path());
+  Dataset intact;
+  ASSERT_TRUE(Load(gpkg, &intact).ok());
+  ASSERT_EQ(intact.points.size(), 45u * 45u);
+  ASSERT_GT(testing::CorruptMiddleDataPage(gpkg), 0);
+  Dataset d;
+  const Status status = Load(gpkg, &d);
+  EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << status.ToString();
+  EXPECT_THAT(status.message(),
+              AllOf(HasSubstr(gpkg + ": layer 'hill': feature number "),
+                    HasSubstr(" (the one after FID "),
+                    HasSubstr("database disk image is malformed")));
+  EXPECT_TRUE(d.points.empty());
+}
+
+TEST_F(OgrDatasetErrorTest, TheDriverOptionOpensWithThatDriverOnly) {
+  Dataset d;
+  ASSERT_TRUE(Load(geojson_ + "?driver=GeoJSON", &d).ok());
+  EXPECT_EQ(d.points.size(), kPoints.size());
+  ExpectError(geojson_ + "?driver=GPKG", Status::Code::kInvalidArgument,
+              geojson_ + ": not a readable OGR vector source for driver GPKG");
+  ExpectError(geojson_ + "?driver=Nonesuch", Status::Code::kInvalidArgument,
+              geojson_ + ": no GDAL driver 'Nonesuch' (driver=)");
+}
+
 }  // namespace
 }  // namespace locator::gis

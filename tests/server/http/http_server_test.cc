@@ -2,12 +2,15 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/time.h>
 
 #include <atomic>
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/write.hpp>
+#include <deque>
 #include <memory>
 #include <string>
 #include <thread>
@@ -27,19 +30,40 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
 constexpr size_t kMaxBody = 8 * 1024;
+constexpr HttpLimits kLimits{.max_body_bytes = kMaxBody,
+                             .max_connections = 512,
+                             .max_connections_per_address = 512};
+
+// The HTTP status a handler answers a problem with, as locatord's does.
+unsigned ProblemStatus(HttpRequest::Problem problem) {
+  switch (problem) {
+    case HttpRequest::Problem::kNone:
+      return 200;
+    case HttpRequest::Problem::kBodyTooLarge:
+      return 413;
+    case HttpRequest::Problem::kHeaderTooLarge:
+      return 431;
+    case HttpRequest::Problem::kMalformed:
+      return 400;
+    default:
+      return 503;
+  }
+}
 
 class HttpServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    // Echoes "METHOD PATH?QUERY BODY"; "/missing" is 404, a body over the
-    // limit 413, "/later" is answered from another thread, "/held" is kept
-    // unanswered in held_ and "/dropped" is never answered.
+    // Echoes "METHOD PATH?QUERY BODY"; "/missing" is 404, a problem is
+    // answered with ProblemStatus, "/later" is answered from another
+    // thread, "/held" is kept unanswered in held_ and "/dropped" is never
+    // answered.
     const Status started = HttpServer::Start(
-        "127.0.0.1", 0, kMaxBody,
+        "127.0.0.1", 0, kLimits,
         [this](HttpRequest request, locator::HttpReply reply) {
           ++handled_;
-          if (request.body_too_large) {
-            reply(HttpResponse{413, "text/plain", "too large"});
+          if (request.problem != HttpRequest::Problem::kNone) {
+            reply(HttpResponse{ProblemStatus(request.problem), "text/plain",
+                               request.problem_detail});
             return;
           }
           if (request.path == "/held") {
@@ -204,17 +228,33 @@ TEST_F(HttpServerTest, KeepAliveServesSeveralRequestsOnOneConnection) {
   EXPECT_THAT(received.substr(second), HasSubstr("\r\n\r\nGET /two? "));
 }
 
-TEST_F(HttpServerTest, OversizedHeadersOrMalformedRequestsAreDropped) {
+TEST_F(HttpServerTest,
+       OversizedHeadersOrMalformedRequestsAreAnsweredAndClosed) {
+  // Whatever the client sends after the header is dropped: the answer still
+  // arrives whole (no reset), and the connection closes after it.
   const std::string huge_header =
-      "GET / HTTP/1.1\r\nHost: x\r\nX-Big: " +
-      std::string(HttpServer::kMaxHeaderBytes, 'a') + "\r\n\r\n";
-  for (const std::string& request :
-       {huge_header, std::string("NOT HTTP AT ALL\r\n\r\n")}) {
-    std::string received = "unset";
+      "GET / HTTP/1.1\r\nHost: x\r\nX-Big: " + std::string(100 * 1024, 'a') +
+      "\r\n\r\n";
+  const struct {
+    std::string request;
+    std::string answer;
+  } cases[] = {
+      {huge_header, "HTTP/1.1 431 "},
+      {"NOT HTTP AT ALL\r\n\r\n", "HTTP/1.1 400 "},
+      {"POST / HTTP/1.1\r\nHost: x\r\n"
+       "Content-Length: 99999999999999999999\r\n\r\nabc",
+       "HTTP/1.1 400 "},
+      {"POST / HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n"
+       "zz\r\nabc\r\n0\r\n\r\n",
+       "HTTP/1.1 400 "},
+  };
+  for (const auto& [request, answer] : cases) {
+    std::string received;
     ASSERT_TRUE(RawExchange(server_->port(), request, &received).ok());
-    EXPECT_EQ(received, "") << request.substr(0, 40);
+    EXPECT_THAT(received, StartsWith(answer)) << request.substr(0, 60);
+    EXPECT_THAT(received, HasSubstr("Connection: close\r\n"));
   }
-  EXPECT_EQ(handled_.load(), 0);
+  EXPECT_EQ(handled_.load(), 4);
   // The server still serves.
   HttpReply reply;
   ASSERT_TRUE(HttpGet(server_->port(), "/after", &reply).ok());
@@ -244,20 +284,134 @@ TEST_F(HttpServerTest, IdleConnectionsDoNotHoldUpOthers) {
   }
 }
 
+// A server of 4 connections, 3 per client address, whose handler holds
+// "/held" unanswered (a busy connection) and answers everything else with
+// the problem's status or 200.
+class HttpServerLimitsTest : public ::testing::Test {
+ protected:
+  static constexpr HttpLimits kSmall{.max_body_bytes = kMaxBody,
+                                     .max_connections = 4,
+                                     .max_connections_per_address = 3};
+
+  void SetUp() override {
+    ASSERT_TRUE(HttpServer::Start(
+                    "127.0.0.1", 0, kSmall,
+                    [this](HttpRequest request, locator::HttpReply reply) {
+                      if (request.path == "/held") {
+                        MutexLock lock(&mu_);
+                        held_.push_back(std::move(reply));
+                        held_changed_.Signal();
+                        return;
+                      }
+                      reply(HttpResponse{ProblemStatus(request.problem),
+                                         "text/plain", request.problem_detail});
+                    },
+                    &server_)
+                    .ok());
+  }
+
+  // A connection from `from` that has sent nothing; it reads with a
+  // timeout, so that a test expecting it closed cannot hang.
+  boost::asio::ip::tcp::socket& OpenIdle(const char* from) {
+    auto& socket = idle_.emplace_back(io_);
+    socket.open(boost::asio::ip::tcp::v4());
+    socket.bind({boost::asio::ip::make_address(from), 0});
+    socket.connect({boost::asio::ip::make_address("127.0.0.1"),
+                    static_cast<unsigned short>(server_->port())});
+    const timeval timeout{.tv_sec = 10, .tv_usec = 0};
+    setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &timeout,
+               sizeof(timeout));
+    return socket;
+  }
+
+  // Whether the server closed `socket` (it reads end of file).
+  static bool ClosedByServer(boost::asio::ip::tcp::socket& socket) {
+    char byte;
+    boost::system::error_code error;
+    socket.read_some(boost::asio::buffer(&byte, 1), error);
+    return error == boost::asio::error::eof;
+  }
+
+  void WaitUntilHeld(size_t count) {
+    MutexLock lock(&mu_);
+    while (held_.size() < count) held_changed_.Wait(&mu_);
+  }
+
+  // A whole exchange from `from`: all the server sent.
+  std::string Get(const char* from, const char* path = "/x") {
+    std::string received;
+    EXPECT_TRUE(RawExchange(server_->port(),
+                            std::string("GET ") + path +
+                                " HTTP/1.1\r\nHost: x\r\n"
+                                "Connection: close\r\n\r\n",
+                            &received, from)
+                    .ok());
+    return received;
+  }
+
+  Mutex mu_;
+  std::vector<locator::HttpReply> held_ GUARDED_BY(mu_);
+  CondVar held_changed_;
+  boost::asio::io_context io_;
+  std::deque<boost::asio::ip::tcp::socket> idle_;
+  std::unique_ptr<HttpServer> server_;
+};
+
+TEST_F(HttpServerLimitsTest, OneAddressGetsItsShareAnd503Beyond) {
+  for (int i = 0; i < 3; ++i) OpenIdle("127.0.0.1");
+  // The fourth from the same address is refused with an answer, not a
+  // reset; another address is still served.
+  const std::string refused = Get("127.0.0.1");
+  EXPECT_THAT(refused, StartsWith("HTTP/1.1 503 "));
+  EXPECT_THAT(refused, HasSubstr("Connection: close\r\n"));
+  EXPECT_THAT(refused, HasSubstr("127.0.0.1"));  // the client's address
+  EXPECT_THAT(Get("127.0.0.2"), StartsWith("HTTP/1.1 200 "));
+  // Its idle connections were not shed for it.
+  for (auto& socket : idle_) EXPECT_TRUE(socket.is_open());
+}
+
+TEST_F(HttpServerLimitsTest, AtTheLimitTheLongestIdleConnectionIsShed) {
+  OpenIdle("127.0.0.2");
+  OpenIdle("127.0.0.3");
+  OpenIdle("127.0.0.3");
+  OpenIdle("127.0.0.4");
+  // All 4 are open and idle: a new client is served, and the connection
+  // idle longest (the first) made room.
+  EXPECT_THAT(Get("127.0.0.1"), StartsWith("HTTP/1.1 200 "));
+  EXPECT_TRUE(ClosedByServer(idle_[0]));
+}
+
+TEST_F(HttpServerLimitsTest, WhenEveryConnectionIsBusyANewOneGets503) {
+  std::vector<std::thread> clients;
+  for (const char* from :
+       {"127.0.0.2", "127.0.0.3", "127.0.0.4", "127.0.0.5"}) {
+    clients.emplace_back([this, from] {
+      EXPECT_THAT(Get(from, "/held"), StartsWith("HTTP/1.1 200 "));
+    });
+  }
+  WaitUntilHeld(4);
+  EXPECT_THAT(Get("127.0.0.1"), StartsWith("HTTP/1.1 503 "));
+  {
+    MutexLock lock(&mu_);
+    for (locator::HttpReply& reply : held_) reply(HttpResponse{});
+  }
+  for (std::thread& client : clients) client.join();
+  EXPECT_THAT(Get("127.0.0.1"), StartsWith("HTTP/1.1 200 "));
+}
+
 TEST(HttpServerStartTest, AnAddressInUseFails) {
   std::unique_ptr<HttpServer> first, second;
   const auto handler = [](HttpRequest, locator::HttpReply reply) {
     reply(HttpResponse{});
   };
-  ASSERT_TRUE(
-      HttpServer::Start("127.0.0.1", 0, kMaxBody, handler, &first).ok());
+  ASSERT_TRUE(HttpServer::Start("127.0.0.1", 0, kLimits, handler, &first).ok());
   const Status status =
-      HttpServer::Start("127.0.0.1", first->port(), kMaxBody, handler, &second);
+      HttpServer::Start("127.0.0.1", first->port(), kLimits, handler, &second);
   EXPECT_EQ(status.code(), Status::Code::kIOError);
   EXPECT_THAT(status.message(), HasSubstr("cannot listen on 127.0.0.1:"));
   EXPECT_EQ(second, nullptr);
   EXPECT_FALSE(
-      HttpServer::Start("no.such.host.invalid", 0, kMaxBody, handler, &second)
+      HttpServer::Start("no.such.host.invalid", 0, kLimits, handler, &second)
           .ok());
 }
 

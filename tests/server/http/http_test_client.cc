@@ -16,14 +16,25 @@ namespace beast = boost::beast;
 namespace http = beast::http;
 using tcp = asio::ip::tcp;
 
-constexpr auto kTimeout = std::chrono::seconds(10);
+// Long enough for a slow server (sanitizers, a loaded machine) to answer;
+// only a server that never answers waits this long.
+constexpr auto kTimeout = std::chrono::seconds(120);
 
-Status Connect(int port, beast::tcp_stream* stream) {
+// Connects `stream` from the loopback address `from` to 127.0.0.1:port.
+Status Connect(int port, beast::tcp_stream* stream,
+               std::string_view from = "127.0.0.1") {
   beast::error_code error;
   stream->expires_after(kTimeout);
-  stream->connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"),
-                                static_cast<unsigned short>(port)),
-                  error);
+  tcp::socket& socket = stream->socket();
+  socket.open(tcp::v4(), error);
+  if (!error) {
+    socket.bind(tcp::endpoint(asio::ip::make_address(from), 0), error);
+  }
+  if (!error) {
+    socket.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"),
+                                 static_cast<unsigned short>(port)),
+                   error);
+  }
   if (error) return Status::IOError("connect: " + error.message());
   return Status::OK();
 }
@@ -96,10 +107,13 @@ Status SendHttp(int port, std::string_view method, std::string_view target,
   return Status::OK();
 }
 
-Status RawExchange(int port, std::string_view raw, std::string* received) {
+Status RawExchange(int port, std::string_view raw, std::string* received,
+                   std::string_view from) {
   asio::io_context io;
   beast::tcp_stream stream(io);
-  if (Status status = Connect(port, &stream); !status.ok()) return status;
+  if (Status status = Connect(port, &stream, from); !status.ok()) {
+    return status;
+  }
   beast::error_code error;
   asio::write(stream.socket(), asio::buffer(raw.data(), raw.size()), error);
   // The server may close while we still write; what it sent still counts.

@@ -38,9 +38,11 @@ inline Status HttpGet(int port, std::string_view target, HttpReply* reply) {
   return SendHttp(port, "GET", target, reply);
 }
 
-// Writes `raw` bytes to a fresh connection and returns everything the
-// server sends back until it closes the connection (or 10 s pass).
-Status RawExchange(int port, std::string_view raw, std::string* received);
+// Writes `raw` bytes to a fresh connection from the loopback address `from`
+// and returns everything the server sends back until it closes the
+// connection (or 120 s pass).
+Status RawExchange(int port, std::string_view raw, std::string* received,
+                   std::string_view from = "127.0.0.1");
 
 }  // namespace locator::test
 

@@ -145,6 +145,8 @@ struct ErrorRow {
   unsigned http;
   Code code;
   std::string message;
+  // Of a POST; "" sends none.
+  std::string content_type = "application/json";
 };
 
 void PrintTo(const ErrorRow& row, std::ostream* out) {
@@ -205,6 +207,20 @@ std::vector<ErrorRow> ErrorRows() {
        "GET is not allowed on /v1/datasets/terrain:locate; use POST"},
       {"PostOfAGetMethod", "POST", "/v1/datasets", "{}", 405,
        Code::UNIMPLEMENTED, "POST is not allowed on /v1/datasets; use GET"},
+      // What a page of another origin can POST without a CORS preflight.
+      {"TextPlainPost", "POST", locate, R"({"point": {"x": 1, "y": 2}})", 415,
+       Code::INVALID_ARGUMENT,
+       "a POST to the API must have Content-Type: application/json",
+       "text/plain"},
+      {"FormPost", "POST", locate, R"({"point": {"x": 1, "y": 2}})", 415,
+       Code::INVALID_ARGUMENT, "Content-Type: application/json",
+       "application/x-www-form-urlencoded"},
+      {"PostWithoutContentType", "POST", locate,
+       R"({"point": {"x": 1, "y": 2}})", 415, Code::INVALID_ARGUMENT,
+       "Content-Type: application/json", ""},
+      {"JsonWithCharsetIsJson", "POST", locate, "{}", 400,
+       Code::INVALID_ARGUMENT, "point is required",
+       "Application/JSON; charset=utf-8"},
   };
 }
 
@@ -213,8 +229,13 @@ class JsonApiErrorTest : public JsonApiTest,
 
 TEST_P(JsonApiErrorTest, AnswersTheGrpcStatusAsHttp) {
   const ErrorRow& row = GetParam();
+  HttpHeaders headers;
+  if (row.method == "POST" && !row.content_type.empty()) {
+    headers.emplace_back("Content-Type", row.content_type);
+  }
   HttpReply reply;
-  ASSERT_TRUE(SendHttp(port(), row.method, row.target, &reply, row.body).ok());
+  ASSERT_TRUE(
+      SendHttp(port(), row.method, row.target, &reply, row.body, headers).ok());
   ExpectError(reply, row.http, row.code, row.message);
   if (row.http == 405) {
     EXPECT_EQ(reply.headers["allow"], row.method == "GET" ? "POST" : "GET");
@@ -304,7 +325,10 @@ TEST_F(JsonApiTest, EngineMetricsAndTheStatusApiAreLabelledByDataset) {
             bedrock.memory().tuning_bytes());
   // Every engine series has the label.
   for (const PrometheusSample& sample : metrics.samples) {
-    if (sample.name.starts_with("locator_rpc_")) continue;
+    if (sample.name.starts_with("locator_rpc_") ||
+        sample.name.starts_with("locator_http_")) {
+      continue;
+    }
     EXPECT_EQ(sample.labels.count("dataset"), 1u) << sample.name;
   }
 
@@ -324,14 +348,15 @@ TEST(JsonApiTokenTest, TheGrpcTokensAndScopesApply) {
   std::unique_ptr<LocatordWithHttp> server;
   ASSERT_TRUE(LocatordWithHttp::Start("uniform:2000:1",
                                       {"--token-file", token_file, "--redact"},
-                                      &server)
+                                      &server, kDataToken)
                   .ok());
   const int port = server->http_port();
   const std::string locate = "/v1/datasets/default:locate";
   const std::string body = R"({"point": {"x": 0.5, "y": 0.5}})";
-  ExpectError(Post(port, locate, body), 401, Code::UNAUTHENTICATED,
-              "expected 'authorization: Bearer <token>' (gRPC metadata or HTTP "
-              "header)");
+  const std::string no_token =
+      "expected 'authorization: Bearer <token>' (gRPC metadata or HTTP "
+      "header)";
+  ExpectError(Post(port, locate, body), 401, Code::UNAUTHENTICATED, no_token);
   ExpectError(Post(port, locate, body, {{"Authorization", "Bearer guess"}}),
               403, Code::PERMISSION_DENIED, "the bearer token is not accepted");
   const HttpHeaders token = {
@@ -345,6 +370,46 @@ TEST(JsonApiTokenTest, TheGrpcTokensAndScopesApply) {
   ASSERT_EQ(datasets.datasets_size(), 1);
   EXPECT_EQ(datasets.datasets(0).stats().source(), "");
   EXPECT_EQ(datasets.datasets(0).stats().input_points(), 2000u);
+
+  // The status API's statistics and edges want the token as GetStats does;
+  // the history (counts and costs only) and /metrics do not.
+  for (const char* path : {"/api/stats", "/api/edges"}) {
+    HttpReply reply;
+    ASSERT_TRUE(HttpGet(port, path, &reply).ok());
+    ExpectError(reply, 401, Code::UNAUTHENTICATED, no_token);
+    ASSERT_TRUE(SendHttp(port, "GET", path, &reply, "",
+                         {{"Authorization", "Bearer guess"}})
+                    .ok());
+    ExpectError(reply, 403, Code::PERMISSION_DENIED,
+                "the bearer token is not accepted");
+    ASSERT_TRUE(SendHttp(port, "GET", path, &reply, "", token).ok());
+    EXPECT_EQ(reply.status, 200u) << path;
+  }
+  for (const char* path : {"/api/history", "/metrics"}) {
+    HttpReply reply;
+    ASSERT_TRUE(HttpGet(port, path, &reply).ok());
+    EXPECT_EQ(reply.status, 200u) << path;
+  }
+}
+
+TEST(JsonApiTokenTest, PublicStatusOpensTheStatusApiOnly) {
+  ScratchDir dir;
+  const std::string token_file = dir.path() + "/token";
+  std::ofstream(token_file) << kDataToken << "\n";
+  std::unique_ptr<LocatordWithHttp> server;
+  ASSERT_TRUE(LocatordWithHttp::Start(
+                  "uniform:2000:1",
+                  {"--token-file", token_file, "--http-public-status"}, &server)
+                  .ok());
+  const int port = server->http_port();
+  for (const char* path : {"/api/stats", "/api/edges"}) {
+    HttpReply reply;
+    ASSERT_TRUE(HttpGet(port, path, &reply).ok());
+    EXPECT_EQ(reply.status, 200u) << path;
+  }
+  ExpectError(Post(port, "/v1/datasets/default:locate",
+                   R"({"point": {"x": 0.5, "y": 0.5}})"),
+              401, Code::UNAUTHENTICATED, "Bearer <token>");
 }
 
 TEST(JsonApiDeadlineTest, ABatchPastTheServersDefaultDeadlineIs504) {
@@ -356,8 +421,51 @@ TEST(JsonApiDeadlineTest, ABatchPastTheServersDefaultDeadlineIs504) {
   ExpectError(Post(server->http_port(), "/v1/datasets/default:locateBatch",
                    BatchOf(200000)),
               504, Code::DEADLINE_EXCEEDED,
-              "deadline passed while locating the batch (the server's "
-              "default of 1 ms");
+              "(the server's default of 1 ms; the call set no deadline)");
+}
+
+}  // namespace
+}  // namespace locator::test
+
+namespace locator::test {
+namespace {
+
+TEST(JsonApiGridLimitTest, AGridOverTheHttpLimitNamesTheFlag) {
+  std::unique_ptr<LocatordWithHttp> server;
+  ASSERT_TRUE(LocatordWithHttp::Start("uniform:2000:1",
+                                      {"--http-max-grid-cells", "100"}, &server)
+                  .ok());
+  const std::string grid = "/v1/datasets/default:grid";
+  const HttpReply fits = Post(server->http_port(), grid,
+                              R"({"box": {"min_x": 0.1, "min_y": 0.1,
+                                          "max_x": 0.9, "max_y": 0.9},
+                                  "width": 10, "height": 10})");
+  ASSERT_EQ(fits.status, 200u) << fits.body;
+  const auto answer = FromJson<v1::GridResponse>(fits.body);
+  EXPECT_EQ(answer.values_size(), 100);
+  EXPECT_EQ(answer.rows(), 10u);
+  EXPECT_EQ(answer.header().width(), 10u);
+  ExpectError(Post(server->http_port(), grid,
+                   R"({"box": {"min_x": 0.1, "min_y": 0.1,
+                               "max_x": 0.9, "max_y": 0.9},
+                       "width": 11, "height": 10})"),
+              429, Code::RESOURCE_EXHAUSTED,
+              "a grid of 11 x 10 = 110 cells exceeds this server's limit of "
+              "100 cells per request (--http-max-grid-cells");
+}
+
+TEST(JsonApiDeadlineTest, AGridPastTheServersDefaultDeadlineIs504) {
+  std::unique_ptr<LocatordWithHttp> server;
+  ASSERT_TRUE(LocatordWithHttp::Start("uniform:20000:1",
+                                      {"--default-deadline-ms", "1"}, &server)
+                  .ok());
+  ExpectError(Post(server->http_port(), "/v1/datasets/default:grid",
+                   R"({"box": {"min_x": 0, "min_y": 0, "max_x": 1,
+                               "max_y": 1},
+                       "width": 1000, "height": 1000,
+                       "interpolation": "INTERPOLATION_NATURAL_NEIGHBOR"})"),
+              504, Code::DEADLINE_EXCEEDED,
+              "(the server's default of 1 ms; the call set no deadline)");
 }
 
 }  // namespace

@@ -28,8 +28,11 @@ std::string ToJson(const google::protobuf::Message& message) {
 
 HttpReply Post(int port, const std::string& target, const std::string& body,
                const HttpHeaders& headers) {
+  HttpHeaders sent_headers = headers;
+  sent_headers.emplace_back("Content-Type", "application/json");
   HttpReply reply;
-  const Status sent = SendHttp(port, "POST", target, &reply, body, headers);
+  const Status sent =
+      SendHttp(port, "POST", target, &reply, body, sent_headers);
   EXPECT_TRUE(sent.ok()) << sent.ToString();
   return reply;
 }

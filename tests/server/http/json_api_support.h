@@ -35,7 +35,8 @@ Message FromJson(const std::string& json) {
 ::testing::AssertionResult SameProto(const google::protobuf::Message& a,
                                      const google::protobuf::Message& b);
 
-// POSTs `body` to `target`; a failed exchange is a test failure.
+// POSTs `body` to `target` as Content-Type: application/json, with
+// `headers`; a failed exchange is a test failure.
 HttpReply Post(int port, const std::string& target, const std::string& body,
                const HttpHeaders& headers = {});
 

@@ -18,12 +18,14 @@ constexpr auto kPollInterval = std::chrono::milliseconds(20);
 
 Status LocatordWithHttp::Start(const std::string& dataset,
                                const std::vector<std::string>& flags,
-                               std::unique_ptr<LocatordWithHttp>* server) {
+                               std::unique_ptr<LocatordWithHttp>* server,
+                               const std::string& data_token) {
   std::vector<std::string> args = {"--dataset",     dataset,
                                    "--listen",      "127.0.0.1:0",
                                    "--http-listen", "127.0.0.1:0"};
   args.insert(args.end(), flags.begin(), flags.end());
   std::unique_ptr<LocatordWithHttp> started(new LocatordWithHttp());
+  started->data_token_ = data_token;
   Status status = ServerProcess::Spawn(LOCATORD_PATH, args, &started->process_);
   if (status.ok()) status = started->process_->WaitForListening();
   if (!status.ok()) return status;
@@ -42,7 +44,12 @@ Status LocatordWithHttp::WaitUntilServes(const std::string& dataset) {
   const auto deadline = std::chrono::steady_clock::now() + kServingTimeout;
   for (;;) {
     HttpReply reply;
-    if (HttpGet(http_port_, target, &reply).ok() && reply.status == 200) {
+    HttpHeaders headers;
+    if (!data_token_.empty()) {
+      headers.emplace_back("Authorization", "Bearer " + data_token_);
+    }
+    if (SendHttp(http_port_, "GET", target, &reply, "", headers).ok() &&
+        reply.status == 200) {
       return Status::OK();
     }
     if (process_->WaitForExit(std::chrono::milliseconds(0)) ||

@@ -27,14 +27,15 @@ namespace locator::test {
 class LocatordWithHttp {
  public:
   // Starts locatord serving `dataset` with `flags` added, and waits until it
-  // serves.
+  // serves; `data_token` is the token the flags make it want ("": none).
   static Status Start(const std::string& dataset,
                       const std::vector<std::string>& flags,
-                      std::unique_ptr<LocatordWithHttp>* server);
+                      std::unique_ptr<LocatordWithHttp>* server,
+                      const std::string& data_token = "");
 
   // Waits until dataset `dataset` ("": the default) serves: /api/stats
-  // answers 200 for it. Unavailable, with stderr, if the server exits or
-  // 60 s pass first.
+  // answers 200 for it (asked with the data token). Unavailable, with
+  // stderr, if the server exits or 60 s pass first.
   Status WaitUntilServes(const std::string& dataset);
 
   ServerProcess& process() { return *process_; }
@@ -48,6 +49,7 @@ class LocatordWithHttp {
   std::unique_ptr<ServerProcess> process_;
   std::string grpc_target_;
   int http_port_ = 0;
+  std::string data_token_;
 };
 
 // GETs `target` and parses its body as JSON; a failure is reported as a

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "server/access_policy.h"
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
 #include "server/metrics/engine_collector.h"
@@ -53,7 +54,8 @@ class StatusEndpointsTest : public ::testing::Test {
       return std::vector<DatasetStatsSample>{sample};
     });
     return StatusEndpoints(
-        {.stats = stats,
+        {.authorize = authorize_,
+         .stats = stats,
          .edges =
              [this, known](std::string_view dataset, MapEdges* edges) {
                if (Status status = known(dataset); !status.ok()) return status;
@@ -81,7 +83,28 @@ class StatusEndpointsTest : public ::testing::Test {
 
   std::shared_ptr<Engine> engine_;
   StatsHistory history_;
+  StatusAuthorizer authorize_;  // null: the status API is public
 };
+
+TEST_F(StatusEndpointsTest, StatsAndEdgesAreAdmittedByTheAuthorizer) {
+  const AccessPolicy policy("data-token", "");
+  authorize_ = [&policy](std::optional<std::string_view> authorization) {
+    return policy.CheckAuthorization(authorization, AccessPolicy::Scope::kData);
+  };
+  const StatusEndpoints endpoints = Endpoints();
+  Load();
+  for (const char* path : {"/api/stats", "/api/edges"}) {
+    EXPECT_EQ(endpoints.Handle(path).status, 401u) << path;
+    EXPECT_EQ(endpoints.Handle(path, "", "Bearer guess").status, 403u) << path;
+    const HttpResponse admitted =
+        endpoints.Handle(path, "", "Bearer data-token");
+    EXPECT_EQ(admitted.status, 200u) << path;
+  }
+  // Counts and costs only, like /metrics: no token.
+  EXPECT_EQ(endpoints.Handle("/api/history").status, 200u);
+  EXPECT_EQ(endpoints.Handle("/metrics").status, 200u);
+  EXPECT_EQ(endpoints.Handle("/").status, 200u);
+}
 
 TEST_F(StatusEndpointsTest, WhileLoadingTheApiIs503AndMetricsSayNotLoaded) {
   const StatusEndpoints endpoints = Endpoints();

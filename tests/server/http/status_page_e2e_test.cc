@@ -3,7 +3,9 @@
 // must show the heat map's hottest cells inside the cluster and the same
 // figures /api/stats reports; on a constrained dataset it must have drawn
 // the domain's boundary and holes and the breaklines /api/edges serves,
-// with their legend. The screenshots are kept as test artifacts
+// with their legend. With tokens on, the page asks for the data token and,
+// given one (#token=), shows the statistics. The screenshots are kept as
+// test artifacts
 // (ARTIFACTS_DIR/status_page.png, status_page_domain.png). Skipped when
 // Chromium is not installed.
 
@@ -50,8 +52,8 @@ std::string Figure(const std::string& dom, const std::string& id) {
 // Takes a 1280x900 screenshot of `url` into ARTIFACTS_DIR/`name` and
 // checks that something is drawn in it.
 void ExpectPageDrawn(const std::string& url, const std::string& name) {
-  ExpectScreenshotDrawn(url, std::string(ARTIFACTS_DIR) + "/" + name, 1280,
-                        900, 30000);
+  ExpectScreenshotDrawn(url, std::string(ARTIFACTS_DIR) + "/" + name, 1280, 900,
+                        30000);
 }
 
 TEST(StatusPageTest, HeatMapAndFiguresShowTheClusteredTraffic) {
@@ -202,6 +204,34 @@ TEST(StatusPageTest, DomainBoundaryHolesAndBreaklinesAreDrawn) {
   ASSERT_NE(legend, "") << dom;
   EXPECT_EQ(legend.find(" hidden"), std::string::npos) << legend;
   ExpectPageDrawn(url, "status_page_domain.png");
+}
+
+TEST(StatusPageTest, WithTokensThePageAsksForTheDataToken) {
+  if (access(kChromium, X_OK) != 0) {
+    GTEST_SKIP() << kChromium << " is not installed (Debian package chromium)";
+  }
+  ScratchDir dir;
+  const std::string token_file = dir.path() + "/token";
+  std::ofstream(token_file) << "status-token-42\n";
+  std::unique_ptr<LocatordWithHttp> server;
+  ASSERT_TRUE(LocatordWithHttp::Start("uniform:2000:1",
+                                      {"--token-file", token_file}, &server,
+                                      "status-token-42")
+                  .ok());
+  const std::string url =
+      "http://127.0.0.1:" + std::to_string(server->http_port()) + "/";
+
+  const std::string asked = RunChromium(url, {"--dump-dom"});
+  EXPECT_EQ(Attribute(StartTag(asked, "state"), "class"), "state locked");
+  EXPECT_NE(StartTag(asked, "token"), "");
+  EXPECT_EQ(StartTag(asked, "token").find(" hidden"), std::string::npos)
+      << StartTag(asked, "token");
+  EXPECT_EQ(Attribute(StartTag(asked, "queries"), "data-value"), "");
+
+  const std::string shown =
+      RunChromium(url + "#token=status-token-42", {"--dump-dom"});
+  EXPECT_EQ(Attribute(StartTag(shown, "state"), "class"), "state serving");
+  EXPECT_EQ(Figure(shown, "start-points").empty(), false);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ using Code = grpc::StatusCode;
 
 constexpr uint64_t kMaxGridCells = 300000;
 constexpr uint64_t kMaxCrossings = 5000;
+constexpr uint32_t kMaxSamples = 700;
 // The e2e dataset's values span about 2 * 150 + 3 * 60.
 constexpr double kValueTolerance = 1e-9 * 500;
 
@@ -120,7 +121,8 @@ class SurfaceTest : public ::testing::Test {
         "terrain=" + dataset_->path(),
         {"--dataset", "lake=uniform:3000:5+" + lake, "--max-grid-cells",
          std::to_string(kMaxGridCells), "--max-profile-crossings",
-         std::to_string(kMaxCrossings)},
+         std::to_string(kMaxCrossings), "--max-profile-samples",
+         std::to_string(kMaxSamples)},
         &server_);
     ASSERT_TRUE(started.ok()) << started.ToString();
     ASSERT_TRUE(server_->WaitUntilServes("lake").ok());
@@ -347,6 +349,24 @@ std::vector<Refusal> Refusals() {
   add("ProfileOverCrossingLimit", profile, ProfileRequestFor(zigzag, 0),
       "profile", Code::RESOURCE_EXHAUSTED,
       "crosses more than " + std::to_string(kMaxCrossings) + " triangle edges");
+  const std::string over_samples =
+      " samples exceeds this server's limit of " + std::to_string(kMaxSamples) +
+      " samples per request (locatord --max-profile-samples)";
+  add("ProfileOverSampleLimit", profile,
+      ProfileRequestFor({{1, 1}, {2, 2}}, kMaxSamples + 1), "profile",
+      Code::RESOURCE_EXHAUSTED,
+      "a profile of " + std::to_string(kMaxSamples + 1) + over_samples);
+  // Refused before anything is allocated (this one once ended in bad_alloc).
+  add("ProfileOfFourBillionSamples", profile,
+      ProfileRequestFor({{1, 1}, {2, 2}}, 4'000'000'000), "profile",
+      Code::RESOURCE_EXHAUSTED, "a profile of 4000000000" + over_samples);
+  // Every vertex enters at least one triangle.
+  std::vector<Point2> long_line(kMaxCrossings + 1, Point2{1, 1});
+  add("ProfileLineOverCrossingLimit", profile, ProfileRequestFor(long_line, 0),
+      "profile", Code::RESOURCE_EXHAUSTED,
+      "a profile line of " + std::to_string(kMaxCrossings + 1) +
+          " vertices enters more triangles than this server's limit of " +
+          std::to_string(kMaxCrossings));
   add("ProfileOfUnknownDataset", profile,
       ProfileRequestFor({{1, 1}, {2, 2}}, 0, "lava"), "profile",
       Code::NOT_FOUND, "lava");
@@ -383,6 +403,14 @@ std::vector<Refusal> Refusals() {
   tiny_cells.set_cell_size(1e-3);
   add("GridCellSizeOverCellLimit", grid, tiny_cells, "grid",
       Code::RESOURCE_EXHAUSTED, "1000 x 1000 = 1000000 cells");
+  // 1e-300 and the columns it makes (1 / 1e-300 in double) read in their
+  // shortest exact form, not as 300 digits.
+  v1::GridRequest minute_cells = GridRequestFor(box, 0, 0);
+  minute_cells.set_cell_size(1e-300);
+  add("GridOfMinuteCellSize", grid, minute_cells, "grid",
+      Code::RESOURCE_EXHAUSTED,
+      "cell_size 1e-300 makes a grid of 9.999999999999999e+299 x "
+      "9.999999999999999e+299 cells");
   v1::GridRequest natural_grid = GridRequestFor(box, 4, 4, "lake");
   natural_grid.set_interpolation(v1::INTERPOLATION_NATURAL_NEIGHBOR);
   add("GridNaturalNeighborOnConstraints", grid, natural_grid, "grid",

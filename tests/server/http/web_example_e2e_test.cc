@@ -5,8 +5,13 @@
 // the DOM it leaves must show the triangle id, vertices and value gRPC
 // answers for the point the page located, which lies within a pixel of the
 // known one and so in the same triangle. The screenshot is kept as a test
-// artifact (ARTIFACTS_DIR/web_example.png). Skipped without Chromium.
+// artifact (ARTIFACTS_DIR/web_example.png). The token typed into the page
+// goes to its own origin without a question, and to another origin (a
+// ?server= elsewhere) only once the user agrees to a confirm() naming it,
+// asked once per origin (driven over the DevTools protocol, which answers
+// the dialog). Skipped without Chromium.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,6 +24,7 @@
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"
 #include "tests/server/http/browser.h"
+#include "tests/server/http/devtools_page.h"
 #include "tests/server/http/status_e2e_support.h"
 
 namespace locator::test {
@@ -95,6 +101,82 @@ TEST(WebExampleTest, AClickShowsTheTriangleAndValueGrpcAnswers) {
 
   ExpectScreenshotDrawn(url, std::string(ARTIFACTS_DIR) + "/web_example.png",
                         1280, 700, 20000);
+}
+
+constexpr char kToken[] = "web-token-5678";
+
+// What the web example's page shows once it has settled: the result's
+// state when a click was answered, else the error shown.
+constexpr char kOutcome[] =
+    "(() => { const state = document.getElementById('result').dataset.state;"
+    "  const error = document.getElementById('error').textContent;"
+    "  return state === 'done' ? 'done' : (error ? 'error: ' + error : ''); "
+    "})()";
+
+class WebExampleTokenTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!ChromiumInstalled()) {
+      GTEST_SKIP() << kChromium
+                   << " is not installed (Debian package chromium)";
+    }
+    const std::string token_file = dir_.path() + "/token";
+    std::ofstream(token_file) << kToken << "\n";
+    // The page's origin: a locatord without tokens, serving /web/.
+    ASSERT_TRUE(LocatordWithHttp::Start("uniform:500:2", {}, &page_).ok());
+    // The server the page is pointed at: tokens on, CORS for that origin.
+    ASSERT_TRUE(LocatordWithHttp::Start("grid=uniform:2000:1",
+                                        {"--token-file", token_file,
+                                         "--http-cors-origin", PageOrigin()},
+                                        &api_, kToken)
+                    .ok());
+  }
+
+  std::string PageOrigin() const {
+    return "http://127.0.0.1:" + std::to_string(page_->http_port());
+  }
+  std::string ApiOrigin() const {
+    return "http://127.0.0.1:" + std::to_string(api_->http_port());
+  }
+  // The web example from `origin` pointed at the token server, with the
+  // token in the link, clicking the middle of the map.
+  std::string PageUrl(const std::string& origin) const {
+    return origin + "/web/?server=" + ApiOrigin() +
+           "&click=0.5,0.5#token=" + kToken;
+  }
+
+  ScratchDir dir_;
+  std::unique_ptr<LocatordWithHttp> page_;
+  std::unique_ptr<LocatordWithHttp> api_;
+};
+
+TEST_F(WebExampleTokenTest, ItsOwnOriginGetsTheTokenWithoutAQuestion) {
+  std::unique_ptr<DevToolsPage> page;
+  ASSERT_TRUE(DevToolsPage::Open(PageUrl(ApiOrigin()), false, &page).ok());
+  std::string outcome;
+  ASSERT_TRUE(page->WaitForValue(kOutcome, &outcome).ok());
+  EXPECT_EQ(outcome, "done");
+  EXPECT_TRUE(page->dialogs().empty());
+}
+
+TEST_F(WebExampleTokenTest, AnotherOriginGetsItOnlyWhenTheUserAgrees) {
+  // Declined: the calls go without the token, and the server wants one.
+  std::unique_ptr<DevToolsPage> declined;
+  ASSERT_TRUE(DevToolsPage::Open(PageUrl(PageOrigin()), false, &declined).ok());
+  std::string outcome;
+  ASSERT_TRUE(declined->WaitForValue(kOutcome, &outcome).ok());
+  EXPECT_THAT(outcome, ::testing::HasSubstr("Bearer <token>"));
+  ASSERT_EQ(declined->dialogs().size(), 1u);
+  EXPECT_THAT(declined->dialogs()[0], ::testing::HasSubstr(ApiOrigin()));
+
+  // Agreed: the list, the edges and the click's :locate all carry it, and
+  // the question was asked once.
+  std::unique_ptr<DevToolsPage> agreed;
+  ASSERT_TRUE(DevToolsPage::Open(PageUrl(PageOrigin()), true, &agreed).ok());
+  ASSERT_TRUE(agreed->WaitForValue(kOutcome, &outcome).ok());
+  EXPECT_EQ(outcome, "done");
+  ASSERT_EQ(agreed->dialogs().size(), 1u);
+  EXPECT_THAT(agreed->dialogs()[0], ::testing::HasSubstr(ApiOrigin()));
 }
 
 }  // namespace
