@@ -52,6 +52,17 @@ std::vector<std::string> GdalFileList(GDALDataset& dataset) {
   return files;
 }
 
+std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
+                                std::span<const char* const> drivers) {
+  RegisterGdalDrivers();
+  CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
+  std::vector<const char*> allowed(drivers.begin(), drivers.end());
+  allowed.push_back(nullptr);
+  GDALDriverH found =
+      GDALIdentifyDriverEx(path.c_str(), kind, allowed.data(), nullptr);
+  return found == nullptr ? "" : GDALGetDriverShortName(found);
+}
+
 Status VectorFileList(const std::string& source,
                       const std::vector<std::string>& open_options,
                       const std::string& driver,

@@ -12,6 +12,7 @@
 
 #include <cpl_error.h>
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,12 @@ Status UserCrsToWkt(const std::string& crs, std::string* wkt);
 // The files `dataset` reads (GDALDataset::GetFileList: the main file and
 // its side-cars, a VRT's sources), in GDAL's order.
 std::vector<std::string> GdalFileList(GDALDataset& dataset);
+
+// The short name of the driver among `drivers` that identifies `path` as a
+// dataset of `kind` (GDAL_OF_VECTOR or GDAL_OF_RASTER), quietly; "" when
+// none of them does.
+std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
+                                std::span<const char* const> drivers);
 
 // GdalFileList of the vector source `source` opened with `open_options`
 // (NAME=VALUE each) by `driver` (a short name; "" for any), without reading

@@ -48,15 +48,18 @@ Status ParseRasterDatasetSpec(std::string_view spec, RasterDatasetSpec* out) {
         return s;
       }
       parsed.band = static_cast<int>(band);
-    } else if (option.name == "a_srs") {
-      if (!parsed.assigned_crs.empty()) {
-        return SpecError(spec, "option 'a_srs' given twice");
+    } else if (option.name == "a_srs" || option.name == "driver") {
+      std::string& field =
+          option.name == "a_srs" ? parsed.assigned_crs : parsed.driver;
+      if (!field.empty()) {
+        return SpecError(spec, "option '" + option.name + "' given twice");
       }
-      if (option.value.empty())
-        return SpecError(spec, "option 'a_srs' is empty");
-      parsed.assigned_crs = option.value;
+      if (option.value.empty()) {
+        return SpecError(spec, "option '" + option.name + "' is empty");
+      }
+      field = option.value;
     } else {
-      return UnknownSpecOption(spec, option.name, "band, a_srs");
+      return UnknownSpecOption(spec, option.name, "band, a_srs, driver");
     }
   }
   *out = std::move(parsed);

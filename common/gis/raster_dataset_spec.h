@@ -11,6 +11,11 @@
 //   band=N     the band of elevations, from 1 (default 1)
 //   a_srs=CRS  assign this CRS (EPSG:32633, WKT or a PROJ string), ignoring
 //              the raster's own (gdal_translate -a_srs)
+//   driver=D   open the source with this GDAL driver only (its short name:
+//              GTiff, AAIGrid; gdal_translate -if)
+//
+// A spec that comes in a request (a Reload's) may use only what
+// untrusted_raster_spec.h allows; the operator's own may use all of GDAL.
 //
 // Thread-safety: free functions; a RasterDatasetSpec is a plain value.
 
@@ -30,6 +35,8 @@ struct RasterDatasetSpec {
   std::string source;
   int band = 1;
   std::string assigned_crs;
+  // The only GDAL driver that may open the source; "" for any.
+  std::string driver;
 };
 
 // True when `spec` names a raster: the "raster:" prefix or a raster
@@ -42,7 +49,7 @@ SpecParts SplitRasterDatasetSpec(std::string_view spec);
 
 // Parses `spec`; InvalidArgument naming the spec and the option for an
 // unknown or repeated option, a band that is not a positive integer, an
-// empty a_srs, or no source.
+// empty a_srs or driver, or no source.
 Status ParseRasterDatasetSpec(std::string_view spec, RasterDatasetSpec* out);
 
 }  // namespace locator::gis

@@ -165,13 +165,22 @@ Status OpenRaster(const RasterDatasetSpec& spec,
   if (VSIStatL(spec.source.c_str(), &stat) != 0) {
     return Status::NotFound(spec.source + ": no such file or directory");
   }
+  if (!spec.driver.empty() &&
+      GDALGetDriverByName(spec.driver.c_str()) == nullptr) {
+    return Status::InvalidArgument(spec.source + ": no GDAL driver '" +
+                                   spec.driver + "' (driver=)");
+  }
+  const char* const only_driver[] = {spec.driver.c_str(), nullptr};
   CPLErrorReset();
   std::unique_ptr<GDALDataset, GdalCloser> dataset(GDALDataset::Open(
       spec.source.c_str(),
-      GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR));
+      GDAL_OF_RASTER | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR,
+      spec.driver.empty() ? nullptr : only_driver));
   if (dataset == nullptr) {
     std::string message =
-        spec.source + ": GDAL cannot open it as a raster: " + LastGdalError();
+        spec.source + ": GDAL cannot open it as a raster" +
+        (spec.driver.empty() ? "" : " with driver " + spec.driver) + ": " +
+        LastGdalError();
     if (SourceHasExtension(spec.source, kAmbiguousExtensions)) {
       message += " (x,y,z text is read when the file is named .xyz or .csv)";
     }

@@ -279,6 +279,56 @@ TEST_F(LocatordTerrainTest, ARestartMapsTheDemsMeshWithoutReadingTheRaster) {
               HasSubstr(dem + ": GDAL cannot open it as a raster"));
 }
 
+// A Reload may load a raster or a LAS file of the reload dir with their
+// harmless options, and is refused a raster that names other files (a VRT,
+// even under a .tif name) or a driver that may.
+TEST(LocatordTerrainReloadTest, RastersAndLasFilesReloadUnderThePolicy) {
+  ScratchDir reload, outside;
+  gis::testing::DemFixture dem = gis::testing::HillDem(12, 10, 30);
+  gis::testing::WriteDem(reload.path() + "/dem.tif", dem);
+  gis::testing::WriteDem(outside.path() + "/secret.tif", dem);
+  const std::string vrt =
+      "<VRTDataset rasterXSize=\"12\" rasterYSize=\"10\"><VRTRasterBand "
+      "dataType=\"Float32\" band=\"1\"><SimpleSource><SourceFilename>" +
+      outside.path() +
+      "/secret.tif</SourceFilename><SourceBand>1</SourceBand>"
+      "</SimpleSource></VRTRasterBand></VRTDataset>";
+  gis::testing::WriteFile(reload.path() + "/mosaic.vrt", vrt);
+  gis::testing::WriteFile(reload.path() + "/mosaic.tif", vrt);
+  gis::testing::LasFileOptions las;
+  las.offset = {500000, 5500000, 0};
+  gis::testing::WriteLasFile(reload.path() + "/tile.las", Tile(), las);
+  std::unique_ptr<ServerProcess> server;
+  ASSERT_TRUE(
+      StartLocatord("uniform:300:7", {"--reload-dir", reload.path()}, &server)
+          .ok());
+  auto stub = NewStub(*server);
+
+  v1::ReloadResponse response;
+  grpc::Status status = Reload(*stub, "dem.tif?max_error=0.5", &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  ASSERT_TRUE(response.dataset().has_simplification());
+  EXPECT_LE(response.dataset().simplification().max_error(), 0.5);
+  EXPECT_EQ(response.dataset().simplification().source_samples(), 120u);
+  EXPECT_EQ(response.dataset().crs().epsg_code(), 32633u);
+
+  status = Reload(*stub, "tile.las?classes=2&returns=last", &response);
+  ASSERT_TRUE(status.ok()) << status.error_message();
+  EXPECT_EQ(response.dataset().input_points(), uint64_t{kSide * kSide});
+
+  for (const std::string refused :
+       {"mosaic.vrt", "mosaic.tif", "raster:mosaic.vrt?driver=VRT",
+        "dem.tif?driver=VRT"}) {
+    status = Reload(*stub, refused, &response);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::PERMISSION_DENIED)
+        << refused;
+    EXPECT_THAT(status.error_message(), HasSubstr("a Reload may read"))
+        << refused;
+  }
+  // The LAS ground is still what is served.
+  EXPECT_EQ(GetStats(*stub).dataset().input_points(), uint64_t{kSide * kSide});
+}
+
 TEST(LocatordTerrainStartupTest, CompressedLasAndBadRastersStopTheStart) {
   ScratchDir dir;
   const std::string laz = dir.path() + "/tile.laz";

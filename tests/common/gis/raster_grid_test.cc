@@ -145,7 +145,7 @@ TEST_F(RasterGridTest, ReadsTheBandItIsAskedForAndAssignsACrs) {
   dem.bands = 2;
   const std::string path = Write("two.tif", dem);
   ElevationGrid grid;
-  ASSERT_TRUE(ReadElevationGrid(path + "?band=2&a_srs=EPSG:4326",
+  ASSERT_TRUE(ReadElevationGrid(path + "?band=2&a_srs=EPSG:4326&driver=GTiff",
                                 DatasetLimits(), &grid)
                   .ok());
   EXPECT_EQ(grid.ValueAt(0, 0), 1001);
@@ -187,8 +187,12 @@ TEST_F(RasterGridTest, BadRasterTable) {
   ExpectError(small + "?band=0", Status::Code::kInvalidArgument,
               "option 'band' must be an integer from 1");
   ExpectError(small + "?bands=1", Status::Code::kInvalidArgument,
-              "unknown option 'bands' (known: band, a_srs, max_error, "
+              "unknown option 'bands' (known: band, a_srs, driver, max_error, "
               "max_points)");
+  ExpectError(small + "?driver=AAIGrid", Status::Code::kInvalidArgument,
+              small + ": GDAL cannot open it as a raster with driver AAIGrid");
+  ExpectError(small + "?driver=NoSuch", Status::Code::kInvalidArgument,
+              small + ": no GDAL driver 'NoSuch' (driver=)");
   ExpectError(small + "?a_srs=EPSG:999999", Status::Code::kInvalidArgument,
               small + ": a_srs: unknown CRS 'EPSG:999999'");
 
