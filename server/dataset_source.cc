@@ -13,6 +13,7 @@
 #include "common/gis/ogr_dataset_spec.h"
 #include "common/gis/raster_dataset_spec.h"
 #include "common/gis/raster_grid.h"
+#include "common/input_text.h"
 #include "server/core/terrain/simplify_points.h"
 #include "server/core/terrain/triangulate_grid.h"
 
@@ -227,8 +228,8 @@ Status LoadServedDataset(const std::string& spec,
                          const ServedLoadOptions& options, ServedDataset* out) {
   if (spec.find('?') != std::string::npos && IsRegularFile(spec)) {
     return Status::InvalidArgument(
-        "'" + spec +
-        "' names a file, but a dataset spec's options begin at its first "
+        QuotedInput(spec) +
+        " names a file, but a dataset spec's options begin at its first "
         "'?': link or rename the file to a name without '?'");
   }
   gis::SimplifySpec simplify;

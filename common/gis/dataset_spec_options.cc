@@ -6,6 +6,8 @@
 #include <limits>
 #include <system_error>
 
+#include "common/input_text.h"
+
 namespace locator::gis {
 namespace {
 
@@ -39,15 +41,12 @@ bool PercentDecode(std::string_view in, std::string* out) {
   return true;
 }
 
-Status SpecError(std::string_view spec, std::string_view what) {
-  std::string message = "dataset spec '";
-  message.append(spec);
-  message.append("': ");
-  message.append(what);
-  return Status::InvalidArgument(message);
-}
-
 }  // namespace
+
+Status SpecError(std::string_view spec, std::string_view what) {
+  return Status::InvalidArgument("dataset spec " + QuotedInput(spec) + ": " +
+                                 std::string(what));
+}
 
 SpecParts SplitSpec(std::string_view spec, std::string_view prefix) {
   SpecParts parts;
@@ -93,14 +92,14 @@ Status ParseSpecOptions(std::string_view spec, std::vector<SpecOption>* out) {
     const size_t eq = text.find('=');
     if (eq == std::string_view::npos) {
       return SpecError(spec,
-                       "option '" + std::string(text) + "' has no '=VALUE'");
+                       "option " + QuotedInput(text) + " has no '=VALUE'");
     }
     SpecOption option;
     option.name = std::string(text.substr(0, eq));
     option.text = text;
     if (!PercentDecode(text.substr(eq + 1), &option.value)) {
-      return SpecError(spec,
-                       "option '" + option.name + "' has a malformed %-escape");
+      return SpecError(spec, "option " + QuotedInput(option.name) +
+                                 " has a malformed %-escape");
     }
     out->push_back(std::move(option));
   }
@@ -109,9 +108,9 @@ Status ParseSpecOptions(std::string_view spec, std::vector<SpecOption>* out) {
 
 Status BadSpecOption(std::string_view spec, std::string_view name,
                      std::string_view value, std::string_view expected) {
-  return SpecError(spec, "option '" + std::string(name) + "' must be " +
-                             std::string(expected) + ", got '" +
-                             std::string(value) + "'");
+  return SpecError(spec, "option " + QuotedInput(name) + " must be " +
+                             std::string(expected) + ", got " +
+                             QuotedInput(value));
 }
 
 Status UnknownSpecOption(std::string_view spec, std::string_view name,
@@ -120,7 +119,7 @@ Status UnknownSpecOption(std::string_view spec, std::string_view name,
   if (!list.empty()) list += ", ";
   list += kSimplifyOptionNames;
   return SpecError(
-      spec, "unknown option '" + std::string(name) + "' (known: " + list + ")");
+      spec, "unknown option " + QuotedInput(name) + " (known: " + list + ")");
 }
 
 Status SpecOptionDouble(std::string_view spec, const SpecOption& option,
@@ -175,8 +174,10 @@ Status TakeSimplifyOptions(std::string_view spec, SimplifySpec* simplify,
       kept.append(option.text);
       continue;
     }
-    if (*seen)
-      return SpecError(spec, "option '" + option.name + "' given twice");
+    if (*seen) {
+      return SpecError(spec,
+                       "option " + QuotedInput(option.name) + " given twice");
+    }
     *seen = true;
     const Status status =
         option.name == "max_error"

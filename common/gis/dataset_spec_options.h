@@ -63,6 +63,10 @@ bool SourceHasExtension(std::string_view spec,
 // the spec for an option without '=' or with a malformed %-escape.
 Status ParseSpecOptions(std::string_view spec, std::vector<SpecOption>* out);
 
+// InvalidArgument "dataset spec 'SPEC': WHAT", the spec as QuotedInput()
+// shows it (a request's spec is echoed, not copied).
+Status SpecError(std::string_view spec, std::string_view what);
+
 // The error for option `name` of `spec` with a bad value, saying what
 // `expected` ("a finite number >= 0").
 Status BadSpecOption(std::string_view spec, std::string_view name,

@@ -8,6 +8,8 @@
 
 #include <mutex>
 
+#include "common/gis/proj_objects.h"
+
 namespace locator::gis {
 
 void RegisterGdalDrivers() {
@@ -35,8 +37,8 @@ Status UserCrsToWkt(const std::string& crs, std::string* wkt) {
                                  "ALLOW_FILE_ACCESS=NO", nullptr};
   CPLErrorReset();
   if (srs.SetFromUserInput(crs.c_str(), options) != OGRERR_NONE) {
-    return Status::InvalidArgument("unknown CRS '" + crs +
-                                   "': " + LastGdalError());
+    return Status::InvalidArgument("unknown CRS " + QuotedCrs(crs) + ": " +
+                                   LastGdalError());
   }
   *wkt = SpatialRefToWkt(srs);
   return Status::OK();

@@ -58,7 +58,8 @@ std::string SpatialRefToWkt(const OGRSpatialReference& srs);
 
 // The CRS `crs` names (EPSG:NNNN, WKT or a PROJ string, as gdal_translate
 // -a_srs takes it) as WKT2, read without file or network access.
-// InvalidArgument "unknown CRS '...'" with GDAL's message otherwise.
+// InvalidArgument "unknown CRS '...'" (QuotedCrs) with GDAL's message
+// otherwise.
 Status UserCrsToWkt(const std::string& crs, std::string* wkt);
 
 // The files `dataset` reads (GDALDataset::GetFileList: the main file and

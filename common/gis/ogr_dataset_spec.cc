@@ -3,6 +3,8 @@
 #include <array>
 #include <utility>
 
+#include "common/input_text.h"
+
 namespace locator::gis {
 namespace {
 
@@ -24,9 +26,8 @@ SpecParts SplitOgrDatasetSpec(std::string_view spec) {
 
 Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
   *out = OgrDatasetSpec();
-  const auto error = [spec](std::string_view what) {
-    return Status::InvalidArgument("dataset spec '" + std::string(spec) +
-                                   "': " + std::string(what));
+  const auto error = [spec](const std::string& what) {
+    return SpecError(spec, what);
   };
   const SpecParts parts = SplitOgrDatasetSpec(spec);
   out->source = std::string(parts.source);
@@ -42,7 +43,8 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
     std::string& value = option.value;
     if (name == "oo") {
       if (value.find('=') == std::string::npos) {
-        return error("open option '" + value + "' is not NAME=VALUE");
+        return error("open option " + QuotedInput(value) +
+                     " is not NAME=VALUE");
       }
       out->open_options.push_back(std::move(value));
       continue;
@@ -59,8 +61,11 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
       return UnknownSpecOption(
           spec, name, "layer, z, where, breaklines, domain, a_srs, oo, driver");
     }
-    if (!field->empty()) return error("option '" + name + "' given twice");
-    if (value.empty()) return error("option '" + name + "' is empty");
+    if (!field->empty()) {
+      return error("option " + QuotedInput(name) + " given twice");
+    }
+    if (value.empty())
+      return error("option " + QuotedInput(name) + " is empty");
     *field = std::move(value);
   }
   return Status::OK();

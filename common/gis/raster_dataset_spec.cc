@@ -13,11 +13,6 @@ constexpr std::array<std::string_view, 10> kRasterExtensions = {
     ".tif", ".tiff", ".vrt", ".asc", ".img",
     ".dem", ".hgt",  ".bil", ".flt", ".grd"};
 
-Status SpecError(std::string_view spec, const std::string& what) {
-  return Status::InvalidArgument("dataset spec '" + std::string(spec) +
-                                 "': " + what);
-}
-
 }  // namespace
 
 bool IsRasterDatasetSpec(std::string_view spec) {

@@ -8,11 +8,11 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <utility>
 
 #include "common/gis/gdal_support.h"
+#include "common/input_text.h"
 
 namespace locator::gis {
 namespace {
@@ -21,12 +21,6 @@ namespace {
 constexpr size_t kStripBytes = 16 << 20;
 // Extensions whose files are often x,y,z text rather than rasters.
 constexpr std::array<std::string_view, 1> kAmbiguousExtensions = {".asc"};
-
-std::string Num(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.10g", value);
-  return text;
-}
 
 struct GdalCloser {
   void operator()(GDALDataset* dataset) const { GDALClose(dataset); }
@@ -121,12 +115,12 @@ class BandReader {
                               std::to_string(row) + ")";
     if (std::isinf(raw)) {
       return Status::InvalidArgument(
-          where + " is " + Num(raw) +
+          where + " is " + NumberText(raw) +
           ", which is no elevation; if it marks nodata, declare it: "
           "gdal_edit.py -a_nodata " +
-          Num(raw) + " FILE");
+          NumberText(raw) + " FILE");
     }
-    return Status::InvalidArgument(where + " is " + Num(value) +
+    return Status::InvalidArgument(where + " is " + NumberText(value) +
                                    " after scale and offset, beyond a "
                                    "float's range");
   }
@@ -139,8 +133,8 @@ class BandReader {
 Status CheckGeoTransform(const std::string& source, const double gt[6]) {
   if (gt[2] != 0 || gt[4] != 0) {
     return Status::InvalidArgument(
-        source + " has a rotated geotransform (row rotation " + Num(gt[2]) +
-        ", column rotation " + Num(gt[4]) +
+        source + " has a rotated geotransform (row rotation " +
+        NumberText(gt[2]) + ", column rotation " + NumberText(gt[4]) +
         "); locator serves north-up grids: warp it first, e.g. "
         "gdalwarp " +
         source + " north_up.tif");
@@ -148,9 +142,10 @@ Status CheckGeoTransform(const std::string& source, const double gt[6]) {
   for (const int i : {0, 1, 3, 5}) {
     if (!std::isfinite(gt[i]) || ((i == 1 || i == 5) && gt[i] == 0)) {
       return Status::InvalidArgument(
-          source + " has a degenerate geotransform (" + Num(gt[0]) + ", " +
-          Num(gt[1]) + ", " + Num(gt[2]) + ", " + Num(gt[3]) + ", " +
-          Num(gt[4]) + ", " + Num(gt[5]) +
+          source + " has a degenerate geotransform (" + NumberText(gt[0]) +
+          ", " + NumberText(gt[1]) + ", " + NumberText(gt[2]) + ", " +
+          NumberText(gt[3]) + ", " + NumberText(gt[4]) + ", " +
+          NumberText(gt[5]) +
           "): the origin must be finite and the pixel size finite and "
           "not zero");
     }
@@ -167,8 +162,8 @@ Status OpenRaster(const RasterDatasetSpec& spec,
   }
   if (!spec.driver.empty() &&
       GDALGetDriverByName(spec.driver.c_str()) == nullptr) {
-    return Status::InvalidArgument(spec.source + ": no GDAL driver '" +
-                                   spec.driver + "' (driver=)");
+    return Status::InvalidArgument(spec.source + ": no GDAL driver " +
+                                   QuotedInput(spec.driver) + " (driver=)");
   }
   const char* const only_driver[] = {spec.driver.c_str(), nullptr};
   CPLErrorReset();

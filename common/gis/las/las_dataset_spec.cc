@@ -63,8 +63,7 @@ Status ParseLasDatasetSpec(std::string_view spec, LasDatasetSpec* out) {
   LasDatasetSpec parsed;
   parsed.path = std::string(SplitSpec(spec, kLasPrefix).source);
   if (parsed.path.empty()) {
-    return Status::InvalidArgument("dataset spec '" + std::string(spec) +
-                                   "': no path before the options");
+    return SpecError(spec, "no path before the options");
   }
   std::vector<SpecOption> options;
   if (Status s = ParseSpecOptions(spec, &options); !s.ok()) return s;
@@ -78,9 +77,7 @@ Status ParseLasDatasetSpec(std::string_view spec, LasDatasetSpec* out) {
       return UnknownSpecOption(spec, option.name, "classes, returns");
     }
     if (*seen) {
-      return Status::InvalidArgument("dataset spec '" + std::string(spec) +
-                                     "': option '" + option.name +
-                                     "' given twice");
+      return SpecError(spec, "option '" + option.name + "' given twice");
     }
     *seen = true;
     const Status status = option.name == "classes"

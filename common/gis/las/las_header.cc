@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "common/input_text.h"
+
 namespace locator::gis::las {
 namespace {
 
@@ -127,11 +129,11 @@ Status ReadVlrs(LasInput& input, const Checker& check, uint32_t count,
     vlr.payload_offset = at + kVlrHeaderSize;
     vlr.payload_length = Get<uint16_t>(bytes, kVlrLengthAt);
     if (vlr.payload_offset + vlr.payload_length > h->point_data_offset) {
-      return check.Bad("VLR " + Num(i) + " ('" + vlr.user_id + "', record " +
-                       Num(vlr.record_id) + ") of " + Num(vlr.payload_length) +
-                       " bytes at offset " + Num(vlr.payload_offset) +
-                       " runs past the point data offset " +
-                       Num(h->point_data_offset));
+      return check.Bad(
+          "VLR " + Num(i) + " (" + QuotedInput(vlr.user_id) + ", record " +
+          Num(vlr.record_id) + ") of " + Num(vlr.payload_length) +
+          " bytes at offset " + Num(vlr.payload_offset) +
+          " runs past the point data offset " + Num(h->point_data_offset));
     }
     at = vlr.payload_offset + vlr.payload_length;
     h->vlrs.push_back(std::move(vlr));
@@ -167,11 +169,11 @@ Status ReadEvlrs(LasInput& input, const Checker& check, uint64_t start,
     vlr.payload_offset = at + kEvlrHeaderSize;
     vlr.payload_length = Get<uint64_t>(bytes, kVlrLengthAt);
     if (vlr.payload_length > size - vlr.payload_offset) {
-      return check.Bad("EVLR " + Num(i) + " ('" + vlr.user_id + "', record " +
-                       Num(vlr.record_id) + ") of " + Num(vlr.payload_length) +
-                       " bytes at offset " + Num(vlr.payload_offset) +
-                       " runs past the end of the file (" + Num(size) +
-                       " bytes)");
+      return check.Bad(
+          "EVLR " + Num(i) + " (" + QuotedInput(vlr.user_id) + ", record " +
+          Num(vlr.record_id) + ") of " + Num(vlr.payload_length) +
+          " bytes at offset " + Num(vlr.payload_offset) +
+          " runs past the end of the file (" + Num(size) + " bytes)");
     }
     at = vlr.payload_offset + vlr.payload_length;
     h->vlrs.push_back(std::move(vlr));

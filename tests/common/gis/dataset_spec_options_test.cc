@@ -101,5 +101,23 @@ TEST(DatasetSpecOptionsTest, RejectsBadSimplifyOptionsNamingThem) {
   }
 }
 
+// A spec's errors echo what the request wrote, cut short: the spec, the
+// option's name and its value each as QuotedInput shows them.
+TEST(DatasetSpecOptionsTest, ErrorsQuoteTheSpecAndItsValuesShort) {
+  const std::string value(100000, '9');
+  const std::string spec = "a.tif?max_points=" + value;
+  SimplifySpec simplify;
+  std::string rest;
+  const Status status = TakeSimplifyOptions(spec, &simplify, &rest);
+  EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
+  EXPECT_LT(status.message().size(), 400u) << status.message();
+  EXPECT_THAT(status.message(), HasSubstr("(100017 bytes)"));
+  EXPECT_THAT(status.message(), HasSubstr("(100000 bytes)"));
+  const Status unknown = UnknownSpecOption("a.tif", "\x01\nname", "band");
+  EXPECT_THAT(unknown.message(),
+              HasSubstr("unknown option '\\x01\\x0aname' (known: band, "
+                        "max_error, max_points)"));
+}
+
 }  // namespace
 }  // namespace locator::gis
