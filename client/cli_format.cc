@@ -49,6 +49,25 @@ std::string Join(const Values& values, Format format) {
   return joined;
 }
 
+// One line of a simplification's certificate.
+std::string FormatSimplification(const v1::SimplificationStats& s) {
+  std::string line = StrCat({std::to_string(s.source_samples()), " samples to ",
+                             std::to_string(s.vertices()), " vertices, ",
+                             std::to_string(s.triangles()), " triangles in ",
+                             FormatDouble(s.build_seconds()), " s; max error ",
+                             FormatDouble(s.max_error()), " (target ",
+                             FormatDouble(s.target_error())});
+  if (s.max_points() != 0) {
+    line += StrCat({", max_points ", std::to_string(s.max_points())});
+  }
+  line += ")";
+  if (s.unserved_samples() != 0) {
+    line += StrCat({"; ", std::to_string(s.unserved_samples()),
+                    " samples outside the domain"});
+  }
+  return line;
+}
+
 // The lines describing a served dataset.
 std::string FormatDataset(const v1::DatasetStats& dataset) {
   std::string out;
@@ -66,6 +85,10 @@ std::string FormatDataset(const v1::DatasetStats& dataset) {
   AppendLine("values", dataset.has_values() ? "yes" : "no", &out);
   AppendLine("build", StrCat({FormatDouble(dataset.build_seconds()), " s"}),
              &out);
+  if (dataset.has_simplification()) {
+    AppendLine("simplified", FormatSimplification(dataset.simplification()),
+               &out);
+  }
   return out;
 }
 

@@ -19,6 +19,7 @@
 #ifndef LOCATOR_COMMON_MUTEX_H_
 #define LOCATOR_COMMON_MUTEX_H_
 
+#include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <shared_mutex>
@@ -73,6 +74,16 @@ class CondVar {
     std::unique_lock<std::mutex> lock(mu->mu_, std::adopt_lock);
     cv_.wait(lock);
     lock.release();  // the caller still holds mu
+  }
+  // As Wait(), but returns false once `deadline` has passed without a
+  // signal (true otherwise, spurious wake-ups included).
+  bool WaitUntil(Mutex* mu, std::chrono::steady_clock::time_point deadline)
+      REQUIRES(mu) {
+    std::unique_lock<std::mutex> lock(mu->mu_, std::adopt_lock);
+    const bool signalled =
+        cv_.wait_until(lock, deadline) == std::cv_status::no_timeout;
+    lock.release();  // the caller still holds mu
+    return signalled;
   }
   // Wakes one waiter, if any.
   void Signal() { cv_.notify_one(); }

@@ -6,7 +6,13 @@
 #      The server's mean cost (faces visited + start comparisons) per 2000
 #      queries shows the paper's method adapt once it has seen ~2000 queries
 #      (its Section IV), and self-tuning answer in a few faces throughout;
-#   2. a summary, and the status page of the self-tuning server to open.
+#   2. a summary, and the status page of the self-tuning server to open;
+#   3. terrain as it comes: a DEM made here (a GeoTIFF of 800 x 600 pixels
+#      of 30 m in UTM zone 33N, a hill with a lake of nodata, written as an
+#      ASCII grid and converted by gdal_translate) served as dem.tif?
+#      max_error=0.5: its certificate, a query in lon/lat, and the TIN
+#      rendered back with `locator grid` at the DEM's pixel centres and
+#      compared with the DEM pixel by pixel.
 # Knobs: DATASET (default uniform:1000000:1), QUERIES (per strategy, 20000),
 # BUILD_DIR (build). With a terminal on stdin the self-tuning server keeps
 # running after the summary until Ctrl-C, for the status page.
@@ -61,6 +67,33 @@ for s in "${strategies[@]}"; do
   [ "$s" = self-tuning ] && extra=(--http-listen 127.0.0.1:0)
   serve "$s" --strategy "$s" "${extra[@]}"
 done
+
+# The DEM: an ASCII grid written here, made a GeoTIFF by gdal_translate.
+python3 - "$tmp/dem.asc" <<'PY'
+import math, sys
+width, height, cell = 800, 600, 30.0
+x0, y0 = 500000 - width * cell / 2, 5500000 - height * cell / 2
+with open(sys.argv[1], "w") as out:
+    out.write(f"ncols {width}\nnrows {height}\nxllcorner {x0}\n"
+              f"yllcorner {y0}\ncellsize {cell}\nNODATA_value -9999\n")
+    for row in range(height):
+        y = y0 + (height - row - 0.5) * cell - 5500000
+        values = []
+        for col in range(width):
+            x = x0 + (col + 0.5) * cell - 500000
+            if (x - 3000) ** 2 + (y + 2000) ** 2 < 1200 ** 2:
+                values.append("-9999")  # the lake
+                continue
+            z = (400 + 600 * math.exp(-(x * x + y * y) / (2 * 4000 ** 2))
+                 + 40 * math.sin(x / 900) * math.cos(y / 700)
+                 + 8 * math.sin((x + 2 * y) / 250))
+            values.append(f"{z:.2f}")
+        out.write(" ".join(values) + "\n")
+PY
+gdal_translate -q -of GTiff -a_srs EPSG:32633 "$tmp/dem.asc" "$tmp/dem.tif"
+"$BUILD_DIR"/server/locatord --dataset "$tmp/dem.tif?max_error=0.5" \
+  --listen 127.0.0.1:0 > "$tmp/dem.log" 2>&1 &
+pids+=($!)
 for s in "${strategies[@]}"; do
   target="127.0.0.1:$(port_of "$s")"
   echo "$target" > "$tmp/$s.target"
@@ -93,6 +126,35 @@ print(f"\n== summary: Jump&Walk pays {jw:.1f} per query on this load. The"
       f" re-tunes from a decayed histogram as traffic moves, pays {st:.1f}:"
       f" {jw / st:.0f}x less than Jump&Walk.")
 PY
+dem="$BUILD_DIR/client/locator --target 127.0.0.1:$(port_of dem)"
+until $dem health > /dev/null 2>&1; do sleep 0.2; done
+echo
+echo "== a DEM served within max_error 0.5 m: $tmp/dem.tif (800 x 600" \
+  "pixels), locatord --dataset 'dem.tif?max_error=0.5'"
+$dem stats | grep -E '^(points|crs|simplified) '
+echo "-- the summit, asked in lon/lat:" \
+  "locator --crs EPSG:4326 locate 15.0 49.6525"
+$dem --crs EPSG:4326 locate 15.0 49.6525 | grep -E '^(type|value) '
+echo "-- rendered back: locator grid --te 488000 5491000 512000 5509000" \
+  "--outsize 800 600 (the DEM's own pixel centres)"
+$dem grid --te 488000 5491000 512000 5509000 --outsize 800 600 \
+  --a_nodata -9999 --of GTiff --out "$tmp/rendered.tif" > /dev/null
+gdal_translate -q -of AAIGrid "$tmp/rendered.tif" "$tmp/rendered.asc"
+python3 - "$tmp/dem.asc" "$tmp/rendered.asc" <<'PY'
+import sys
+def cells(path):
+    with open(path) as f:
+        rows = [line.split() for line in f]
+    return [float(v) for row in rows if not row[0][0].isalpha() for v in row]
+dem, tin = cells(sys.argv[1]), cells(sys.argv[2])
+valid = [(d, t) for d, t in zip(dem, tin) if d != -9999]
+worst = max(abs(d - t) for d, t in valid if t != -9999)
+holes = all((t == -9999) == (d == -9999) for d, t in zip(dem, tin))
+print(f"   max |TIN - DEM| over the {len(valid)} pixels with a value:"
+      f" {worst:.3f} m; nodata exactly where the DEM has none:"
+      f" {'yes' if holes else 'NO'}")
+PY
+echo
 echo "== status page of the self-tuning server: http://127.0.0.1:$http_port/"
 if [ -t 0 ]; then
   echo "   (serving until Ctrl-C)"

@@ -14,7 +14,7 @@ PACKAGES=(
   libgrpc++-dev libgrpc-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev
   prometheus-cpp-dev
-  libgdal-dev gdal-bin libproj-dev proj-bin
+  libgdal-dev gdal-bin libproj-dev proj-bin libgeotiff-dev
   python3 python3-grpcio python3-protobuf python3-numpy
   libssl-dev
   chromium nginx openssl curl

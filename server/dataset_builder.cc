@@ -1,13 +1,17 @@
 #include "server/dataset_builder.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <system_error>
+#include <thread>
 #include <utility>
 
+#include "server/build_heartbeat.h"
 #include "server/core/dataset.h"
 #include "server/dataset_source.h"
 #include "server/server_log.h"
+#include "server/source_key.h"
 
 namespace locator {
 namespace {
@@ -63,6 +67,19 @@ void LogBuilt(const Engine& engine, std::string_view tag) {
   LogTuningState(engine, tag);
 }
 
+// How often a build says what it is doing (at least every 5 s).
+constexpr std::chrono::seconds kProgressInterval{4};
+
+// Says what a simplification made of its source (the certificate).
+void LogSimplified(const SimplificationStats& s, std::string_view tag) {
+  LogLine(tag) << "simplified " << s.source_samples << " source samples to "
+               << s.vertices << " vertices and " << s.triangles
+               << " triangles in " << s.build_seconds << " s: max error "
+               << s.max_error << " (target " << s.target_error
+               << ", max_points " << s.max_points << ", " << s.unserved_samples
+               << " samples outside the domain)";
+}
+
 }  // namespace
 
 DatasetBuilder::DatasetBuilder(const ServerConfig& config)
@@ -106,14 +123,27 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   if (Status status = EngineOptionsFor(slot, &options); !status.ok()) {
     return status;
   }
-  if (MapGenerated(slot, spec, options, built)) return Status::OK();
+  if (MapGenerated(slot, spec, options, built) ||
+      MapBySourceKey(slot, spec, options, built)) {
+    return Status::OK();
+  }
   LogLine(tag) << "loading dataset " << spec;
   const auto load_start = std::chrono::steady_clock::now();
-  Dataset dataset;
-  DatasetLimits limits = config_.dataset_limits;
-  limits.max_points = budget_.Available(slot.index());
-  Status status = LoadServedDataset(spec, limits, &dataset);
-  if (status.ok()) status = budget_.Claim(slot.index(), dataset.points.size());
+  BuildHeartbeat heartbeat(
+      [tag](const std::string& line) { LogLine(tag) << line; },
+      kProgressInterval);
+  ServedLoadOptions load;
+  load.limits = config_.dataset_limits;
+  load.limits.max_points = budget_.Available(slot.index());
+  load.threads = std::max(1u, std::thread::hardware_concurrency());
+  load.progress = [&heartbeat](const TinProgress& p) { heartbeat.Report(p); };
+  load.progress_interval_s =
+      std::chrono::duration<double>(kProgressInterval).count();
+  ServedDataset served;
+  Status status = LoadServedDataset(spec, load, &served);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), served.dataset.points.size());
+  }
   if (status.code() == Status::Code::kResourceExhausted) {
     const std::string see =
         config_.datasets.size() == 1
@@ -125,20 +155,54 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
     return Status::ResourceExhausted(status.message() + see);
   }
   if (!status.ok()) return status;
-  LogLine(tag) << "loaded " << dataset.points.size() << " points in "
+  LogLine(tag) << "loaded " << served.dataset.points.size() << " points in "
                << SecondsSince(load_start) << " s; building the serving mesh";
+  if (served.simplification) LogSimplified(*served.simplification, tag);
+  heartbeat.SetPhase("building the serving mesh");
   std::unique_ptr<Engine> created;
-  status = Engine::Create(std::move(dataset), options, &created);
+  status =
+      served.simplification
+          ? Engine::CreateSimplified(std::move(served.dataset),
+                                     *served.simplification, options, &created)
+          : Engine::Create(std::move(served.dataset), options, &created);
   if (!status.ok()) {
     budget_.Cancel(slot.index());
     return status;
   }
   // Published by the caller right after this returns.
   budget_.Commit(slot.index());
-  RecordGenerated(spec, options, created->dataset_info().mesh_cache, tag);
+  const DatasetInfo& info = created->dataset_info();
+  RecordGenerated(spec, options, info.mesh_cache, tag);
+  RecordSourceKey(spec, options, served, info, tag);
   LogBuilt(*created, tag);
   *built = std::move(created);
   return Status::OK();
+}
+
+bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
+                             uint64_t fingerprint, DatasetOrigin origin,
+                             const EngineOptions& options, std::string_view how,
+                             std::shared_ptr<Engine>* built) {
+  const std::string_view tag = Tag(slot);
+  std::unique_ptr<Engine> created;
+  Status status = Engine::CreateFromMeshFile(fingerprint, std::move(origin),
+                                             options, &created);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
+  }
+  if (!status.ok()) {
+    // The slow path loads the spec and says what is wrong, if anything.
+    if (status.code() != Status::Code::kResourceExhausted) {
+      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
+                   << status.ToString() << "; loading it instead";
+    }
+    return false;
+  }
+  budget_.Commit(slot.index());
+  LogLine(tag) << "found the mesh of " << spec << " " << how;
+  LogBuilt(*created, tag);
+  *built = std::move(created);
+  return true;
 }
 
 bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
@@ -153,26 +217,32 @@ bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
            .ok()) {
     return false;
   }
-  const std::string_view tag = Tag(slot);
-  std::unique_ptr<Engine> created;
-  Status status =
-      Engine::CreateFromMeshFile(fingerprint, spec, options, &created);
-  if (status.ok()) {
-    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
-  }
+  DatasetOrigin origin;
+  origin.source = spec;
+  return MapMesh(slot, spec, fingerprint, std::move(origin), options,
+                 "without generating it", built);
+}
+
+bool DatasetBuilder::MapBySourceKey(const DatasetSlot& slot,
+                                    const std::string& spec,
+                                    const EngineOptions& options,
+                                    std::shared_ptr<Engine>* built) {
+  if (options.mesh_cache_dir.empty()) return false;
+  SourceKey key;
+  Status status = ReadSourceKey(options.mesh_cache_dir, spec, &key);
+  if (status.code() == Status::Code::kNotFound) return false;
+  if (status.ok()) status = CheckSourceFiles(key);
   if (!status.ok()) {
-    // The slow path loads the spec and says what is wrong, if anything.
-    if (status.code() != Status::Code::kResourceExhausted) {
-      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
-                   << status.ToString() << "; generating it instead";
-    }
+    LogLine(Tag(slot)) << "not mapping the cached mesh of " << spec << ": "
+                       << status.message();
     return false;
   }
-  budget_.Commit(slot.index());
-  LogLine(tag) << "found the mesh of " << spec << " without generating it";
-  LogBuilt(*created, tag);
-  *built = std::move(created);
-  return true;
+  DatasetOrigin origin;
+  origin.source = spec;
+  origin.crs = std::move(key.crs);
+  origin.simplification = key.simplification;
+  return MapMesh(slot, spec, key.fingerprint, std::move(origin), options,
+                 "by the identity of its files, without reading them", built);
 }
 
 void DatasetBuilder::RecordGenerated(const std::string& spec,
@@ -187,6 +257,32 @@ void DatasetBuilder::RecordGenerated(const std::string& spec,
   const Status status = RecordGeneratedFingerprint(
       options.mesh_cache_dir, generator, cache.fingerprint);
   if (!status.ok()) {
+    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
+                 << status.ToString();
+  }
+}
+
+void DatasetBuilder::RecordSourceKey(const std::string& spec,
+                                     const EngineOptions& options,
+                                     const ServedDataset& served,
+                                     const DatasetInfo& info,
+                                     std::string_view tag) {
+  const MeshCacheOutcome& cache = info.mesh_cache;
+  if (cache.path.empty() || !cache.save_error.empty() || served.files.empty()) {
+    return;
+  }
+  SourceKey key;
+  for (const std::string& file : served.files) {
+    key.files.push_back(IdentifyFile(file));
+  }
+  for (const std::string& file : served.absent_files) {
+    key.files.push_back(IdentifyFile(file));
+  }
+  key.fingerprint = cache.fingerprint;
+  key.crs = info.crs;
+  key.simplification = info.simplification;
+  if (const Status status = WriteSourceKey(options.mesh_cache_dir, spec, key);
+      !status.ok()) {
     LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
                  << status.ToString();
   }

@@ -1,10 +1,18 @@
 // DatasetBuilder: how locatord builds the engine of one of its datasets, at
-// startup and on every reload: it loads the spec (LoadServedDataset),
-// bounded by the datasets' shared point budget (--max-dataset-points is a
-// total over all of them, see PointBudget; a successful build is published
-// right after Build() returns, so it commits its points then), and
-// triangulates it with the engine options, logging each step with the
-// dataset's tag.
+// startup and on every reload: it loads the spec (LoadServedDataset; a
+// raster or a dataset given max_error is simplified then; a BuildHeartbeat
+// logs what the build is doing every 4 s), bounded by the datasets' shared
+// point budget
+// (--max-dataset-points is a total over all of them, see PointBudget; a
+// successful build is published right after Build() returns, so it commits
+// its points then), and triangulates it with the engine options, logging
+// each step with the dataset's tag.
+//
+// With --mesh-cache DIR, a start or reload first looks for the dataset's
+// mesh without reading the dataset: a plain generator spec's through its
+// generated key (mesh_cache.h), any other spec's through its source key
+// when its files have not changed since (source_key.h). Either is recorded
+// after a build whose mesh file was written or mapped.
 //
 // With --state-dir DIR, the tuning of the dataset a bare --dataset gives
 // persists in DIR, and that of a dataset named by NAME=SPEC in DIR/NAME
@@ -17,6 +25,7 @@
 #ifndef LOCATOR_SERVER_DATASET_BUILDER_H_
 #define LOCATOR_SERVER_DATASET_BUILDER_H_
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -24,6 +33,7 @@
 #include "common/status.h"
 #include "server/core/engine.h"
 #include "server/dataset_registry.h"
+#include "server/dataset_source.h"
 #include "server/point_budget.h"
 #include "server/server_config.h"
 
@@ -52,13 +62,25 @@ class DatasetBuilder {
                                     std::string_view when);
 
  private:
+  // Maps the mesh with `fingerprint` from the mesh cache as the engine of
+  // `spec` (within the budget; stats report `origin`), logging that it was
+  // found `how`, and returns true. False if that fails (logged unless it is
+  // the budget): the caller loads the spec as usual.
+  bool MapMesh(const DatasetSlot& slot, const std::string& spec,
+               uint64_t fingerprint, DatasetOrigin origin,
+               const EngineOptions& options, std::string_view how,
+               std::shared_ptr<Engine>* built);
   // With --mesh-cache and a generator spec whose mesh was recorded there:
-  // maps it without generating the points (within the budget) and returns
-  // true. False if any of that does not hold or fails (a failure but the
-  // budget is logged): the caller loads the spec as usual.
+  // MapMesh without generating the points. False otherwise.
   bool MapGenerated(const DatasetSlot& slot, const std::string& spec,
                     const EngineOptions& options,
                     std::shared_ptr<Engine>* built);
+  // With --mesh-cache and a source key of `spec` whose files are unchanged:
+  // MapMesh without reading them. False otherwise (a key that does not
+  // apply is logged, saying why).
+  bool MapBySourceKey(const DatasetSlot& slot, const std::string& spec,
+                      const EngineOptions& options,
+                      std::shared_ptr<Engine>* built);
   // After a build from the generator spec `spec` whose mesh file was
   // written or mapped, records which mesh it generates (see
   // RecordGeneratedFingerprint); a failure is logged with `tag`.
@@ -66,6 +88,13 @@ class DatasetBuilder {
                               const EngineOptions& options,
                               const MeshCacheOutcome& cache,
                               std::string_view tag);
+  // After a build of `served` from `spec` whose mesh file was written or
+  // mapped, records its source key when its files are known; a failure is
+  // logged with `tag`.
+  static void RecordSourceKey(const std::string& spec,
+                              const EngineOptions& options,
+                              const ServedDataset& served,
+                              const DatasetInfo& info, std::string_view tag);
   // Loads `spec` within the budget and triangulates it.
   Status LoadAndTriangulate(const DatasetSlot& slot, const std::string& spec,
                             std::shared_ptr<Engine>* built);

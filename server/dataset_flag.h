@@ -4,9 +4,10 @@
 // named "default". The flag is NAME=SPEC exactly when the text before its
 // first '=' is a valid dataset name: [A-Za-z0-9_][A-Za-z0-9_.-]* (at most
 // kMaxNameLength characters). No spec locatord reads starts that way by
-// accident: generators have ':' before any '=' (uniform:N), and OGR options
-// come after '?' (x.gpkg?layer=a). A file whose path does start with such a
-// text ("a=b.csv") is given as "./a=b.csv" or "default=a=b.csv".
+// accident: generators have ':' before any '=' (uniform:N), and options
+// come after '?' (x.gpkg?layer=a, dem.tif?max_error=0.5). A file whose path
+// does start with such a text ("a=b.csv") is given as "./a=b.csv" or
+// "default=a=b.csv".
 //
 // Thread-safety: plain values and free functions.
 
@@ -27,7 +28,8 @@ inline constexpr std::string_view kDefaultDatasetName = "default";
 
 struct DatasetConfig {
   std::string name = std::string(kDefaultDatasetName);
-  // A file path, generator spec or OGR source (see LoadServedDataset).
+  // A file path, generator spec, OGR source, raster or LAS file, with
+  // options (see LoadServedDataset).
   std::string spec;
   // Whether the flag named it (NAME=SPEC) rather than being a bare SPEC.
   bool named = false;

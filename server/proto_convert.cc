@@ -81,6 +81,17 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
   cache->set_mapped(info.mesh_cache.mapped);
   cache->set_load_error(info.mesh_cache.load_error);
   cache->set_save_error(info.mesh_cache.save_error);
+  if (const auto& s = info.simplification) {
+    v1::SimplificationStats* out = dataset->mutable_simplification();
+    out->set_source_samples(s->source_samples);
+    out->set_unserved_samples(s->unserved_samples);
+    out->set_vertices(s->vertices);
+    out->set_triangles(s->triangles);
+    out->set_max_error(s->max_error);
+    out->set_target_error(s->target_error);
+    out->set_max_points(s->max_points);
+    out->set_build_seconds(s->build_seconds);
+  }
 }
 
 }  // namespace

@@ -5,11 +5,17 @@
 #include <string_view>
 #include <system_error>
 #include <utility>
+#include <vector>
 
+#include "common/gis/dataset_spec_options.h"
+#include "common/gis/las/las_dataset_spec.h"
 #include "common/gis/ogr_dataset_spec.h"
+#include "common/gis/raster_dataset_spec.h"
 #include "common/gis/untrusted_ogr_spec.h"
+#include "common/gis/untrusted_raster_spec.h"
 #include "common/input_text.h"
 #include "server/core/dataset.h"
+#include "server/dataset_source.h"
 #include "server/status_mapping.h"
 
 namespace locator {
@@ -40,6 +46,42 @@ grpc::Status NotInReloadDir(const std::string& requested) {
   return ToGrpcStatus(
       Refusal::kPermissionDenied,
       DatasetQuoted(requested) + " is not a file in this server's reload dir");
+}
+
+// PERMISSION_DENIED for a spec that asks what a request may not ask.
+grpc::Status Refused(std::string_view requested, const Status& why) {
+  return ToGrpcStatus(Refusal::kPermissionDenied,
+                      DatasetQuoted(requested) + ": " + why.message());
+}
+
+// Parses `kind_spec` (`requested` without max_error and max_points) as its
+// kind's spec: *ogr or *raster for those kinds. InvalidArgument naming the
+// spec when it does not parse, or when a text file's spec has options.
+Status ParseKindSpec(const std::string& requested, const std::string& kind_spec,
+                     DatasetKind kind, gis::OgrDatasetSpec* ogr,
+                     gis::RasterDatasetSpec* raster) {
+  switch (kind) {
+    case DatasetKind::kOgr:
+      return gis::ParseOgrDatasetSpec(kind_spec, ogr);
+    case DatasetKind::kRaster:
+      return gis::ParseRasterDatasetSpec(kind_spec, raster);
+    case DatasetKind::kLas: {
+      // classes= and returns= only filter the file's points; the LAS
+      // reader opens nothing else.
+      gis::las::LasDatasetSpec las;
+      return gis::las::ParseLasDatasetSpec(kind_spec, &las);
+    }
+    default: {
+      std::vector<gis::SpecOption> options;
+      if (Status status = gis::ParseSpecOptions(kind_spec, &options);
+          !status.ok()) {
+        return status;
+      }
+      return options.empty()
+                 ? Status::OK()
+                 : gis::UnknownSpecOption(requested, options[0].name, "");
+    }
+  }
 }
 
 // `driver` as a spec option value (%-encoded: "ESRI Shapefile").
@@ -90,41 +132,54 @@ grpc::Status ReloadPolicy::ResolveInReloadDir(const std::string& requested,
     *spec = requested;
     return grpc::Status::OK;
   }
-  if (gis::IsOgrDatasetSpec(requested)) return ResolveOgrSpec(requested, spec);
-  *spec = FileInReloadDir(requested);
-  // A file that reads others (mesh.ele reads mesh.node) is allowed only when
-  // they are inside the dir too.
-  for (const std::string& companion : DatasetCompanionFiles(*spec)) {
-    if (FileInReloadDir(companion).empty()) spec->clear();
-  }
-  return spec->empty() ? NotInReloadDir(requested) : grpc::Status::OK;
+  return ResolveFileSpec(requested, spec);
 }
 
-grpc::Status ReloadPolicy::ResolveOgrSpec(const std::string& requested,
-                                          std::string* spec) const {
-  // The options are checked before the file, so that a refusal says
-  // nothing about which files exist.
-  gis::OgrDatasetSpec parsed;
-  if (Status status = gis::ParseOgrDatasetSpec(requested, &parsed);
+grpc::Status ReloadPolicy::ResolveFileSpec(const std::string& requested,
+                                           std::string* spec) const {
+  // The options every kind takes (max_error, max_points) only bound what is
+  // built; the rest are the kind's own, checked before the file is looked
+  // at, so that a refusal says nothing about which files exist.
+  gis::SimplifySpec simplify;
+  std::string kind_spec;
+  if (Status status =
+          gis::TakeSimplifyOptions(requested, &simplify, &kind_spec);
       !status.ok()) {
     return ToGrpcStatus(status);
   }
-  if (Status status = gis::CheckUntrustedOgrOptions(parsed); !status.ok()) {
-    return ToGrpcStatus(Refusal::kPermissionDenied,
-                        DatasetQuoted(requested) + ": " + status.message());
+  const DatasetKind kind = DatasetKindOf(kind_spec);
+  gis::OgrDatasetSpec ogr;
+  gis::RasterDatasetSpec raster;
+  if (Status status = ParseKindSpec(requested, kind_spec, kind, &ogr, &raster);
+      !status.ok()) {
+    return ToGrpcStatus(status);
   }
-  const gis::OgrSpecParts parts = gis::SplitOgrDatasetSpec(requested);
+  const Status refusal =
+      kind == DatasetKind::kOgr      ? gis::CheckUntrustedOgrOptions(ogr)
+      : kind == DatasetKind::kRaster ? gis::CheckUntrustedRasterOptions(raster)
+                                     : Status::OK();
+  if (!refusal.ok()) return Refused(requested, refusal);
+
+  const gis::SpecParts parts = SplitServedSpec(requested);
   const std::string file = FileInReloadDir(std::string(parts.source));
   if (file.empty()) return NotInReloadDir(requested);
-  std::string driver;
-  if (Status status = gis::UntrustedOgrDriver(parsed, file, &driver);
-      !status.ok()) {
-    return ToGrpcStatus(Refusal::kPermissionDenied,
-                        DatasetQuoted(requested) + ": " + status.message());
+  // A file that reads others (mesh.ele reads mesh.node) is allowed only when
+  // they are inside the dir too.
+  for (const std::string& companion : DatasetCompanionFiles(file)) {
+    if (FileInReloadDir(companion).empty()) return NotInReloadDir(requested);
   }
-  // The load may open the file with this driver only.
+  // The load may open the file with one driver only: the request's, or the
+  // one among those a request may use that identifies the file.
+  std::string driver;
+  Status identified;
+  if (kind == DatasetKind::kOgr && ogr.driver.empty()) {
+    identified = gis::UntrustedOgrDriver(ogr, file, &driver);
+  } else if (kind == DatasetKind::kRaster && raster.driver.empty()) {
+    identified = gis::UntrustedRasterDriver(raster, file, &driver);
+  }
+  if (!identified.ok()) return Refused(requested, identified);
   *spec = std::string(parts.prefix) + file + std::string(parts.options);
-  if (parsed.driver.empty()) {
+  if (!driver.empty()) {
     spec->push_back(parts.options.empty() ? '?' : '&');
     spec->append(DriverOption(driver));
   }

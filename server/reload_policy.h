@@ -7,11 +7,15 @@
 //   - a file inside DIR, named by a path relative to DIR, or absolute. It is
 //     resolved with realpath, and must then be a regular file inside DIR: no
 //     ".." component and no symlink leading out of DIR;
-//   - a GIS spec (common/gis/ogr_dataset_spec.h) whose source is such a
-//     file, whose options a request may use (common/gis/untrusted_ogr_spec.h:
-//     a few drivers and harmless open options, a plain where clause, an
-//     a_srs that passes the request CRS policy), read with the one driver
-//     that identified it (driver= is added to the spec);
+//   - a spec with options (SOURCE?OPTIONS, see SplitServedSpec) whose source
+//     is such a file, and whose options a request may use. Every kind may
+//     take max_error= and max_points=, and a LAS file classes= and returns=.
+//     An OGR source (common/gis/untrusted_ogr_spec.h: a few drivers and
+//     harmless open options, a plain where clause, an a_srs that passes the
+//     request CRS policy) or a raster (common/gis/untrusted_raster_spec.h: a
+//     few drivers that read no file the raster names, band=, such an a_srs)
+//     is read with the one driver that identified it (driver= is added to
+//     the spec). A text file takes no other option;
 //   - POINTS+PATH.wkt where POINTS is any of the above and PATH.wkt a file
 //     inside DIR; a .ele needs its .node inside DIR too.
 // Every other spec is refused alike (PERMISSION_DENIED), whether or not the
@@ -39,8 +43,8 @@ class ReloadPolicy {
 
   // OK with `*spec` set to what to load for a Reload of `requested`: "" for
   // the configured dataset, the generator spec, or the spec with its file's
-  // resolved path. PERMISSION_DENIED otherwise; INVALID_ARGUMENT for a GIS
-  // spec whose options do not parse.
+  // resolved path. PERMISSION_DENIED otherwise; INVALID_ARGUMENT for a spec
+  // whose options do not parse.
   grpc::Status Resolve(const std::string& requested, std::string* spec) const;
 
  private:
@@ -48,10 +52,10 @@ class ReloadPolicy {
   // generator spec, or the spec with its file(s) resolved.
   grpc::Status ResolveInReloadDir(const std::string& requested,
                                   std::string* spec) const;
-  // ResolveInReloadDir for a GIS spec: its options checked, its driver
-  // chosen.
-  grpc::Status ResolveOgrSpec(const std::string& requested,
-                              std::string* spec) const;
+  // ResolveInReloadDir for a spec that names a file (any kind but a
+  // generator): its options checked, its file resolved, its driver chosen.
+  grpc::Status ResolveFileSpec(const std::string& requested,
+                               std::string* spec) const;
   // The file of `requested` inside reload_dir_, resolved; "" if there is none.
   std::string FileInReloadDir(const std::string& requested) const;
 

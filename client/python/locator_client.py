@@ -348,13 +348,18 @@ class LocatorClient:
 
     def stats(self, dataset: Optional[str] = None
               ) -> locator_pb2.GetStatsResponse:
-        """The dataset's, serving and tuning statistics."""
+        """The dataset's, serving and tuning statistics. For a raster DEM
+        or a dataset served with max_error, dataset.simplification is the
+        certificate: source_samples, vertices, triangles, the max_error
+        measured over every source sample, target_error, max_points and
+        build_seconds (HasField("simplification") is False otherwise)."""
         request = locator_pb2.GetStatsRequest(
             dataset=self._dataset_of(dataset))
         return self._call(self._stub.GetStats, request)
 
     def list_datasets(self) -> list:
-        """The server's datasets, as DatasetInfo, in the server's order."""
+        """The server's datasets, as DatasetInfo, in the server's order
+        (stats is the DatasetStats of stats(), simplification included)."""
         answer = self._call(self._stub.ListDatasets,
                             locator_pb2.ListDatasetsRequest())
         return [DatasetInfo(name=entry.name, is_default=entry.is_default,

@@ -1,8 +1,14 @@
 #include "common/gis/gdal_support.h"
 
+#include <cpl_conv.h>
+#include <cpl_string.h>
 #include <gdal.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
 
 #include <mutex>
+
+#include "common/gis/proj_objects.h"
 
 namespace locator::gis {
 
@@ -14,6 +20,71 @@ void RegisterGdalDrivers() {
 std::string LastGdalError() {
   const char* message = CPLGetLastErrorMsg();
   return message != nullptr && *message != '\0' ? message : "no detail";
+}
+
+std::string SpatialRefToWkt(const OGRSpatialReference& srs) {
+  char* wkt = nullptr;
+  const char* const options[] = {"FORMAT=WKT2_2019", nullptr};
+  srs.exportToWkt(&wkt, options);
+  std::string out = wkt == nullptr ? "" : wkt;
+  CPLFree(wkt);
+  return out;
+}
+
+Status UserCrsToWkt(const std::string& crs, std::string* wkt) {
+  OGRSpatialReference srs;
+  const char* const options[] = {"ALLOW_NETWORK_ACCESS=NO",
+                                 "ALLOW_FILE_ACCESS=NO", nullptr};
+  CPLErrorReset();
+  if (srs.SetFromUserInput(crs.c_str(), options) != OGRERR_NONE) {
+    return Status::InvalidArgument("unknown CRS " + QuotedCrs(crs) + ": " +
+                                   LastGdalError());
+  }
+  *wkt = SpatialRefToWkt(srs);
+  return Status::OK();
+}
+
+std::vector<std::string> GdalFileList(GDALDataset& dataset) {
+  std::vector<std::string> files;
+  char** list = dataset.GetFileList();
+  for (char** file = list; file != nullptr && *file != nullptr; ++file) {
+    files.emplace_back(*file);
+  }
+  CSLDestroy(list);
+  return files;
+}
+
+std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
+                                std::span<const char* const> drivers) {
+  RegisterGdalDrivers();
+  CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
+  std::vector<const char*> allowed(drivers.begin(), drivers.end());
+  allowed.push_back(nullptr);
+  GDALDriverH found =
+      GDALIdentifyDriverEx(path.c_str(), kind, allowed.data(), nullptr);
+  return found == nullptr ? "" : GDALGetDriverShortName(found);
+}
+
+Status VectorFileList(const std::string& source,
+                      const std::vector<std::string>& open_options,
+                      const std::string& driver,
+                      std::vector<std::string>* files) {
+  RegisterGdalDrivers();
+  std::vector<const char*> options;
+  for (const std::string& option : open_options)
+    options.push_back(option.c_str());
+  options.push_back(nullptr);
+  const char* const only_driver[] = {driver.c_str(), nullptr};
+  CPLErrorReset();
+  GDALDatasetUniquePtr dataset(GDALDataset::Open(
+      source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY,
+      driver.empty() ? nullptr : only_driver, options.data(), nullptr));
+  if (dataset == nullptr) {
+    return Status::InvalidArgument(source +
+                                   ": GDAL cannot open it: " + LastGdalError());
+  }
+  *files = GdalFileList(*dataset);
+  return Status::OK();
 }
 
 GdalErrorTrap::GdalErrorTrap() { CPLPushErrorHandlerEx(Handle, this); }

@@ -1,6 +1,7 @@
 // What every GDAL user in locator_gis needs: the drivers registered once per
-// process, GDAL's last error message for a Status, and GdalErrorTrap, which
-// keeps the failures GDAL reports while a read is under way.
+// process, GDAL's last error message for a Status, GdalErrorTrap, which
+// keeps the failures GDAL reports while a read is under way, CRSs as WKT and
+// the files a dataset reads.
 //
 // Thread-safety: the functions may be called from any thread (registration
 // runs once; GDAL's error state and its handler stack are per thread). A
@@ -11,7 +12,14 @@
 
 #include <cpl_error.h>
 
+#include <span>
 #include <string>
+#include <vector>
+
+#include "common/status.h"
+
+class GDALDataset;
+class OGRSpatialReference;
 
 namespace locator::gis {
 
@@ -44,6 +52,33 @@ class GdalErrorTrap {
   std::string failure_;
   bool failed_ = false;
 };
+
+// `srs` as WKT2 (2019).
+std::string SpatialRefToWkt(const OGRSpatialReference& srs);
+
+// The CRS `crs` names (EPSG:NNNN, WKT or a PROJ string, as gdal_translate
+// -a_srs takes it) as WKT2, read without file or network access.
+// InvalidArgument "unknown CRS '...'" (QuotedCrs) with GDAL's message
+// otherwise.
+Status UserCrsToWkt(const std::string& crs, std::string* wkt);
+
+// The files `dataset` reads (GDALDataset::GetFileList: the main file and
+// its side-cars, a VRT's sources), in GDAL's order.
+std::vector<std::string> GdalFileList(GDALDataset& dataset);
+
+// The short name of the driver among `drivers` that identifies `path` as a
+// dataset of `kind` (GDAL_OF_VECTOR or GDAL_OF_RASTER), quietly; "" when
+// none of them does.
+std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
+                                std::span<const char* const> drivers);
+
+// GdalFileList of the vector source `source` opened with `open_options`
+// (NAME=VALUE each) by `driver` (a short name; "" for any), without reading
+// a feature. InvalidArgument with GDAL's message when GDAL cannot open it.
+Status VectorFileList(const std::string& source,
+                      const std::vector<std::string>& open_options,
+                      const std::string& driver,
+                      std::vector<std::string>* files);
 
 }  // namespace locator::gis
 

@@ -189,15 +189,6 @@ class PointReader {
   bool geometry_z_ = false;
 };
 
-std::string ToWkt(const OGRSpatialReference& srs) {
-  char* wkt = nullptr;
-  const char* const options[] = {"FORMAT=WKT2_2019", nullptr};
-  srs.exportToWkt(&wkt, options);
-  std::string out = wkt == nullptr ? "" : wkt;
-  CPLFree(wkt);
-  return out;
-}
-
 // The dataset's CRS: a_srs, else the one the layers agree on, else none.
 Status ResolveCrs(const OgrDatasetSpec& spec,
                   const std::vector<OGRLayer*>& layers, std::string* wkt) {
@@ -212,7 +203,7 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
                                      spec.assigned_crs +
                                      "' (a_srs): " + LastGdalError());
     }
-    *wkt = ToWkt(srs);
+    *wkt = SpatialRefToWkt(srs);
     return Status::OK();
   }
   OGRLayer* first = nullptr;
@@ -221,7 +212,7 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
     if (srs == nullptr) continue;
     if (first == nullptr) {
       first = layer;
-      *wkt = ToWkt(*srs);
+      *wkt = SpatialRefToWkt(*srs);
     } else if (!srs->IsSame(first->GetSpatialRef())) {
       return Status::InvalidArgument(
           spec.source + ": layer '" + layer->GetName() + "' is in CRS '" +

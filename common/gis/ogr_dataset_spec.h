@@ -33,6 +33,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/gis/dataset_spec_options.h"
 #include "common/status.h"
 
 namespace locator::gis {
@@ -56,16 +57,9 @@ struct OgrDatasetSpec {
 // extension); other specs belong to the core's LoadDataset.
 bool IsOgrDatasetSpec(std::string_view spec);
 
-// An OGR spec's three parts, verbatim: the "ogr:" prefix or "", the source,
-// and "?OPTIONS" or "". prefix + source + options is the spec again.
-struct OgrSpecParts {
-  std::string_view prefix;
-  std::string_view source;
-  std::string_view options;
-};
-
-// Splits `spec` into its parts (it does not check the options).
-OgrSpecParts SplitOgrDatasetSpec(std::string_view spec);
+// Splits `spec` into its parts, verbatim: the "ogr:" prefix or "", the
+// source, and "?OPTIONS" or "" (it does not check the options).
+SpecParts SplitOgrDatasetSpec(std::string_view spec);
 
 // Parses `spec`; InvalidArgument naming the spec for an unknown option, an
 // option without '=', a repeated option or a bad %-escape.

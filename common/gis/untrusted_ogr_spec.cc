@@ -1,6 +1,5 @@
 #include "common/gis/untrusted_ogr_spec.h"
 
-#include <cpl_error.h>
 #include <gdal.h>
 
 #include <algorithm>
@@ -87,17 +86,11 @@ Status UntrustedOgrDriver(const OgrDatasetSpec& spec, const std::string& path,
     *driver = spec.driver;
     return Status::OK();
   }
-  RegisterGdalDrivers();
-  CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
-  std::array<const char*, kDrivers.size() + 1> allowed{};
-  std::copy(kDrivers.begin(), kDrivers.end(), allowed.begin());
-  GDALDriverH found = GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR,
-                                           allowed.data(), nullptr);
-  if (found == nullptr) {
+  *driver = IdentifyDriverAmong(path, GDAL_OF_VECTOR, kDrivers);
+  if (driver->empty()) {
     return Status::InvalidArgument("not a format a Reload may read (" +
                                    DriverList() + ")");
   }
-  *driver = GDALGetDriverShortName(found);
   return Status::OK();
 }
 

@@ -13,7 +13,9 @@
 // --scale runs the workloads of common/workload.h plus `raster` (a row-major
 // grid of queries over the bounding box, in row order) on uniform points,
 // and `clusters-data` (queries near the points) and `clusters-raster` on a
-// non-uniform dataset (clusters:<n>:20:1). ns_per_query times what CGAL's
+// non-uniform dataset (clusters:<n>:20:1), and `dem-uniform` and
+// `dem-raster` on the TIN of a fractal DEM with n vertices (a simplified
+// DEM, served as a mesh given as triangles). ns_per_query times what CGAL's
 // rows answer: the location (type, triangle, vertices), without
 // barycentrics or value, which full_ns_per_query adds. Its rows also give
 // re-tunes per 10^6 located queries and the tuner's share of the timed wall

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <random>
@@ -14,7 +15,10 @@
 #include "server/bench/cgal_baselines.h"
 #include "server/bench/stopwatch.h"
 #include "server/core/dataset.h"
+#include "server/core/given_mesh.h"
 #include "server/core/locator_factory.h"
+#include "server/core/terrain/fractal_terrain.h"
+#include "server/core/terrain/triangulate_grid.h"
 #include "server/core/triangulation.h"
 
 namespace locator::bench {
@@ -79,9 +83,27 @@ bool Selected(const std::vector<std::string>& names, std::string_view name) {
          std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// The --scale workloads on uniform points, then on the clustered dataset.
-std::vector<std::string> WorkloadNames(bool clustered) {
-  if (clustered) return {"clusters-data", "clusters-raster"};
+// The datasets of --scale: uniform points, clustered points, and the TIN
+// of a fractal DEM (a mesh given as triangles, as a simplified DEM is
+// served).
+enum class ScaleData { kUniform, kClusters, kDem };
+
+// The TIN of a fractal DEM of about 4n samples with n vertices (greedy
+// insertion with a budget of n), as TriangulateGrid serves it.
+Status DemDataset(size_t n, Dataset* out) {
+  const auto side = static_cast<uint32_t>(std::ceil(std::sqrt(4.0 * n)));
+  const ElevationGrid grid =
+      FractalTerrain(side, side, FractalTerrainOptions(), 2);
+  TinOptions options;
+  options.max_points = n;
+  SimplificationStats stats;
+  return TriangulateGrid(grid, options, out, &stats);
+}
+
+// The --scale workloads on one of the datasets.
+std::vector<std::string> WorkloadNames(ScaleData data) {
+  if (data == ScaleData::kClusters) return {"clusters-data", "clusters-raster"};
+  if (data == ScaleData::kDem) return {"dem-uniform", "dem-raster"};
   std::vector<std::string> names;
   for (WorkloadKind kind : AllWorkloadKinds()) {
     names.emplace_back(WorkloadName(kind));
@@ -102,20 +124,25 @@ Status CheckNames(const std::vector<std::string>& names,
   return Status::OK();
 }
 
-// Times every strategy and CGAL's methods on `all` (its first o.warmup
-// queries warm the strategies up), adds their rows, and counts answers that
-// disagree with CGAL into *mismatches. With `record_build`, also the
-// self-tuning strategy's build row.
+// Times every strategy over `mesh` (the serving mesh of t's dataset) and
+// CGAL's methods on `all` (its first o.warmup queries warm the strategies
+// up), adds their rows, and counts answers that disagree with CGAL into
+// *mismatches. With `record_build`, also the self-tuning strategy's build
+// row. On a mesh given as triangles (`delaunay` false) CGAL's hierarchy
+// triangulates the points anew, which is another triangulation: the
+// reference is then CGAL's locate on t, and there is no hierarchy row.
 Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
-                   CgalBaselines& cgal, const std::string& workload,
-                   std::span<const Point2> all, bool record_build,
-                   BenchReport* report, size_t* mismatches) {
+                   const ServingMesh& mesh, CgalBaselines& cgal,
+                   const std::string& workload, std::span<const Point2> all,
+                   bool record_build, bool delaunay, BenchReport* report,
+                   size_t* mismatches) {
   const size_t n = t.input_points();
   const std::span<const Point2> warm = all.first(o.warmup);
   const std::span<const Point2> measured = all.subspan(o.warmup);
   std::vector<LocateResult> reference(measured.size());
   for (size_t i = 0; i < measured.size(); ++i) {
-    reference[i] = cgal.LocateHierarchy(measured[i]);
+    reference[i] = delaunay ? cgal.LocateHierarchy(measured[i])
+                            : t.ReferenceLocate(measured[i]);
   }
   LocateResult r;
   std::vector<LocateResult> batch(measured.size());
@@ -123,7 +150,7 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
     if (!Selected(o.strategies, strategy)) continue;
     auto start = std::chrono::steady_clock::now();
     std::unique_ptr<PointLocator> locator;
-    const Status s = MakePointLocator(strategy, t.mesh(), o.tuning, &locator);
+    const Status s = MakePointLocator(strategy, mesh, o.tuning, &locator);
     if (!s.ok()) return s;
     const double build_ns = NanosSince(start);
     LocateAll(*locator, warm, nullptr);
@@ -195,6 +222,7 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
       MedianNsPerQuery(measured, o.repeats,
                        [&](const Point2& q) { r = cgal.LocateLastHint(q); }),
       0});
+  if (!delaunay) return Status::OK();
   const auto hierarchy = [&](const Point2& q) { r = cgal.LocateHierarchy(q); };
   BenchRow row{"scale",
                workload,
@@ -217,8 +245,12 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
 }  // namespace
 
 Status RunScale(const ScaleOptions& o, BenchReport* report) {
-  std::vector<std::string> known = WorkloadNames(false);
-  for (std::string& name : WorkloadNames(true)) known.push_back(name);
+  constexpr ScaleData kAll[] = {ScaleData::kUniform, ScaleData::kClusters,
+                                ScaleData::kDem};
+  std::vector<std::string> known;
+  for (const ScaleData data : kAll) {
+    for (std::string& name : WorkloadNames(data)) known.push_back(name);
+  }
   if (Status s = CheckNames(o.workloads, known, "workload"); !s.ok()) return s;
   if (Status s = CheckNames(o.strategies, StrategyNames(), "strategy");
       !s.ok()) {
@@ -227,19 +259,38 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
   size_t mismatches = 0;
   const size_t count = o.warmup + o.queries;
   for (size_t n : o.sizes) {
-    for (const bool clustered : {false, true}) {
-      const std::vector<std::string> names = WorkloadNames(clustered);
+    for (const ScaleData data : kAll) {
+      const std::vector<std::string> names = WorkloadNames(data);
       if (std::none_of(names.begin(), names.end(), [&](const std::string& w) {
             return Selected(o.workloads, w);
           })) {
         continue;
       }
-      const Dataset dataset = clustered ? GenerateClusters(n, kClusterBlobs, 1)
-                                        : GenerateUniform(n, 1);
-      const std::string suffix = clustered ? "-clusters" : "";
+      Dataset dataset;
+      Status s;
+      if (data == ScaleData::kDem) {
+        s = DemDataset(n, &dataset);
+      } else {
+        dataset = data == ScaleData::kClusters
+                      ? GenerateClusters(n, kClusterBlobs, 1)
+                      : GenerateUniform(n, 1);
+      }
+      if (!s.ok()) return s;
+      const std::string suffix = data == ScaleData::kClusters ? "-clusters"
+                                 : data == ScaleData::kDem    ? "-dem"
+                                                              : "";
       auto start = std::chrono::steady_clock::now();
+      // A mesh given as triangles is served as the engine serves it
+      // (BuildGivenMesh); CGAL's triangulation of it is the reference.
+      BuiltMesh given;
+      if (data == ScaleData::kDem) {
+        if (s = BuildGivenMesh(dataset, &given); !s.ok()) return s;
+        report->Add(BenchRow{"build", "-", n, "given-mesh" + suffix, 0, 0, 0,
+                             NanosSince(start), given.mesh->MemoryBytes()});
+        start = std::chrono::steady_clock::now();
+      }
       std::unique_ptr<Triangulation> t;
-      Status s = Triangulation::Build(dataset, &t);
+      s = Triangulation::Build(dataset, &t);
       if (!s.ok()) return s;
       // The serving mesh is what answers; CGAL's triangulation builds it.
       report->Add(BenchRow{"build", "-", n, "triangulation" + suffix, 0, 0, 0,
@@ -247,15 +298,24 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
       report->Add(BenchRow{"build", "-", n, "cgal-builder" + suffix, 0, 0, 0, 0,
                            t->MemoryBytes()});
       CgalBaselines cgal(*t, dataset);
-      report->Add(BenchRow{"build", "-", n, "cgal-hierarchy" + suffix, 0, 0, 0,
-                           cgal.hierarchy_build_seconds() * 1e9,
-                           cgal.hierarchy_bytes()});
+      if (data != ScaleData::kDem) {
+        report->Add(BenchRow{"build", "-", n, "cgal-hierarchy" + suffix, 0, 0,
+                             0, cgal.hierarchy_build_seconds() * 1e9,
+                             cgal.hierarchy_bytes()});
+      }
+      const ServingMesh& served =
+          data == ScaleData::kDem ? *given.mesh : t->mesh();
       const BoundingBox& box = t->bounding_box();
       std::vector<std::pair<std::string, std::vector<Point2>>> workloads;
-      if (clustered) {
+      if (data == ScaleData::kClusters) {
         workloads.emplace_back("clusters-data",
                                NearPointQueries(dataset, box, count, 4243));
         workloads.emplace_back("clusters-raster", RasterQueries(box, count));
+      } else if (data == ScaleData::kDem) {
+        workloads.emplace_back(
+            "dem-uniform",
+            WorkloadQueries(WorkloadKind::kUniform, box, count, 4244));
+        workloads.emplace_back("dem-raster", RasterQueries(box, count));
       } else {
         for (WorkloadKind kind : AllWorkloadKinds()) {
           workloads.emplace_back(
@@ -266,8 +326,9 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
       }
       for (const auto& [workload, queries] : workloads) {
         if (!Selected(o.workloads, workload)) continue;
-        s = RunWorkload(o, *t, cgal, workload, queries, workload == "uniform",
-                        report, &mismatches);
+        s = RunWorkload(o, *t, served, cgal, workload, queries,
+                        workload == "uniform", data != ScaleData::kDem, report,
+                        &mismatches);
         if (!s.ok()) return s;
       }
     }

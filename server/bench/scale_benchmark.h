@@ -3,8 +3,11 @@
 // Triangulation_hierarchy_2), checking every answer against CGAL; plus build
 // times and bytes of each structure. Workloads: common/workload.h's and a
 // row-order raster on uniform points; queries near the points and a raster
-// on a clustered dataset. Strategy rows also report re-tunes, the tuner's
-// time share, sampled latency and batch (LocateMany) ns per point.
+// on a clustered dataset; uniform queries and a raster on the TIN of a
+// fractal DEM with n vertices (TriangulateGrid with max_points n), served
+// as a mesh given as triangles (its build row: given-mesh-dem). Strategy rows
+// also report re-tunes, the tuner's time share, sampled latency and batch
+// (LocateMany) ns per point.
 
 #ifndef LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_
 #define LOCATOR_SERVER_BENCH_SCALE_BENCHMARK_H_

@@ -6,18 +6,43 @@
 //   locator-surface-bench --profile [--points 1000000]
 //   locator-surface-bench --interpolation [--points 1000000]
 //                         [--queries 200000]
+//   locator-surface-bench --dem [--dem-sizes 1187,2373,4745,9490]
+//                         [--dem-errors 0.01,0.001,0.0005,0.0001]
+//                         [--dem-repeats 1] [--dem-reference 1]
 //
 // A program that prints figures, never a test: every comparison is made
 // within one run (the machine is shared and noisy).
 
 #include <boost/program_options.hpp>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "server/bench/dem_benchmark.h"
 #include "server/bench/grid_benchmark.h"
 #include "server/bench/profile_benchmark.h"
 
 namespace po = boost::program_options;
+
+namespace {
+
+// Parses "a,b,c" into *out; false if an item is not a T.
+template <class T>
+bool ParseList(const std::string& text, std::vector<T>* out) {
+  out->clear();
+  std::istringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    std::istringstream parse(item);
+    T value;
+    if (!(parse >> value) || !parse.eof()) return false;
+    out->push_back(value);
+  }
+  return !out->empty();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   po::options_description desc(
@@ -25,10 +50,22 @@ int main(int argc, char** argv) {
       "Options");
   locator::bench::GridBenchOptions grid;
   locator::bench::SurfaceBenchOptions surface;
+  locator::bench::DemBenchOptions dem;
+  std::string dem_sizes = "1187,2373,4745,9490";
+  std::string dem_errors = "0.01,0.001,0.0005,0.0001";
   desc.add_options()("help,h", "print this help")(
       "grid", "locator against gdal_grid -a linear, end to end")(
       "profile", "breakpoints per second for lines of 10..10^5 crossings")(
       "interpolation", "ns per point: linear, nearest, natural neighbour")(
+      "dem", "TIN builds of fractal DEMs, in hmm's shape")(
+      "dem-sizes", po::value(&dem_sizes)->default_value(dem_sizes),
+      "--dem: DEM widths (= heights), comma-separated")(
+      "dem-errors", po::value(&dem_errors)->default_value(dem_errors),
+      "--dem: errors as fractions of the height range")(
+      "dem-repeats", po::value(&dem.repeats)->default_value(1),
+      "--dem: builds per thread count (the best counts)")(
+      "dem-reference", po::value(&dem.reference)->default_value(true),
+      "--dem: run the reference greedy insertion too")(
       "points", po::value(&surface.points)->default_value(1000000),
       "terrain points")("size", po::value(&grid.size)->default_value(2048),
                         "--grid: raster width and height")(
@@ -48,9 +85,12 @@ int main(int argc, char** argv) {
     std::cerr << "locator-surface-bench: " << e.what() << "\n" << desc;
     return 2;
   }
-  const bool any =
-      vm.count("grid") || vm.count("profile") || vm.count("interpolation");
-  if (vm.count("help") || !any || grid.repeats < 1 || grid.threads < 1) {
+  const bool any = vm.count("grid") || vm.count("profile") ||
+                   vm.count("interpolation") || vm.count("dem");
+  const bool lists =
+      ParseList(dem_sizes, &dem.sizes) && ParseList(dem_errors, &dem.errors);
+  if (vm.count("help") || !any || grid.repeats < 1 || grid.threads < 1 ||
+      !lists || dem.repeats < 1) {
     std::cerr << desc;
     return vm.count("help") ? 0 : 2;
   }
@@ -62,6 +102,9 @@ int main(int argc, char** argv) {
   }
   if (run.ok() && vm.count("interpolation")) {
     run = locator::bench::RunInterpolationBenchmark(surface, std::cout);
+  }
+  if (run.ok() && vm.count("dem")) {
+    run = locator::bench::RunDemBenchmark(dem, std::cout);
   }
   if (!run.ok()) {
     std::cerr << "locator-surface-bench: " << run.ToString() << "\n";

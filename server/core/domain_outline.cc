@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "server/core/serving_mesh.h"
 #include "server/core/triangulation.h"
 
 namespace locator {
@@ -58,6 +59,20 @@ DomainOutline OutlineOf(const Triangulation& t, size_t max_edges) {
   }
   return DomainOutline{Thinned(std::move(boundary), max_edges),
                        Thinned(std::move(breaklines), max_edges)};
+}
+
+DomainOutline OutlineOfMesh(const ServingMesh& mesh, size_t max_edges) {
+  Segments boundary;
+  for (uint32_t f = 0; f < mesh.num_triangles(); ++f) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t n = mesh.Neighbor(f, i);
+      if (ServingMesh::IsHull(n) || !mesh.InDomain(n)) {
+        boundary.push_back(
+            {mesh.CornerPoint(f, Ccw(i)), mesh.CornerPoint(f, Cw(i))});
+      }
+    }
+  }
+  return DomainOutline{Thinned(std::move(boundary), max_edges), {}};
 }
 
 }  // namespace locator

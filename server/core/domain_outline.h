@@ -15,6 +15,7 @@
 
 namespace locator {
 
+class ServingMesh;
 class Triangulation;
 
 struct DomainOutline {
@@ -34,6 +35,11 @@ struct DomainOutline {
 // end, and the lists are sorted, so equal triangulations give equal
 // outlines. O(E log E) in the E edges of the outline, O(edges of t) else.
 DomainOutline OutlineOf(const Triangulation& t, size_t max_edges);
+
+// The outline of a mesh given as triangles, from its serving mesh: every
+// edge between an in-domain triangle and an out-of-domain face or the
+// outside of the hull, thinned as OutlineOf's (a mesh has no breaklines).
+DomainOutline OutlineOfMesh(const ServingMesh& mesh, size_t max_edges);
 
 }  // namespace locator
 

@@ -38,6 +38,20 @@ Engine::~Engine() = default;
 
 Status Engine::Create(Dataset dataset, const EngineOptions& options,
                       std::unique_ptr<Engine>* engine) {
+  return Build(std::move(dataset), std::nullopt, options, engine);
+}
+
+Status Engine::CreateSimplified(Dataset tin,
+                                const SimplificationStats& simplification,
+                                const EngineOptions& options,
+                                std::unique_ptr<Engine>* engine) {
+  return Build(std::move(tin), simplification, options, engine);
+}
+
+Status Engine::Build(Dataset dataset,
+                     std::optional<SimplificationStats> simplification,
+                     const EngineOptions& options,
+                     std::unique_ptr<Engine>* engine) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
   BuiltMesh built;
@@ -50,10 +64,11 @@ Status Engine::Create(Dataset dataset, const EngineOptions& options,
   if (!s.ok()) return s;
   e->info_.source = std::move(dataset.source);
   e->info_.crs = std::move(dataset.crs);
+  e->info_.simplification = simplification;
   return Finish(std::move(built), options, start, std::move(e), engine);
 }
 
-Status Engine::CreateFromMeshFile(uint64_t fingerprint, std::string source,
+Status Engine::CreateFromMeshFile(uint64_t fingerprint, DatasetOrigin origin,
                                   const EngineOptions& options,
                                   std::unique_ptr<Engine>* engine) {
   const auto start = std::chrono::steady_clock::now();
@@ -62,7 +77,9 @@ Status Engine::CreateFromMeshFile(uint64_t fingerprint, std::string source,
   Status s = MapCachedMesh(options.mesh_cache_dir, fingerprint, &built,
                            &e->info_.mesh_cache);
   if (!s.ok()) return s;
-  e->info_.source = std::move(source);
+  e->info_.source = std::move(origin.source);
+  e->info_.crs = std::move(origin.crs);
+  e->info_.simplification = std::move(origin.simplification);
   return Finish(std::move(built), options, start, std::move(e), engine);
 }
 

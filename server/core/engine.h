@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@
 #include "server/core/point_locator.h"
 #include "server/core/profile.h"
 #include "server/core/raster.h"
+#include "server/core/terrain/tin_options.h"
 #include "server/core/tuning_options.h"
 #include "server/core/walk_cost_histogram.h"
 
@@ -60,6 +62,16 @@ struct EngineOptions {
   unsigned build_threads = 0;
 };
 
+// What an engine reports about its dataset besides the mesh: where it came
+// from, its CRS and, for a TIN simplified from source samples, the
+// certificate. Carried, never interpreted.
+struct DatasetOrigin {
+  std::string source;
+  // WKT; empty when the dataset has none.
+  std::string crs;
+  std::optional<SimplificationStats> simplification;
+};
+
 struct DatasetInfo {
   std::string source;
   uint64_t input_points = 0;
@@ -80,6 +92,9 @@ struct DatasetInfo {
   double build_seconds = 0;
   // How EngineOptions::mesh_cache_dir served this build.
   MeshCacheOutcome mesh_cache;
+  // For a TIN simplified from its source (a raster, or points given
+  // max_error): how, with the measured error. Unset otherwise.
+  std::optional<SimplificationStats> simplification;
 };
 
 struct EngineStats {
@@ -114,12 +129,20 @@ class Engine {
   // or an unknown strategy.
   static Status Create(Dataset dataset, const EngineOptions& options,
                        std::unique_ptr<Engine>* engine);
+  // As Create, for `tin`, a TIN simplified from source samples (its mesh
+  // as constraints.triangles, see server/core/terrain/) whose certificate
+  // is `simplification`: dataset_info() reports it.
+  static Status CreateSimplified(Dataset tin,
+                                 const SimplificationStats& simplification,
+                                 const EngineOptions& options,
+                                 std::unique_ptr<Engine>* engine);
   // The engine of the dataset with `fingerprint` from its mesh file in
   // options.mesh_cache_dir, without the dataset itself (see
-  // FindGeneratedFingerprint); `source` names it in stats. NotFound if
-  // there is no file, or why the file is unusable (MapCachedMesh); the
-  // outcome is in dataset_info().mesh_cache either way when it succeeds.
-  static Status CreateFromMeshFile(uint64_t fingerprint, std::string source,
+  // FindGeneratedFingerprint); stats report `origin` as its source, CRS and
+  // certificate. NotFound if there is no file, or why the file is unusable
+  // (MapCachedMesh); the outcome is in dataset_info().mesh_cache either way
+  // when it succeeds.
+  static Status CreateFromMeshFile(uint64_t fingerprint, DatasetOrigin origin,
                                    const EngineOptions& options,
                                    std::unique_ptr<Engine>* engine);
   ~Engine();
@@ -193,6 +216,11 @@ class Engine {
 
  private:
   Engine();
+  // Create with the certificate `simplification`, if any.
+  static Status Build(Dataset dataset,
+                      std::optional<SimplificationStats> simplification,
+                      const EngineOptions& options,
+                      std::unique_ptr<Engine>* engine);
   // Sets up the strategy on `built` and fills the dataset facts; `start` is
   // when the build began.
   static Status Finish(BuiltMesh built, const EngineOptions& options,

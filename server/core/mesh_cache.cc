@@ -10,6 +10,7 @@
 #include "common/freed_memory.h"
 #include "server/core/dataset_fingerprint.h"
 #include "server/core/file_io.h"
+#include "server/core/given_mesh.h"
 #include "server/core/tiling/tiled_build.h"
 #include "server/core/triangulation.h"
 
@@ -34,6 +35,8 @@ std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
 
 Status TriangulateMesh(const Dataset& dataset, unsigned threads,
                        BuiltMesh* out) {
+  // A mesh served as given needs no constraint hierarchy.
+  if (IsGivenMesh(dataset)) return BuildGivenMesh(dataset, out);
   if (dataset.constraints.empty()) {
     TiledBuildOptions options;
     options.threads = threads;

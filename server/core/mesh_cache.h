@@ -39,10 +39,12 @@ struct MeshCacheOutcome {
 // (DigestNamedPath: "mesh-<16 hex digits>.mesh").
 std::string MeshFilePath(const std::string& dir, uint64_t fingerprint);
 
-// Triangulates `dataset` and derives its serving mesh and facts: a plain
-// point set in tiles on `threads` threads (tiling/tiled_build.h), a
-// constrained one with CGAL, whose triangulation is freed. The same points
-// give the same mesh either way. InvalidArgument as Triangulation::Build.
+// Triangulates `dataset` and derives its serving mesh and facts: a mesh
+// given as triangles takes BuildGivenMesh's shorter way (given_mesh.h), a
+// plain point set is built in tiles on `threads` threads
+// (tiling/tiled_build.h), a constrained one with CGAL, whose triangulation
+// is freed. The same points give the same mesh either way. InvalidArgument
+// as Triangulation::Build.
 Status TriangulateMesh(const Dataset& dataset, unsigned threads,
                        BuiltMesh* out);
 

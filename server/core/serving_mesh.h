@@ -71,6 +71,15 @@ class ServingMesh {
    public:
     virtual ~Storage() = default;
   };
+  // The arrays of a mesh built in memory.
+  class VectorStorage : public Storage {
+   public:
+    std::vector<MeshTriangle> triangles;
+    std::vector<Point2> points;
+    std::vector<double> values;
+    std::vector<uint32_t> ids;
+    std::vector<uint32_t> hull;
+  };
 
   struct Arrays {
     std::span<const MeshTriangle> triangles;

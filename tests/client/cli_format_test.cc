@@ -20,6 +20,7 @@ namespace locator {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 TEST(CliFormatTest, FormatDoubleIsShortestAndReadsBackExactly) {
   EXPECT_EQ(FormatDouble(0.1), "0.1");
@@ -144,6 +145,28 @@ TEST(CliFormatTest, FormatStatsNamesTheCrs) {
   stats.mutable_dataset()->mutable_crs()->set_epsg_code(32633);
   EXPECT_THAT(FormatStats(stats),
               HasSubstr("crs          WGS 84 / UTM zone 33N (EPSG:32633)\n"));
+}
+
+TEST(CliFormatTest, FormatStatsShowsTheSimplificationCertificate) {
+  v1::GetStatsResponse stats;
+  EXPECT_THAT(FormatStats(stats), Not(HasSubstr("simplified")));
+  v1::SimplificationStats* s =
+      stats.mutable_dataset()->mutable_simplification();
+  s->set_source_samples(1000000);
+  s->set_vertices(5123);
+  s->set_triangles(10100);
+  s->set_max_error(0.4875);
+  s->set_target_error(0.5);
+  s->set_build_seconds(1.25);
+  EXPECT_THAT(
+      FormatStats(stats),
+      HasSubstr("simplified   1000000 samples to 5123 vertices, 10100 "
+                "triangles in 1.25 s; max error 0.4875 (target 0.5)\n"));
+  s->set_max_points(6000);
+  s->set_unserved_samples(3);
+  EXPECT_THAT(FormatStats(stats),
+              HasSubstr("(target 0.5, max_points 6000); 3 samples outside the "
+                        "domain\n"));
 }
 
 TEST(CliFormatTest, BatchCsvRowsLeaveInapplicableCellsEmpty) {

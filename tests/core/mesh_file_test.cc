@@ -362,9 +362,10 @@ TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
       RecordGeneratedFingerprint(dir.path(), spec, cache.fingerprint).ok());
   ASSERT_TRUE(FindGeneratedFingerprint(dir.path(), spec, &fingerprint).ok());
   EXPECT_EQ(fingerprint, cache.fingerprint);
+  DatasetOrigin origin;
+  origin.source = "uniform:500:9";
   ASSERT_TRUE(
-      Engine::CreateFromMeshFile(fingerprint, "uniform:500:9", options, &mapped)
-          .ok());
+      Engine::CreateFromMeshFile(fingerprint, origin, options, &mapped).ok());
   const DatasetInfo& info = mapped->dataset_info();
   EXPECT_TRUE(info.mesh_cache.mapped);
   EXPECT_EQ(info.source, "uniform:500:9");
@@ -373,7 +374,8 @@ TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
   EXPECT_EQ(Bytes(mapped->EdgeSample()), Bytes(built->EdgeSample()));
   // Another fingerprint has no file; a key file that is not one is refused.
   EXPECT_EQ(
-      Engine::CreateFromMeshFile(fingerprint + 1, "x", options, &mapped).code(),
+      Engine::CreateFromMeshFile(fingerprint + 1, origin, options, &mapped)
+          .code(),
       Status::Code::kNotFound);
   for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
     if (entry.path().extension() == ".key") {

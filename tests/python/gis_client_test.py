@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """ctest: the Python client's dataset= and crs= against a live locatord
-serving a GeoPackage in UTM zone 33N (EPSG:32633).
+serving a GeoPackage in UTM zone 33N (EPSG:32633), and beside it a DEM.
 
 Makes the GeoPackage as the README's quick start does: a CSV of x, y, z
 turned into a layer by ogr2ogr with -a_srs EPSG:32633. Points queried in
 lon/lat (crs="EPSG:4326", client-wide or per call) must get the answers of
-the same points projected by cs2cs beforehand.
+the same points projected by cs2cs beforehand. The DEM, an ASCII grid with
+a nodata hole served as dem=dem.asc?a_srs=EPSG:32633&max_error=0.5, must
+come with its simplification certificate in stats() and list_datasets().
 
 Usage: gis_client_test.py LOCATORD PYTHON_DIR OGR2OGR CS2CS
 """
@@ -62,7 +64,20 @@ class GisClientTest(unittest.TestCase):
              "EPSG:32633", "-oo", "X_POSSIBLE_NAMES=x", "-oo",
              "Y_POSSIBLE_NAMES=y", "-oo", "Z_POSSIBLE_NAMES=z"],
             check=True, capture_output=True)
-        cls.server = Locatord(LOCATORD, ["--dataset", gpkg], cls.work.name)
+        dem = os.path.join(cls.work.name, "dem.asc")
+        with open(dem, "w") as out:
+            out.write("ncols 40\nnrows 30\nxllcorner 499000\n"
+                      "yllcorner 5499000\ncellsize 50\nNODATA_value -9999\n")
+            for row in range(30):
+                out.write(" ".join(
+                    "-9999" if 10 <= row < 14 and 20 <= col < 25 else
+                    repr(height(499025 + 50 * col, 5500475 - 50 * row))
+                    for col in range(40)) + "\n")
+        cls.dem_pixels = 40 * 30 - 4 * 5
+        cls.server = Locatord(
+            LOCATORD, ["--dataset", gpkg, "--dataset",
+                       f"dem={dem}?a_srs=EPSG:32633&max_error=0.5"],
+            cls.work.name)
 
     @classmethod
     def tearDownClass(cls):
@@ -107,6 +122,23 @@ class GisClientTest(unittest.TestCase):
                 client.locate(15, 49.65, crs="EPSG:999999")
             self.assertEqual(raised.exception.code, "INVALID_ARGUMENT")
             self.assertIn("EPSG:999999", raised.exception.details)
+
+    def test_the_dems_certificate_passes_through(self):
+        from locator_client import LocatorClient
+        with LocatorClient(self.server.target) as client:
+            stats = client.stats(dataset="dem").dataset
+            self.assertTrue(stats.HasField("simplification"))
+            certificate = stats.simplification
+            self.assertEqual(certificate.source_samples, self.dem_pixels)
+            self.assertLessEqual(certificate.max_error, 0.5)
+            self.assertEqual(certificate.target_error, 0.5)
+            self.assertLess(certificate.vertices, self.dem_pixels)
+            self.assertEqual(certificate.vertices, stats.vertices)
+            self.assertEqual(stats.crs.epsg_code, 32633)
+            self.assertFalse(
+                client.stats(dataset="").dataset.HasField("simplification"))
+            listed = {d.name: d for d in client.list_datasets()}
+            self.assertEqual(listed["dem"].stats.simplification, certificate)
 
     def test_profile_in_lon_lat_and_grid_against_the_live_server(self):
         from locator_client import LocatorClient

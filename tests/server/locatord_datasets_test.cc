@@ -246,7 +246,13 @@ TEST_F(LocatordDatasetsTest, ARestartMapsEveryDatasetsMeshFile) {
     EXPECT_THAT(first.path(), ::testing::StartsWith(cache.path() + "/mesh-"));
     EXPECT_EQ(first.load_error() + first.save_error(), "") << name;
   }
-  EXPECT_EQ(cache.Entries().size(), 2u);
+  // A mesh file and a source key (source_key.h) per dataset.
+  const std::vector<std::string> entries = cache.Entries();
+  ASSERT_EQ(entries.size(), 4u);
+  EXPECT_THAT(entries[0], ::testing::StartsWith("mesh-"));
+  EXPECT_THAT(entries[1], ::testing::StartsWith("mesh-"));
+  EXPECT_THAT(entries[2], ::testing::StartsWith("source-"));
+  EXPECT_THAT(entries[3], ::testing::StartsWith("source-"));
   v1::LocateResponse before;
   ASSERT_TRUE(LocateOne(*stub_, {0.3, 0.6}, &before, "bedrock").ok());
   server_->SendSignal(SIGTERM);

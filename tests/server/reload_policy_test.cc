@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "tests/common/gis/las_writer.h"
+#include "tests/common/gis/raster_fixtures.h"
 #include "tests/core/scratch_dir.h"
 
 namespace locator {
@@ -86,6 +88,29 @@ TEST_F(ReloadPolicyTest, FilesInsideTheReloadDirResolveToTheirRealPath) {
             Canonical(dir_ + "/sub/more.csv"));
   // A link that stays inside is followed.
   EXPECT_EQ(Resolved(policy, "alias.csv"), points);
+}
+
+TEST_F(ReloadPolicyTest, OptionsOfEveryKindRideAlongWithTheirFile) {
+  const ReloadPolicy policy("uniform:300:7", dir_);
+  gis::testing::DemFixture dem = gis::testing::HillDem(4, 3, 30);
+  dem.bands = 2;
+  gis::testing::WriteDem(dir_ + "/dem.tif", dem);
+  gis::testing::WriteDem(dir_ + "/dem.bin", dem);
+  gis::testing::WriteLasFile(dir_ + "/tile.bin", {{.x = 1, .y = 2, .z = 3}});
+  EXPECT_EQ(
+      Resolved(policy, "dem.tif?max_error=0.5&band=2"),
+      Canonical(dir_ + "/dem.tif") + "?max_error=0.5&band=2&driver=GTiff");
+  EXPECT_EQ(Resolved(policy, "las:tile.bin?classes=2&returns=last"),
+            "las:" + Canonical(dir_ + "/tile.bin") + "?classes=2&returns=last");
+  EXPECT_EQ(
+      Resolved(policy, "raster:dem.bin?max_points=10"),
+      "raster:" + Canonical(dir_ + "/dem.bin") + "?max_points=10&driver=GTiff");
+  EXPECT_EQ(Resolved(policy, "points.csv?max_points=100"),
+            Canonical(dir_ + "/points.csv") + "?max_points=100");
+  // The options never name the file.
+  EXPECT_EQ(Resolved(policy, "missing.tif?a_srs=" + dir_ + "/dem.tif"),
+            "denied");
+  EXPECT_EQ(Resolved(policy, "las:" + secret_ + "?classes=2"), "denied");
 }
 
 TEST_F(ReloadPolicyTest, AMeshIsAllowedOnlyWithItsNodeFileInside) {
@@ -187,6 +212,9 @@ TEST_F(ReloadPolicyGisTest, ASpecIsResolvedWithItsDriver) {
             geojson + "?z=h&where=h%20%3E%200&driver=GeoJSON");
   EXPECT_EQ(Resolved(policy, "pts.geojson?driver=GeoJSON"),
             geojson + "?driver=GeoJSON");
+  // The options every kind takes pass as well.
+  EXPECT_EQ(Resolved(policy, "pts.geojson?max_error=0.5&z=h"),
+            geojson + "?max_error=0.5&z=h&driver=GeoJSON");
   EXPECT_EQ(Resolved(policy, "ogr:points.csv?oo=X_POSSIBLE_NAMES=x"),
             "ogr:" + Canonical(dir_ + "/points.csv") +
                 "?oo=X_POSSIBLE_NAMES=x&driver=CSV");
@@ -235,6 +263,65 @@ TEST_F(ReloadPolicyGisTest, MalformedOptionsAreInvalidArgument) {
                                   .Resolve("pts.geojson?colour=red", &spec);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
   EXPECT_THAT(status.error_message(), HasSubstr("unknown option 'colour'"));
+}
+
+// Rasters: only drivers that read no file the raster names, an a_srs that
+// passes the request CRS policy; LAS files: classes= and returns=.
+TEST_F(ReloadPolicyGisTest, ARasterIsReadOnlyByADriverThatOpensNoOtherFile) {
+  gis::testing::WriteDem(dir_ + "/dem.tif", gis::testing::HillDem(4, 3, 30));
+  gis::testing::WriteDem(secret_ + ".tif", gis::testing::HillDem(4, 3, 30));
+  const std::string vrt =
+      "<VRTDataset rasterXSize=\"4\" rasterYSize=\"3\"><VRTRasterBand "
+      "dataType=\"Float32\" band=\"1\"><SimpleSource><SourceFilename>" +
+      secret_ +
+      ".tif</SourceFilename><SourceBand>1</SourceBand>"
+      "</SimpleSource></VRTRasterBand></VRTDataset>";
+  std::ofstream(dir_ + "/mosaic.vrt") << vrt;
+  // A VRT by another name is still a VRT to GDAL.
+  std::ofstream(dir_ + "/looks.tif") << vrt;
+  const struct {
+    std::string requested;
+    std::string message;
+  } kCases[] = {
+      {"mosaic.vrt", "not a raster format a Reload may read (GTiff, AAIGrid"},
+      {"looks.tif?max_error=1", "not a raster format a Reload may read"},
+      {"raster:mosaic.vrt?driver=VRT", "driver='VRT': a Reload may read only"},
+      {"dem.tif?driver=HFA", "driver='HFA'"},
+      {"dem.tif?a_srs=%2Bproj%3Dlonglat%20%2Bnadgrids%3D%2Fdev%2Fptmx",
+       "a_srs=: CRS '+proj=longlat +nadgrids=/dev/ptmx' names a file PROJ "
+       "may not open here"},
+      {"missing.tif?driver=VRT", "driver='VRT'"},
+  };
+  for (const auto& c : kCases) {
+    EXPECT_THAT(Denial(c.requested), HasSubstr(c.message)) << c.requested;
+  }
+  const ReloadPolicy policy("uniform:300:7", dir_);
+  EXPECT_EQ(Resolved(policy, "dem.tif?a_srs=EPSG:32633&driver=GTiff"),
+            Canonical(dir_ + "/dem.tif") + "?a_srs=EPSG:32633&driver=GTiff");
+}
+
+TEST_F(ReloadPolicyGisTest, MalformedRasterAndLasOptionsAreInvalidArgument) {
+  gis::testing::WriteDem(dir_ + "/dem.tif", gis::testing::HillDem(4, 3, 30));
+  gis::testing::WriteLasFile(dir_ + "/tile.las", {{.x = 1, .y = 2, .z = 3}});
+  const struct {
+    std::string requested;
+    std::string message;
+  } kCases[] = {
+      {"dem.tif?band=0", "option 'band' must be an integer from 1"},
+      {"dem.tif?oo=X=1", "unknown option 'oo'"},
+      {"dem.tif?max_error=-1", "option 'max_error' must be a finite number"},
+      {"tile.las?classes=2,300", "option 'classes' must be"},
+      {"tile.las?band=1", "unknown option 'band'"},
+      {"points.csv?z=h", "unknown option 'z'"},
+  };
+  for (const auto& c : kCases) {
+    std::string spec;
+    const grpc::Status status =
+        ReloadPolicy("uniform:300:7", dir_).Resolve(c.requested, &spec);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << c.requested;
+    EXPECT_THAT(status.error_message(), HasSubstr(c.message)) << c.requested;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,57 @@
+#include "common/gis/untrusted_raster_spec.h"
+
+#include <gdal.h>
+
+#include <algorithm>
+#include <array>
+
+#include "common/gis/gdal_support.h"
+#include "common/gis/request_crs_policy.h"
+#include "common/input_text.h"
+
+namespace locator::gis {
+namespace {
+
+constexpr std::array<const char*, 8> kDrivers = {
+    "GTiff", "AAIGrid", "EHdr", "SRTMHGT", "USGSDEM", "GSAG", "GSBG", "GS7BG"};
+
+std::string DriverList() {
+  std::string list;
+  for (const char* driver : kDrivers) {
+    list += (list.empty() ? "" : ", ") + std::string(driver);
+  }
+  return list;
+}
+
+}  // namespace
+
+Status CheckUntrustedRasterOptions(const RasterDatasetSpec& spec) {
+  if (!spec.assigned_crs.empty()) {
+    if (Status status = CheckRequestCrs(spec.assigned_crs); !status.ok()) {
+      return Status::InvalidArgument("a_srs=: " + status.message());
+    }
+  }
+  if (!spec.driver.empty() &&
+      std::none_of(kDrivers.begin(), kDrivers.end(),
+                   [&](const char* d) { return spec.driver == d; })) {
+    return Status::InvalidArgument("driver=" + QuotedInput(spec.driver) +
+                                   ": a Reload may read only " + DriverList());
+  }
+  return Status::OK();
+}
+
+Status UntrustedRasterDriver(const RasterDatasetSpec& spec,
+                             const std::string& path, std::string* driver) {
+  if (!spec.driver.empty()) {
+    *driver = spec.driver;
+    return Status::OK();
+  }
+  *driver = IdentifyDriverAmong(path, GDAL_OF_RASTER, kDrivers);
+  if (driver->empty()) {
+    return Status::InvalidArgument("not a raster format a Reload may read (" +
+                                   DriverList() + ")");
+  }
+  return Status::OK();
+}
+
+}  // namespace locator::gis

@@ -1,0 +1,67 @@
+// What the terrain simplifier is asked (TinOptions) and what it certifies
+// (SimplificationStats): shared by TriangulateGrid (triangulate_grid.h) and
+// SimplifyPoints (simplify_points.h).
+//
+// Thread-safety: plain values. The progress callback is called from the
+// building threads, one call at a time.
+
+#ifndef LOCATOR_CORE_TERRAIN_TIN_OPTIONS_H_
+#define LOCATOR_CORE_TERRAIN_TIN_OPTIONS_H_
+
+#include <cstdint>
+#include <functional>
+
+#include "common/status.h"
+
+namespace locator {
+
+// A snapshot of a build in progress.
+struct TinProgress {
+  uint64_t vertices = 0;  // kept so far
+  double max_error = 0;   // the largest error still to be removed
+  double seconds = 0;     // since the build began
+};
+
+struct TinOptions {
+  // E, in the values' units: the TIN is refined until every source sample
+  // lies within E of its linear surface. 0 keeps every sample.
+  double max_error = 0;
+  // At most this many vertices (0: no limit); whichever of max_error and
+  // max_points is reached first ends the build.
+  uint64_t max_points = 0;
+  // How many threads build (0 counts as 1).
+  unsigned threads = 1;
+  // Called at least every progress_interval_s seconds while building, from
+  // the building thread(s), never two calls at once.
+  std::function<void(const TinProgress&)> progress;
+  double progress_interval_s = 5;
+};
+
+// The certificate that GetStats and ListDatasets report (the proto block
+// `simplification`).
+struct SimplificationStats {
+  // Valid source samples read (pixels that are not nodata, or points).
+  uint64_t source_samples = 0;
+  // Valid source samples outside the served domain, so without a value and
+  // not in max_error: for a grid, samples that are the corner of no cell
+  // with four valid corners (a lone pixel, a one-pixel-wide line); for
+  // points, points in a hole or outside the domain's boundary.
+  uint64_t unserved_samples = 0;
+  uint64_t vertices = 0;   // kept
+  uint64_t triangles = 0;  // served
+  // max |z - TIN(x, y)| over every served source sample, measured on the
+  // output TIN with the engine's own linear interpolation (barycentric.h).
+  double max_error = 0;
+  double target_error = 0;  // TinOptions::max_error
+  uint64_t max_points = 0;  // TinOptions::max_points
+  double build_seconds = 0;
+};
+
+// OK if `options` can be honoured; InvalidArgument naming the field and its
+// range otherwise (max_error NaN, negative or infinite; a progress interval
+// that is not positive).
+Status CheckTinOptions(const TinOptions& options);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_TERRAIN_TIN_OPTIONS_H_
