@@ -77,11 +77,12 @@ grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
   return grpc::Status::OK;
 }
 
-// `registry`, or a new one kept in `own` when it is null.
+// `registry`, or, when it is null, the one kept in `own`, made on the first
+// call (a second one would destroy the families of the first).
 prometheus::Registry& RegistryOr(prometheus::Registry* registry,
                                  std::shared_ptr<prometheus::Registry>* own) {
   if (registry != nullptr) return *registry;
-  *own = std::make_shared<prometheus::Registry>();
+  if (*own == nullptr) *own = std::make_shared<prometheus::Registry>();
   return **own;
 }
 
