@@ -5,6 +5,8 @@
 #include <cctype>
 #include <utility>
 
+#include "common/input_text.h"
+
 namespace locator::gis {
 namespace {
 
@@ -78,8 +80,8 @@ OgrSpecParts SplitOgrDatasetSpec(std::string_view spec) {
 Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
   *out = OgrDatasetSpec();
   const auto error = [spec](std::string_view what) {
-    return Status::InvalidArgument("dataset spec '" + std::string(spec) +
-                                   "': " + std::string(what));
+    return Status::InvalidArgument("dataset spec " + QuotedInput(spec) + ": " +
+                                   std::string(what));
   };
   const OgrSpecParts parts = SplitOgrDatasetSpec(spec);
   out->source = std::string(parts.source);
@@ -95,16 +97,17 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
     if (option.empty()) continue;
     const size_t eq = option.find('=');
     if (eq == std::string_view::npos) {
-      return error("option '" + std::string(option) + "' has no '=VALUE'");
+      return error("option " + QuotedInput(option) + " has no '=VALUE'");
     }
     const std::string name(option.substr(0, eq));
     std::string value;
     if (!PercentDecode(option.substr(eq + 1), &value)) {
-      return error("option '" + name + "' has a malformed %-escape");
+      return error("option " + QuotedInput(name) + " has a malformed %-escape");
     }
     if (name == "oo") {
       if (value.find('=') == std::string::npos) {
-        return error("open option '" + value + "' is not NAME=VALUE");
+        return error("open option " + QuotedInput(value) +
+                     " is not NAME=VALUE");
       }
       out->open_options.push_back(std::move(value));
       continue;
@@ -118,10 +121,11 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
     if (name == "a_srs") field = &out->assigned_crs;
     if (name == "driver") field = &out->driver;
     if (field == nullptr) {
-      return error("unknown option '" + name +
-                   "' (known: layer, z, where, breaklines, domain, a_srs, "
+      return error("unknown option " + QuotedInput(name) +
+                   " (known: layer, z, where, breaklines, domain, a_srs, "
                    "oo, driver)");
     }
+    // `name` is one of the known options above.
     if (!field->empty()) return error("option '" + name + "' given twice");
     if (value.empty()) return error("option '" + name + "' is empty");
     *field = std::move(value);

@@ -7,6 +7,9 @@
 //   {"code": <gRPC code number>, "status": "<gRPC code name>",
 //    "message": "<the gRPC message>"}
 //
+// The message is cut to kMaxStatusMessageBytes, as ToGrpcStatus cuts a gRPC
+// one, whichever way the status was made.
+//
 // Thread-safety: a pure function.
 
 #ifndef LOCATOR_SERVER_HTTP_API_ERROR_H_

@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "common/input_text.h"
 #include "common/proto_json.h"
 #include "server/http/api_error.h"
 #include "server/http/grid_json.h"
@@ -19,6 +20,9 @@ namespace locator {
 namespace {
 
 constexpr std::string_view kDatasetsPath = "/v1/datasets";
+// The most of protobuf's complaint about a body that an error shows: room
+// for the field's path and a quoted prefix of the value.
+constexpr size_t kParseErrorBytes = 2 * kQuotedInputBytes;
 
 grpc::Status InvalidArgument(const std::string& message) {
   return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, message);
@@ -30,20 +34,21 @@ HttpResponse JsonAnswer(const google::protobuf::Message& message) {
 }
 
 HttpResponse NoRoute(const HttpRequest& request) {
-  return ApiError(
-      grpc::Status(grpc::StatusCode::NOT_FOUND,
-                   "no API method " + request.method + " " + request.path +
-                       " (GET /v1/datasets, POST /v1/datasets/{name}:locate, "
-                       ":locateBatch, :profile or :grid)"));
+  return ApiError(grpc::Status(
+      grpc::StatusCode::NOT_FOUND,
+      "no API method " + QuotedInput(request.method + " " + request.path) +
+          " (GET /v1/datasets, POST /v1/datasets/{name}:locate, "
+          ":locateBatch, :profile or :grid)"));
 }
 
 HttpResponse MethodNotAllowed(const HttpRequest& request,
                               std::string_view allowed) {
-  HttpResponse response =
-      ApiError(grpc::Status(grpc::StatusCode::UNIMPLEMENTED,
-                            request.method + " is not allowed on " +
-                                request.path + "; use " + std::string(allowed)),
-               405);
+  HttpResponse response = ApiError(
+      grpc::Status(grpc::StatusCode::UNIMPLEMENTED,
+                   QuotedInput(request.method) + " is not allowed on " +
+                       QuotedInput(request.path) + "; use " +
+                       std::string(allowed)),
+      405);
   response.headers.emplace_back("Allow", std::string(allowed));
   return response;
 }
@@ -61,17 +66,18 @@ grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
   if (const auto parsed =
           google::protobuf::util::JsonStringToMessage(body, out, options);
       !parsed.ok()) {
-    // Protobuf adds a picture of the position on further lines.
+    // Protobuf adds a picture of the position on further lines, and quotes
+    // an unknown field or a bad value whole.
     const std::string_view error(parsed.message().data(),
                                  parsed.message().size());
     return InvalidArgument(
-        "the body is not a " + out->GetTypeName() +
-        " in JSON: " + std::string(error.substr(0, error.find('\n'))));
+        "the body is not a " + out->GetTypeName() + " in JSON: " +
+        TruncatedMessage(error.substr(0, error.find('\n')), kParseErrorBytes));
   }
   if (!out->dataset().empty() && out->dataset() != dataset) {
-    return InvalidArgument("the body names dataset '" + out->dataset() +
-                           "' but the path names '" + std::string(dataset) +
-                           "'");
+    return InvalidArgument("the body names dataset " +
+                           QuotedInput(out->dataset()) +
+                           " but the path names " + QuotedInput(dataset));
   }
   out->set_dataset(std::string(dataset));
   return grpc::Status::OK;
