@@ -24,4 +24,12 @@ HttpResponse ApiError(const grpc::Status& status, unsigned http_status) {
                       .body = json.text()};
 }
 
+HttpResponse BusyError(const std::string& message) {
+  HttpResponse answer =
+      ApiError(grpc::Status(grpc::StatusCode::UNAVAILABLE, message), 503);
+  answer.headers.emplace_back("Retry-After",
+                              std::to_string(kRetryAfterSeconds));
+  return answer;
+}
+
 }  // namespace locator

@@ -121,8 +121,10 @@ JsonApi::JsonApi(LocatorService* service, JsonApiOptions options,
                    .Name("locator_http_calls_waiting")
                    .Help("HTTP/JSON API calls queued for a thread, by lane")
                    .Register(RegistryOr(registry, &own_registry_))),
-      cheap_("cheap", kCheapThreads, running_, waiting_),
-      expensive_("expensive", kExpensiveThreads, running_, waiting_) {}
+      cheap_("cheap", kCheapThreads, options.max_waiting_calls, running_,
+             waiting_),
+      expensive_("expensive", kExpensiveThreads, options.max_waiting_calls,
+                 running_, waiting_) {}
 
 JsonApi::~JsonApi() { Shutdown(); }
 
@@ -196,9 +198,16 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
     }
     ApiLane& lane =
         request.body.size() <= route.cheap_up_to_bytes ? cheap_ : expensive_;
-    lane.Submit([this, serve = route.serve, deadline, call = std::move(call),
-                 request = std::move(request),
-                 reply = std::move(reply)]() mutable {
+    lane.Submit([this, &lane, serve = route.serve, deadline,
+                 call = std::move(call), request = std::move(request),
+                 reply = std::move(reply)](bool admitted) mutable {
+      if (!admitted) {
+        reply(BusyError("the " + lane.name() + " lane of this server's " +
+                        "HTTP API has " + std::to_string(lane.max_waiting()) +
+                        " calls waiting, its limit "
+                        "(--http-max-waiting-calls); retry"));
+        return;
+      }
       if (deadline.Passed()) {
         reply(ApiError(deadline.ExceededStatus("waiting for a thread")));
         return;
