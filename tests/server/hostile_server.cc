@@ -8,19 +8,30 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <fstream>
 #include <random>
-#include <sstream>
 
 #include "client/locator_client.h"
 #include "common/gis/ogr_dataset.h"
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/server/http/http_test_client.h"
+#include "tests/testing/process_memory.h"
 
 namespace locator::test {
 namespace {
 
 constexpr int kHillSide = 15;  // 225 points, 400 m apart
+
+// `bytes` of the server's memory as /proc gave them, if they mean something:
+// not under a sanitizer, whose allocator keeps freed memory, and not 0
+// (/proc said nothing).
+std::optional<uint64_t> Meaningful(uint64_t bytes) {
+#if defined(LOCATOR_SANITIZED_SERVER)
+  (void)bytes;
+  return std::nullopt;
+#else
+  return bytes > 0 ? std::optional<uint64_t>(bytes) : std::nullopt;
+#endif
+}
 
 std::unique_ptr<Reference> ReferenceOf(Dataset dataset) {
   std::unique_ptr<Reference> reference;
@@ -232,33 +243,14 @@ Status HostileServer::Restart() {
   return Start();
 }
 
-std::optional<uint64_t> HostileServer::ProcStatus(
-    const std::string& field) const {
-#if defined(LOCATOR_SANITIZED_SERVER)
-  (void)field;
-  return std::nullopt;
-#else
-  if (server_ == nullptr) return std::nullopt;
-  std::ifstream status("/proc/" + std::to_string(server_->process().pid()) +
-                       "/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind(field + ":", 0) != 0) continue;
-    std::istringstream fields(line.substr(field.size() + 1));
-    uint64_t kib = 0;
-    fields >> kib;
-    return kib * 1024;
-  }
-  return std::nullopt;
-#endif
-}
-
 std::optional<uint64_t> HostileServer::ResidentBytes() const {
-  return ProcStatus("VmRSS");
+  if (server_ == nullptr) return std::nullopt;
+  return Meaningful(test::ResidentBytes(server_->process().pid()));
 }
 
 std::optional<uint64_t> HostileServer::PeakResidentBytes() const {
-  return ProcStatus("VmHWM");
+  if (server_ == nullptr) return std::nullopt;
+  return Meaningful(test::PeakResidentBytes(server_->process().pid()));
 }
 
 }  // namespace locator::test

@@ -101,7 +101,6 @@ class HostileServer {
  private:
   HostileServer() = default;
   Status Start();
-  std::optional<uint64_t> ProcStatus(const std::string& field) const;
 
   ScratchDir scratch_;
   TestDatasetFile csv_;

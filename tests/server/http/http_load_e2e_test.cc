@@ -27,6 +27,7 @@
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/prometheus_text.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/testing/process_memory.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {
@@ -50,20 +51,6 @@ constexpr int kGridSide = 1024;
 constexpr int kSlowGridSide = 512;
 // A :locateBatch of this many points answers about 4 MB of JSON.
 constexpr int kLargeBatchPoints = 100000;
-
-// VmRSS of process `pid`, in bytes (0 if unreadable).
-size_t ResidentBytes(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);) {
-    if (line.rfind("VmRSS:", 0) == 0) {
-      std::istringstream fields(line.substr(6));
-      size_t kib = 0;
-      fields >> kib;
-      return kib * 1024;
-    }
-  }
-  return 0;
-}
 
 std::string GridBody(int width, int height, const char* interpolation) {
   return R"({"box": {"min_x": 0, "min_y": 0, "max_x": 1, "max_y": 1},
@@ -100,7 +87,7 @@ TEST(HttpLoadTest, BigCallsLeaveResidentMemoryWhereItWas) {
   // Every thread that a grid touches has run once.
   ASSERT_EQ(Post(port, grid, GridBody(64, 64, "INTERPOLATION_LINEAR")).status,
             200u);
-  const size_t before = ResidentBytes(server->process().pid());
+  const uint64_t before = ResidentBytes(server->process().pid());
   ASSERT_GT(before, 0u);
 
   const HttpReply finished =
