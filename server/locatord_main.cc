@@ -207,7 +207,8 @@ int Main(int argc, char** argv) {
                                .max_connections_per_address =
                                    config.http_max_connections_per_address},
                     .cors_origins = config.http_cors_origins,
-                    .api = {.max_grid_cells = config.http_max_grid_cells},
+                    .api = {.max_grid_cells = config.http_max_grid_cells,
+                            .max_waiting_calls = config.http_max_waiting_calls},
                     .public_status = config.http_public_status});
     interceptors.push_back(status_server->NewInterceptorFactory());
   }

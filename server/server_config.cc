@@ -50,6 +50,7 @@ struct HttpFlags {
   std::vector<std::string> cors_origins;
   std::string max_grid_cells;
   std::string max_connections_per_address;
+  std::string max_waiting_calls;
   bool public_status = false;
 };
 
@@ -205,6 +206,13 @@ void AddHttpFlags(const ServerConfig& defaults, HttpFlags* flags,
               std::to_string(defaults.http_max_connections_per_address)),
       "HTTP connections one client address may hold open; more get 503 "
       "(behind a reverse proxy, every client has the proxy's address)")(
+      "http-max-waiting-calls",
+      po::value(&flags->max_waiting_calls)
+          ->default_value(std::to_string(defaults.http_max_waiting_calls)),
+      "HTTP API calls that may wait for a thread in each lane (cheap: "
+      ":locate and small batches; expensive: :profile, :grid, large "
+      "batches); a call finding that many waiting gets 503 with "
+      "Retry-After")(
       "http-public-status", po::bool_switch(&flags->public_status),
       "/api/stats and /api/edges answer without a token even with "
       "--token-file (they show the dataset's source and coordinates)");
@@ -256,6 +264,13 @@ Status ReadHttpFlags(const HttpFlags& flags, ServerConfig* config) {
                                    flags.max_connections_per_address, 1,
                                    config->http_max_connections,
                                    &config->http_max_connections_per_address);
+      !status.ok()) {
+    return status;
+  }
+  // Each waiting call holds a connection: more could never wait.
+  if (Status status = ParseCountAs(
+          "http-max-waiting-calls", flags.max_waiting_calls, 1,
+          config->http_max_connections, &config->http_max_waiting_calls);
       !status.ok()) {
     return status;
   }

@@ -98,6 +98,9 @@ struct ServerConfig {
   // open; more get 503.
   size_t http_max_connections = 512;
   size_t http_max_connections_per_address = 64;
+  // --http-max-waiting-calls: HTTP API calls that may wait for a thread in
+  // each lane (cheap, expensive); more get 503.
+  size_t http_max_waiting_calls = 64;
   // --http-public-status: /api/stats and /api/edges answer without a
   // token even when tokens are required.
   bool http_public_status = false;

@@ -2,14 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <utility>
 
 #include "common/gis/crs_verdicts.h"
 #include "common/gis/request_crs_policy.h"
+#include "common/input_text.h"
 
 namespace locator::gis {
 namespace {
+
+// The name of CRS `crs`, quoted: a request CRS's name is the client's text.
+std::string QuotedName(const PJ* crs) {
+  const char* name = proj_get_name(crs);
+  return QuotedInput(name != nullptr ? name : "");
+}
 
 // A transformation from `from` to `to`, normalized to x = lon/easting, in
 // the calling thread's request context.
@@ -20,18 +26,15 @@ Status CreateTransformation(const PJ* from, const PJ* to, PjPtr* out) {
     out->reset(proj_normalize_for_visualization(ctx, raw.get()));
   }
   if (*out == nullptr) {
-    return Status::InvalidArgument(
-        std::string("no transformation from '") + proj_get_name(from) +
-        "' to '" + proj_get_name(to) + "': " + LastProjError(ctx));
+    return Status::InvalidArgument("no transformation from " +
+                                   QuotedName(from) + " to " + QuotedName(to) +
+                                   ": " + LastProjError(ctx));
   }
   return Status::OK();
 }
 
 std::string PointText(size_t index, const Point2& p) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "point " << index << " (" << p.x << ", " << p.y << ")";
-  return out.str();
+  return "point " + std::to_string(index) + " " + locator::PointText(p);
 }
 
 bool Transform(PJ* pj, PJ_DIRECTION direction, Point2* p) {

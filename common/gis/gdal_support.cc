@@ -9,18 +9,26 @@
 #include <mutex>
 
 #include "common/gis/proj_objects.h"
+#include "common/input_text.h"
 
 namespace locator::gis {
+namespace {
+
+// `message` cut to kMaxGdalMessageBytes, or "no detail" if GDAL gave none.
+std::string ShortMessage(const char* message) {
+  return message != nullptr && *message != '\0'
+             ? TruncatedMessage(message, kMaxGdalMessageBytes)
+             : "no detail";
+}
+
+}  // namespace
 
 void RegisterGdalDrivers() {
   static std::once_flag registered;
   std::call_once(registered, [] { GDALAllRegister(); });
 }
 
-std::string LastGdalError() {
-  const char* message = CPLGetLastErrorMsg();
-  return message != nullptr && *message != '\0' ? message : "no detail";
-}
+std::string LastGdalError() { return ShortMessage(CPLGetLastErrorMsg()); }
 
 std::string SpatialRefToWkt(const OGRSpatialReference& srs) {
   char* wkt = nullptr;
@@ -103,8 +111,7 @@ void CPL_STDCALL GdalErrorTrap::Handle(CPLErr level, CPLErrorNum /*number*/,
   auto* trap = static_cast<GdalErrorTrap*>(CPLGetErrorHandlerUserData());
   if (level < CE_Failure || trap == nullptr || trap->failed_) return;
   trap->failed_ = true;
-  trap->failure_ =
-      message != nullptr && *message != '\0' ? message : "no detail";
+  trap->failure_ = ShortMessage(message);
 }
 
 }  // namespace locator::gis

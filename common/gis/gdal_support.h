@@ -12,6 +12,7 @@
 
 #include <cpl_error.h>
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <vector>
@@ -26,8 +27,12 @@ namespace locator::gis {
 // Registers GDAL's drivers (GDALAllRegister) the first time it is called.
 void RegisterGdalDrivers();
 
-// The message of the calling thread's last GDAL error, or "no detail" when
-// GDAL left none.
+// The most of a GDAL message a Status shows: GDAL quotes what it could not
+// use (a where clause, a field) whole.
+inline constexpr size_t kMaxGdalMessageBytes = 256;
+
+// The message of the calling thread's last GDAL error (cut to
+// kMaxGdalMessageBytes), or "no detail" when GDAL left none.
 std::string LastGdalError();
 
 // While it lives, GDAL's errors on this thread come here instead of stderr:
@@ -41,8 +46,8 @@ class GdalErrorTrap {
   GdalErrorTrap(const GdalErrorTrap&) = delete;
   GdalErrorTrap& operator=(const GdalErrorTrap&) = delete;
 
-  // The first failure's message since construction or the last call, or ""
-  // if there was none; forgets it.
+  // The first failure's message (cut to kMaxGdalMessageBytes) since
+  // construction or the last call, or "" if there was none; forgets it.
   std::string TakeFailure();
 
  private:

@@ -14,6 +14,7 @@
 #include "common/gis/gdal_support.h"
 #include "common/gis/ogr_constraints.h"
 #include "common/gis/ogr_features.h"
+#include "common/input_text.h"
 
 namespace locator::gis {
 namespace {
@@ -27,8 +28,8 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
   const char* const only_driver[] = {spec.driver.c_str(), nullptr};
   if (!spec.driver.empty() &&
       GDALGetDriverByName(spec.driver.c_str()) == nullptr) {
-    return Status::InvalidArgument(spec.source + ": no GDAL driver '" +
-                                   spec.driver + "' (driver=)");
+    return Status::InvalidArgument(spec.source + ": no GDAL driver " +
+                                   QuotedInput(spec.driver) + " (driver=)");
   }
   CPLErrorReset();
   out->reset(GDALDataset::Open(spec.source.c_str(),
@@ -42,15 +43,14 @@ Status OpenSource(const OgrDatasetSpec& spec, GDALDatasetUniquePtr* out) {
   }
   return Status::InvalidArgument(
       spec.source + ": not a readable OGR vector source" +
-      (spec.driver.empty() ? "" : " for driver " + spec.driver) + ": " +
-      LastGdalError());
+      (spec.driver.empty() ? "" : " for driver " + QuotedInput(spec.driver)) +
+      ": " + LastGdalError());
 }
 
 std::string LayerNames(GDALDataset& source) {
   std::string names;
   for (OGRLayer* layer : source.GetLayers()) {
-    names +=
-        (names.empty() ? "'" : ", '") + std::string(layer->GetName()) + "'";
+    names += (names.empty() ? "" : ", ") + QuotedInput(layer->GetName());
   }
   return names.empty() ? "none" : names;
 }
@@ -69,8 +69,8 @@ Status FindLayer(GDALDataset& source, const std::string& source_name,
   }
   *out = source.GetLayerByName(name.c_str());
   if (*out == nullptr) {
-    return Status::NotFound(source_name + ": no layer '" + name +
-                            "' (layers: " + LayerNames(source) + ")");
+    return Status::NotFound(source_name + ": no layer " + QuotedInput(name) +
+                            " (layers: " + LayerNames(source) + ")");
   }
   return Status::OK();
 }
@@ -81,17 +81,20 @@ Status FieldValue(const FeatureLocation& where, const OGRFeature& feature,
                   int index, double* value) {
   const std::string name = feature.GetFieldDefnRef(index)->GetNameRef();
   if (!feature.IsFieldSetAndNotNull(index)) {
-    return where.Bad(feature.GetFID(), "field '" + name + "' is null");
+    return where.Bad(feature.GetFID(),
+                     "field " + QuotedInput(name) + " is null");
   }
   const char* text = feature.GetFieldAsString(index);
   char* end = nullptr;
   *value = CPLStrtod(text, &end);
   if (end == text || *end != '\0') {
-    return where.Bad(feature.GetFID(),
-                     "field '" + name + "' is '" + text + "', not a number");
+    return where.Bad(feature.GetFID(), "field " + QuotedInput(name) + " is " +
+                                           QuotedInput(text) +
+                                           ", not a number");
   }
   if (!std::isfinite(*value)) {
-    return where.Bad(feature.GetFID(), "field '" + name + "' is non-finite");
+    return where.Bad(feature.GetFID(),
+                     "field " + QuotedInput(name) + " is non-finite");
   }
   return Status::OK();
 }
@@ -106,15 +109,16 @@ class PointReader {
     if (!spec.where.empty()) {
       CPLErrorReset();
       if (layer.SetAttributeFilter(spec.where.c_str()) != OGRERR_NONE) {
-        return Status::InvalidArgument(where_.Prefix() + ": bad where '" +
-                                       spec.where + "': " + LastGdalError());
+        return Status::InvalidArgument(where_.Prefix() + ": bad where " +
+                                       QuotedInput(spec.where) + ": " +
+                                       LastGdalError());
       }
     }
     if (!spec.z_field.empty()) {
       z_index_ = layer.GetLayerDefn()->GetFieldIndex(spec.z_field.c_str());
       if (z_index_ < 0) {
-        return Status::NotFound(where_.Prefix() + ": no field '" +
-                                spec.z_field + "'");
+        return Status::NotFound(where_.Prefix() + ": no field " +
+                                QuotedInput(spec.z_field));
       }
     }
     geometry_z_ = z_index_ < 0 && OGR_GT_HasZ(layer.GetGeomType());
@@ -127,7 +131,8 @@ class PointReader {
     if (out_->points.empty()) {
       return Status::InvalidArgument(
           where_.Prefix() + " has no features" +
-          (spec.where.empty() ? "" : " matching where '" + spec.where + "'"));
+          (spec.where.empty() ? ""
+                              : " matching where " + QuotedInput(spec.where)));
     }
     if (z_index_ < 0 && !geometry_z_) out_->values.clear();
     return Status::OK();
@@ -199,9 +204,9 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
     CPLErrorReset();
     if (srs.SetFromUserInput(spec.assigned_crs.c_str(), options) !=
         OGRERR_NONE) {
-      return Status::InvalidArgument(spec.source + ": unknown CRS '" +
-                                     spec.assigned_crs +
-                                     "' (a_srs): " + LastGdalError());
+      return Status::InvalidArgument(spec.source + ": unknown CRS " +
+                                     QuotedInput(spec.assigned_crs) +
+                                     " (a_srs): " + LastGdalError());
     }
     *wkt = SpatialRefToWkt(srs);
     return Status::OK();
@@ -215,9 +220,11 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
       *wkt = SpatialRefToWkt(*srs);
     } else if (!srs->IsSame(first->GetSpatialRef())) {
       return Status::InvalidArgument(
-          spec.source + ": layer '" + layer->GetName() + "' is in CRS '" +
-          srs->GetName() + "' but layer '" + first->GetName() + "' is in '" +
-          first->GetSpatialRef()->GetName() + "' (a_srs= assigns one CRS)");
+          spec.source + ": layer " + QuotedInput(layer->GetName()) +
+          " is in CRS " + QuotedInput(srs->GetName()) + " but layer " +
+          QuotedInput(first->GetName()) + " is in " +
+          QuotedInput(first->GetSpatialRef()->GetName()) +
+          " (a_srs= assigns one CRS)");
     }
   }
   return Status::OK();

@@ -6,6 +6,7 @@
 #include <thread>
 #include <utility>
 
+#include "common/input_text.h"
 #include "server/core/hilbert.h"
 #include "server/core/locator_factory.h"
 #include "server/core/serving_mesh.h"
@@ -21,9 +22,10 @@ constexpr size_t kBatchChunk = 256;
 
 Status CheckFinite(const Point2& q, const std::string& what) {
   if (IsFinite(q)) return Status::OK();
-  return Status::InvalidArgument(
-      what + " has a non-finite coordinate (x=" + std::to_string(q.x) +
-      ", y=" + std::to_string(q.y) + ")");
+  // In shortest form: std::to_string would print the finite one of
+  // (NaN, 1.8e308) as 309 digits.
+  return Status::InvalidArgument(what + " has a non-finite coordinate " +
+                                 PointText(q));
 }
 
 }  // namespace

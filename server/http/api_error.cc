@@ -1,6 +1,7 @@
 #include "server/http/api_error.h"
 
 #include "common/grpc_code_name.h"
+#include "common/input_text.h"
 #include "server/http/json_writer.h"
 #include "server/status_mapping.h"
 
@@ -14,13 +15,21 @@ HttpResponse ApiError(const grpc::Status& status, unsigned http_status) {
       .Key("status")
       .String(GrpcCodeName(status.error_code()))
       .Key("message")
-      .String(status.error_message())
+      .String(TruncatedMessage(status.error_message(), kMaxStatusMessageBytes))
       .EndObject();
   return HttpResponse{.status = http_status != 0
                                     ? http_status
                                     : HttpStatusFor(status.error_code()),
                       .content_type = kJsonContentType,
                       .body = json.text()};
+}
+
+HttpResponse BusyError(const std::string& message) {
+  HttpResponse answer =
+      ApiError(grpc::Status(grpc::StatusCode::UNAVAILABLE, message), 503);
+  answer.headers.emplace_back("Retry-After",
+                              std::to_string(kRetryAfterSeconds));
+  return answer;
 }
 
 }  // namespace locator

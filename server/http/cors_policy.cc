@@ -5,6 +5,7 @@
 #include <string_view>
 #include <utility>
 
+#include "common/input_text.h"
 #include "server/http/api_error.h"
 
 namespace locator {
@@ -27,8 +28,8 @@ HttpResponse CorsPolicy::Preflight(const HttpRequest& request) const {
   const std::optional<std::string_view> origin = request.Header("origin");
   if (!Allows(origin)) {
     return ApiError(grpc::Status(grpc::StatusCode::PERMISSION_DENIED,
-                                 "origin '" + std::string(origin.value_or("")) +
-                                     "' may not call this server (see "
+                                 "origin " + QuotedInput(origin.value_or("")) +
+                                     " may not call this server (see "
                                      "--http-cors-origin)"));
   }
   HttpResponse response;

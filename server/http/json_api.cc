@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "common/input_text.h"
 #include "common/proto_json.h"
 #include "server/http/api_error.h"
 #include "server/http/grid_json.h"
@@ -19,6 +20,9 @@ namespace locator {
 namespace {
 
 constexpr std::string_view kDatasetsPath = "/v1/datasets";
+// The most of protobuf's complaint about a body that an error shows: room
+// for the field's path and a quoted prefix of the value.
+constexpr size_t kParseErrorBytes = 2 * kQuotedInputBytes;
 
 grpc::Status InvalidArgument(const std::string& message) {
   return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, message);
@@ -30,20 +34,21 @@ HttpResponse JsonAnswer(const google::protobuf::Message& message) {
 }
 
 HttpResponse NoRoute(const HttpRequest& request) {
-  return ApiError(
-      grpc::Status(grpc::StatusCode::NOT_FOUND,
-                   "no API method " + request.method + " " + request.path +
-                       " (GET /v1/datasets, POST /v1/datasets/{name}:locate, "
-                       ":locateBatch, :profile or :grid)"));
+  return ApiError(grpc::Status(
+      grpc::StatusCode::NOT_FOUND,
+      "no API method " + QuotedInput(request.method + " " + request.path) +
+          " (GET /v1/datasets, POST /v1/datasets/{name}:locate, "
+          ":locateBatch, :profile or :grid)"));
 }
 
 HttpResponse MethodNotAllowed(const HttpRequest& request,
                               std::string_view allowed) {
-  HttpResponse response =
-      ApiError(grpc::Status(grpc::StatusCode::UNIMPLEMENTED,
-                            request.method + " is not allowed on " +
-                                request.path + "; use " + std::string(allowed)),
-               405);
+  HttpResponse response = ApiError(
+      grpc::Status(grpc::StatusCode::UNIMPLEMENTED,
+                   QuotedInput(request.method) + " is not allowed on " +
+                       QuotedInput(request.path) + "; use " +
+                       std::string(allowed)),
+      405);
   response.headers.emplace_back("Allow", std::string(allowed));
   return response;
 }
@@ -61,27 +66,29 @@ grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
   if (const auto parsed =
           google::protobuf::util::JsonStringToMessage(body, out, options);
       !parsed.ok()) {
-    // Protobuf adds a picture of the position on further lines.
+    // Protobuf adds a picture of the position on further lines, and quotes
+    // an unknown field or a bad value whole.
     const std::string_view error(parsed.message().data(),
                                  parsed.message().size());
     return InvalidArgument(
-        "the body is not a " + out->GetTypeName() +
-        " in JSON: " + std::string(error.substr(0, error.find('\n'))));
+        "the body is not a " + out->GetTypeName() + " in JSON: " +
+        TruncatedMessage(error.substr(0, error.find('\n')), kParseErrorBytes));
   }
   if (!out->dataset().empty() && out->dataset() != dataset) {
-    return InvalidArgument("the body names dataset '" + out->dataset() +
-                           "' but the path names '" + std::string(dataset) +
-                           "'");
+    return InvalidArgument("the body names dataset " +
+                           QuotedInput(out->dataset()) +
+                           " but the path names " + QuotedInput(dataset));
   }
   out->set_dataset(std::string(dataset));
   return grpc::Status::OK;
 }
 
-// `registry`, or a new one kept in `own` when it is null.
+// `registry`, or, when it is null, the one kept in `own`, made on the first
+// call (a second one would destroy the families of the first).
 prometheus::Registry& RegistryOr(prometheus::Registry* registry,
                                  std::shared_ptr<prometheus::Registry>* own) {
   if (registry != nullptr) return *registry;
-  *own = std::make_shared<prometheus::Registry>();
+  if (*own == nullptr) *own = std::make_shared<prometheus::Registry>();
   return **own;
 }
 
@@ -114,8 +121,10 @@ JsonApi::JsonApi(LocatorService* service, JsonApiOptions options,
                    .Name("locator_http_calls_waiting")
                    .Help("HTTP/JSON API calls queued for a thread, by lane")
                    .Register(RegistryOr(registry, &own_registry_))),
-      cheap_("cheap", kCheapThreads, running_, waiting_),
-      expensive_("expensive", kExpensiveThreads, running_, waiting_) {}
+      cheap_("cheap", kCheapThreads, options.max_waiting_calls, running_,
+             waiting_),
+      expensive_("expensive", kExpensiveThreads, options.max_waiting_calls,
+                 running_, waiting_) {}
 
 JsonApi::~JsonApi() { Shutdown(); }
 
@@ -189,9 +198,16 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
     }
     ApiLane& lane =
         request.body.size() <= route.cheap_up_to_bytes ? cheap_ : expensive_;
-    lane.Submit([this, serve = route.serve, deadline, call = std::move(call),
-                 request = std::move(request),
-                 reply = std::move(reply)]() mutable {
+    lane.Submit([this, &lane, serve = route.serve, deadline,
+                 call = std::move(call), request = std::move(request),
+                 reply = std::move(reply)](bool admitted) mutable {
+      if (!admitted) {
+        reply(BusyError("the " + lane.name() + " lane of this server's " +
+                        "HTTP API has " + std::to_string(lane.max_waiting()) +
+                        " calls waiting, its limit "
+                        "(--http-max-waiting-calls); retry"));
+        return;
+      }
       if (deadline.Passed()) {
         reply(ApiError(deadline.ExceededStatus("waiting for a thread")));
         return;

@@ -35,7 +35,10 @@
 // runs :locate and a :locateBatch of at most kCheapBatchBodyBytes, and
 // "expensive" (kExpensiveThreads) runs the larger batches, :profile and
 // :grid, so that a cheap call never waits behind an expensive one. A large
-// batch also uses the service's batch workers.
+// batch also uses the service's batch workers. A call that finds
+// JsonApiOptions::max_waiting_calls calls queued in its lane is refused
+// with 503 UNAVAILABLE and Retry-After, as a connection over the server's
+// limits is.
 //
 // Owns its lanes. Thread-safety: Handle() and Shutdown() may be called from
 // any thread.
@@ -63,6 +66,10 @@ struct JsonApiOptions {
   // (--http-max-grid-cells): its answer is one JSON text of about 20 bytes
   // per cell, so the default keeps it near 20 MB.
   uint64_t max_grid_cells = uint64_t{1} << 20;
+  // A dataset method that finds this many calls queued in its lane is
+  // refused with UNAVAILABLE (503, Retry-After) instead of queued
+  // (--http-max-waiting-calls).
+  size_t max_waiting_calls = 64;
 };
 
 class JsonApi {

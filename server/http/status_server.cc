@@ -181,9 +181,7 @@ HttpResponse StatusServer::ProblemAnswer(const HttpRequest& request) const {
              " connections of this server are busy; retry";
       break;
   }
-  HttpResponse answer = error(grpc::StatusCode::UNAVAILABLE, busy, 503);
-  answer.headers.emplace_back("Retry-After", "1");
-  return answer;
+  return BusyError(busy);
 }
 
 Status StatusServer::HistoryOf(std::string_view dataset,

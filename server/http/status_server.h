@@ -48,7 +48,7 @@ struct HttpOptions {
   // --http-cors-origin: origins allowed to call the server from web pages
   // (CORS; see CorsPolicy); empty: CORS off.
   std::vector<std::string> cors_origins;
-  // --http-max-grid-cells.
+  // --http-max-grid-cells, --http-max-waiting-calls.
   JsonApiOptions api;
   // --http-public-status: /api/stats and /api/edges answer without a token.
   bool public_status = false;

@@ -123,6 +123,12 @@ TEST_F(EngineTest, LocateRejectsNonFiniteCoordinates) {
     EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
     EXPECT_NE(s.message().find("non-finite"), std::string::npos);
   }
+  // Both coordinates in shortest form, not 309 digits of the finite one.
+  const Status s =
+      engine_->Locate({kNaN, -std::numeric_limits<double>::max()}, &r);
+  EXPECT_EQ(s.message(),
+            "query point has a non-finite coordinate "
+            "(nan, -1.7976931348623157e+308)");
   EXPECT_EQ(engine_->Stats().queries, 0u);
   EXPECT_TRUE(engine_->Locate({1e308, -1e308}, &r).ok());  // huge is fine
   EXPECT_EQ(r.type, LocationType::kOutsideConvexHull);

@@ -1,17 +1,25 @@
 // Fuzzes the HTTP/JSON API's request path: bytes -> an HTTP request to
 // JsonApi (the first byte picks the route and method, the rest is the
 // body) -> JSON parsing, admission, the service's Locate, LocateBatch,
-// Profile or Grid on a small fixed dataset -> the JSON answer.
+// Profile or Grid on a small fixed dataset (or on "utm", the same points
+// in UTM zone 33N with a CRS, so that request CRS strings reach PROJ) ->
+// the JSON answer.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
 // {"code", "status", "message"} whose HTTP status is the code's
-// (HttpStatusFor; 405 for a wrong method); unless a :locate body that
-// protobuf parses, with a finite point and no other dataset, is answered
-// 200 with the engine's own triangle, and every other :locate body 400
-// INVALID_ARGUMENT; and unless a :locateBatch answer has one entry per
-// point, a :profile answer's breakpoints come in order with its crossings
-// counted, and a :grid answer holds every cell its header announces.
+// (HttpStatusFor; 405 for a wrong method), never INTERNAL or UNKNOWN (every
+// fault is the caller's or a limit), with a non-empty message shorter than
+// 1 KiB; unless a :locate body that protobuf parses, with a finite point and no
+// other dataset, is answered 200 with the engine's own triangle, and every
+// other :locate body 400 INVALID_ARGUMENT; and unless a :locateBatch answer has
+// one entry per point, a :profile answer's breakpoints come in order with its
+// crossings counted, and a :grid answer holds every cell its header announces.
+//
+// The seeds and dictionaries/http_json_fuzzer.dict hold issue 26's hostile
+// values: 1e160, 1e300, DBL_MAX, denormals, NaN and infinities as JSON,
+// sample counts past 32 bits, tiny cell sizes and CRS strings that name
+// devices and files.
 
 #include <google/protobuf/struct.pb.h>
 #include <google/protobuf/util/json_util.h>
@@ -26,6 +34,7 @@
 #include <string>
 #include <string_view>
 
+#include "common/gis/proj_objects.h"
 #include "locator/v1/locator.pb.h"
 #include "server/core/dataset.h"
 #include "server/core/engine.h"
@@ -52,6 +61,9 @@ constexpr Route kRoutes[] = {
     {"POST", "/v1/elsewhere"},
     {"POST", "/v1/datasets/default:profile"},
     {"POST", "/v1/datasets/default:grid"},
+    {"POST", "/v1/datasets/utm:locate"},
+    {"POST", "/v1/datasets/utm:locateBatch"},
+    {"POST", "/v1/datasets/utm:profile"},
 };
 
 [[noreturn]] void Fail(const std::string& what, const std::string& body) {
@@ -59,6 +71,11 @@ constexpr Route kRoutes[] = {
                body.c_str());
   std::abort();
 }
+
+// An error message longer than this is a defect (issue 26: messages quote a
+// short prefix of what they were sent, and the server cuts every status
+// message to 1 KiB; inputs are up to 4 KiB).
+constexpr size_t kMaxMessageBytes = 1024;
 
 struct Fixture {
   std::shared_ptr<Engine> engine;
@@ -73,18 +90,33 @@ Fixture* MakeFixture() {
   options.max_profile_crossings = 20000;
   options.max_grid_cells = 4096;
   options.datasets = {DatasetConfig{.spec = "fixed"},
-                      DatasetConfig{"other", "fixed", true}};
+                      DatasetConfig{"other", "fixed", true},
+                      DatasetConfig{"utm", "fixed", true}};
   f->service = std::make_unique<LocatorService>(options);
-  std::unique_ptr<Engine> engine;
+  std::unique_ptr<Engine> engine, utm;
   Dataset dataset = GenerateUniform(200, 3);
   for (const Point2& p : dataset.points) dataset.values.push_back(p.x - p.y);
   if (!Engine::Create(dataset, EngineOptions(), &engine).ok()) {
     Fail("cannot build the engine", "");
   }
-  f->engine = std::move(engine);
-  for (const auto& slot : f->service->datasets().slots()) {
-    slot->Publish(f->engine);
+  // The same points 10 km across around 15°E 49.65°N, in UTM zone 33N.
+  for (Point2& p : dataset.points) {
+    p = {495000 + 10000 * p.x, 5495000 + 10000 * p.y};
   }
+  gis::GuardedProjContext& ctx = gis::ThreadProjContext();
+  gis::PjPtr crs;
+  if (!gis::CreateCrs(ctx, "EPSG:32633", &crs).ok()) {
+    Fail("no EPSG:32633", "");
+  }
+  dataset.crs = proj_as_wkt(ctx.get(), crs.get(), PJ_WKT2_2019, nullptr);
+  if (!Engine::Create(dataset, EngineOptions(), &utm).ok()) {
+    Fail("cannot build the utm engine", "");
+  }
+  f->engine = std::move(engine);
+  const auto& slots = f->service->datasets().slots();
+  slots[0]->Publish(f->engine);
+  slots[1]->Publish(f->engine);
+  slots[2]->Publish(std::shared_ptr<Engine>(std::move(utm)));
   f->api = std::make_unique<JsonApi>(f->service.get());
   return f;
 }
@@ -118,6 +150,15 @@ int CheckError(const HttpResponse& response) {
     Fail("an error is not {code, status, message}", response.body);
   }
   const int code = static_cast<int>(fields.at("code").number_value());
+  const grpc::StatusCode status = static_cast<grpc::StatusCode>(code);
+  if (status == grpc::StatusCode::INTERNAL ||
+      status == grpc::StatusCode::UNKNOWN) {
+    Fail("an error that is not the caller's", response.body);
+  }
+  const std::string& message = fields.at("message").string_value();
+  if (message.empty() || message.size() > kMaxMessageBytes) {
+    Fail("an empty or long message", response.body.substr(0, 2000));
+  }
   if (response.status != 405 &&
       response.status != HttpStatusFor(static_cast<grpc::StatusCode>(code))) {
     Fail("HTTP status " + std::to_string(response.status) + " for code " +
@@ -191,6 +232,7 @@ void FuzzOneInput(const uint8_t* data, size_t size) {
   request.method = route.method;
   request.path = route.path;
   request.body = body;
+  request.headers = {{"content-type", "application/json"}};
   const HttpResponse response = Call(*fixture->api, request);
   if (response.content_type != "application/json") {
     Fail("not JSON: " + response.content_type, response.body);
@@ -218,7 +260,7 @@ void FuzzOneInput(const uint8_t* data, size_t size) {
       Fail(":grid answered another number of cells", response.body);
     }
   } else if (std::string_view(route.path) == "/v1/datasets") {
-    if (ParseAnswer<v1::ListDatasetsResponse>(response).datasets_size() != 2) {
+    if (ParseAnswer<v1::ListDatasetsResponse>(response).datasets_size() != 3) {
       Fail("ListDatasets lost a dataset", response.body);
     }
   }

@@ -4,14 +4,13 @@
 
 #include <atomic>
 #include <chrono>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "tests/server/e2e_support.h"
+#include "tests/testing/process_memory.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {
@@ -31,20 +30,6 @@ constexpr bool kRssShowsBuffering = false;
 #else
 constexpr bool kRssShowsBuffering = true;
 #endif
-
-// VmRSS of process `pid`, in bytes (0 if unreadable).
-size_t ResidentBytes(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);) {
-    if (line.rfind("VmRSS:", 0) == 0) {
-      std::istringstream fields(line.substr(6));
-      size_t kib = 0;
-      fields >> kib;
-      return kib * 1024;
-    }
-  }
-  return 0;
-}
 
 // One stream of the flood and the thread writing to it.
 struct FloodStream {
@@ -92,7 +77,7 @@ void ExpectOthersServed(const test::ServerProcess& server) {
 }  // namespace
 
 grpc::Status FloodWithUnreadStreams(const test::ServerProcess& server) {
-  const size_t rss_before = ResidentBytes(server.pid());
+  const uint64_t rss_before = ResidentBytes(server.pid());
   auto flooder = NewStub(server);  // one connection for the whole flood
   std::vector<std::unique_ptr<FloodStream>> floods;
   for (int i = 0; i < kFloodStreams; ++i) {
@@ -113,7 +98,7 @@ grpc::Status FloodWithUnreadStreams(const test::ServerProcess& server) {
   EXPECT_LT(written, kFloodStreams * kFloodPoints)
       << "the server read every point although no answer was read";
   EXPECT_GT(written, 0u);
-  const size_t rss_after = ResidentBytes(server.pid());
+  const uint64_t rss_after = ResidentBytes(server.pid());
   if (kRssShowsBuffering) {
     EXPECT_LT(rss_after, rss_before + kFloodRssBound)
         << "resident memory grew from " << rss_before << " to " << rss_after

@@ -148,7 +148,8 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
         "--default-deadline-ms", "--max-dataset-points", "--http-listen",
         "--state-dir", "--http-max-body-bytes", "--http-cors-origin",
         "--http-max-grid-cells", "--http-max-connections-per-address",
-        "--http-public-status", "--max-profile-samples"}) {
+        "--http-max-waiting-calls", "--http-public-status",
+        "--max-profile-samples"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
 }
@@ -194,6 +195,9 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
       {"--http-max-connections-per-address", "0"},
       {"--http-max-connections-per-address", "513"},
       {"--http-max-connections-per-address", "many"},
+      {"--http-max-waiting-calls", "0"},
+      {"--http-max-waiting-calls", "513"},
+      {"--http-max-waiting-calls", "-1"},
       {"--max-dataset-points", "2"},
       {"--max-dataset-points", "5000000000"},
       {"--max-concurrent-streams", "0"},
@@ -294,14 +298,16 @@ TEST(ServerConfigTest, HttpLimitAndStatusFlagsMapToTheConfig) {
   EXPECT_EQ(config.http_max_grid_cells, uint64_t{1} << 20);
   EXPECT_EQ(config.http_max_connections, 512u);
   EXPECT_EQ(config.http_max_connections_per_address, 64u);
+  EXPECT_EQ(config.http_max_waiting_calls, 64u);
   EXPECT_FALSE(config.http_public_status);
   ASSERT_TRUE(Parse({"--http-max-grid-cells", "250000",
                      "--http-max-connections-per-address", "512",
-                     "--http-public-status"},
+                     "--http-max-waiting-calls", "3", "--http-public-status"},
                     &config)
                   .ok());
   EXPECT_EQ(config.http_max_grid_cells, 250000u);
   EXPECT_EQ(config.http_max_connections_per_address, 512u);
+  EXPECT_EQ(config.http_max_waiting_calls, 3u);
   EXPECT_TRUE(config.http_public_status);
 }
 

@@ -83,6 +83,10 @@ TEST(CrsTransformerTest, PointOutsideTheAreaOfUseIsNamedByIndex) {
   EXPECT_THAT(status.message(),
               HasSubstr("point 2 (40, 10) is outside the area of use of the "
                         "transformation from 'EPSG:4326' to 'EPSG:32633'"));
+  // Coordinates in shortest form, not 17 digits of 1e300's double.
+  std::vector<Point2> huge = {{0.1, 1e300}};
+  EXPECT_THAT(transformer->ToDataset(huge).message(),
+              HasSubstr("point 0 (0.1, 1e+300) is outside the area of use"));
   // Non-finite points are left for the caller's check.
   std::vector<Point2> nan_point = {{std::nan(""), 45}};
   EXPECT_TRUE(transformer->ToDataset(nan_point).ok());

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace locator::gis {
 namespace {
 
@@ -71,6 +73,35 @@ TEST(OgrDatasetSpecTest, RejectsMalformedOptionsNamingThem) {
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << c.spec;
     EXPECT_THAT(status.message(), HasSubstr(c.message)) << c.spec;
     EXPECT_THAT(status.message(), HasSubstr(c.spec)) << c.spec;
+  }
+}
+
+// What a spec names is quoted short (QuotedInput: 80 bytes, control
+// characters escaped), however long the spec: a Reload's spec is the
+// client's text.
+TEST(OgrDatasetSpecTest, QuotesWhatItNamesShort) {
+  const std::string long_name(4000, 'c');
+  const std::string quoted_long =
+      "'" + std::string(80, 'c') + "...' (4000 bytes)";
+  const struct {
+    std::string spec;
+    std::string message;
+  } kCases[] = {
+      {"a.gpkg?" + long_name + "=1",
+       "dataset spec 'a.gpkg?" + std::string(73, 'c') +
+           "...' (4009 bytes): unknown option " + quoted_long + " (known: "},
+      {"a.gpkg?" + long_name, "option " + quoted_long + " has no '=VALUE'"},
+      {"a.gpkg?" + long_name + "=%zz",
+       "option " + quoted_long + " has a malformed %-escape"},
+      {"a.gpkg?oo=" + long_name, "open option " + quoted_long + " is not"},
+      {"a.gpkg?lay\ner=1", "unknown option 'lay\\x0aer'"},
+  };
+  for (const auto& c : kCases) {
+    OgrDatasetSpec spec;
+    const Status status = ParseOgrDatasetSpec(c.spec, &spec);
+    EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
+    EXPECT_THAT(status.message(), HasSubstr(c.message));
+    EXPECT_LT(status.message().size(), 400u);
   }
 }
 

@@ -353,12 +353,54 @@ TEST_F(OgrDatasetErrorTest, ACorruptGeoPackageFailsNamingTheFeature) {
   EXPECT_TRUE(d.points.empty());
 }
 
+// What a spec names, and the text of a field, is quoted short
+// (QuotedInput: 80 bytes and the size), however long.
+TEST_F(OgrDatasetErrorTest, LongNamesAndValuesAreQuotedShort) {
+  const std::string long_name(4000, 'n');
+  const std::string quoted = "'" + std::string(80, 'n') + "...' (4000 bytes)";
+  const std::string gpkg = MultiLayerGeoPackage("EPSG:32633");
+  const struct {
+    std::string spec;
+    Status::Code code;
+    std::string message;
+  } kCases[] = {
+      {gpkg + "?layer=" + long_name, Status::Code::kNotFound,
+       gpkg + ": no layer " + quoted + " (layers: 'points', "},
+      {gpkg + "?layer=points&z=" + long_name, Status::Code::kNotFound,
+       "layer 'points': no field " + quoted},
+      {geojson_ + "?where=" + long_name + "%3D1",
+       Status::Code::kInvalidArgument,
+       "layer 'pts': bad where '" + std::string(80, 'n') + "...' (4002 bytes)"},
+      {geojson_ + "?a_srs=" + long_name, Status::Code::kInvalidArgument,
+       ": unknown CRS " + quoted + " (a_srs)"},
+      {geojson_ + "?driver=" + long_name, Status::Code::kInvalidArgument,
+       ": no GDAL driver " + quoted + " (driver=)"},
+  };
+  for (const auto& c : kCases) {
+    Dataset d;
+    const Status status = Load(c.spec, &d);
+    EXPECT_EQ(status.code(), c.code) << status.ToString().substr(0, 300);
+    EXPECT_THAT(status.message(), HasSubstr(c.message));
+    EXPECT_LT(status.message().size(), 600u) << status.message();
+  }
+  WriteFile(Path("words.csv"), "x,y,h\n0,0," + long_name + "\n");
+  Dataset d;
+  const Status status =
+      Load("ogr:" + Path("words.csv") +
+               "?oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y&z=h",
+           &d);
+  EXPECT_THAT(status.message(),
+              HasSubstr("layer 'words': feature 1: field 'h' is " + quoted +
+                        ", not a number"));
+}
+
 TEST_F(OgrDatasetErrorTest, TheDriverOptionOpensWithThatDriverOnly) {
   Dataset d;
   ASSERT_TRUE(Load(geojson_ + "?driver=GeoJSON", &d).ok());
   EXPECT_EQ(d.points.size(), kPoints.size());
-  ExpectError(geojson_ + "?driver=GPKG", Status::Code::kInvalidArgument,
-              geojson_ + ": not a readable OGR vector source for driver GPKG");
+  ExpectError(
+      geojson_ + "?driver=GPKG", Status::Code::kInvalidArgument,
+      geojson_ + ": not a readable OGR vector source for driver 'GPKG'");
   ExpectError(geojson_ + "?driver=Nonesuch", Status::Code::kInvalidArgument,
               geojson_ + ": no GDAL driver 'Nonesuch' (driver=)");
 }

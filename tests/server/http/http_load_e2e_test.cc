@@ -4,10 +4,13 @@
 // over the limit is refused without touching memory, and a one-point
 // :locate is answered while natural-neighbour grids occupy the expensive
 // lane (the server reports them in flight on /metrics; the test then checks
-// the order in which the calls finished, not how long they took).
+// the order in which the calls finished, not how long they took), and a
+// call that finds --http-max-waiting-calls calls queued in its lane is
+// refused at once with 503.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <atomic>
 #include <fstream>
@@ -24,6 +27,7 @@
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/prometheus_text.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/testing/process_memory.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {
@@ -47,20 +51,6 @@ constexpr int kGridSide = 1024;
 constexpr int kSlowGridSide = 512;
 // A :locateBatch of this many points answers about 4 MB of JSON.
 constexpr int kLargeBatchPoints = 100000;
-
-// VmRSS of process `pid`, in bytes (0 if unreadable).
-size_t ResidentBytes(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);) {
-    if (line.rfind("VmRSS:", 0) == 0) {
-      std::istringstream fields(line.substr(6));
-      size_t kib = 0;
-      fields >> kib;
-      return kib * 1024;
-    }
-  }
-  return 0;
-}
 
 std::string GridBody(int width, int height, const char* interpolation) {
   return R"({"box": {"min_x": 0, "min_y": 0, "max_x": 1, "max_y": 1},
@@ -97,7 +87,7 @@ TEST(HttpLoadTest, BigCallsLeaveResidentMemoryWhereItWas) {
   // Every thread that a grid touches has run once.
   ASSERT_EQ(Post(port, grid, GridBody(64, 64, "INTERPOLATION_LINEAR")).status,
             200u);
-  const size_t before = ResidentBytes(server->process().pid());
+  const uint64_t before = ResidentBytes(server->process().pid());
   ASSERT_GT(before, 0u);
 
   const HttpReply finished =
@@ -200,6 +190,65 @@ TEST(HttpLoadTest, ALocateIsAnsweredWhileGridsFillTheExpensiveLane) {
     if (grid_finished[i] < locate_finished) ++grids_before_locate;
   }
   EXPECT_LE(grids_before_locate, 1);
+}
+
+// A call that finds --http-max-waiting-calls calls waiting in its lane is
+// refused at once with 503 and Retry-After, as a connection over the limits
+// is, and the other lane still answers.
+TEST(HttpLoadTest, ACallPastTheWaitingLimitGets503) {
+  ScratchDir dir;
+  const std::string points = dir.path() + "/valued.csv";
+  WriteValuedPoints(points, 20000);
+  std::unique_ptr<LocatordWithHttp> server;
+  ASSERT_TRUE(LocatordWithHttp::Start(points,
+                                      {"--default-deadline-ms", "600000",
+                                       "--http-max-waiting-calls", "1"},
+                                      &server)
+                  .ok());
+  const int port = server->http_port();
+  // Grids that take seconds. Their answers are not the point: the server
+  // is killed when the test ends, which ends their exchanges.
+  std::vector<std::thread> grids;
+  struct KillThenJoin {
+    ~KillThenJoin() {
+      server->process().SendSignal(SIGKILL);
+      for (std::thread& grid : *grids) grid.join();
+    }
+    LocatordWithHttp* server;
+    std::vector<std::thread>* grids;
+  } cleanup{server.get(), &grids};
+  const std::string slow_grid =
+      GridBody(kSlowGridSide, kSlowGridSide, "INTERPOLATION_NATURAL_NEIGHBOR");
+  const auto lane_holds = [port](double running, double waiting) {
+    return WaitUntil([=] {
+      return LaneGauge(port, "locator_http_calls_running", "expensive") ==
+                 running &&
+             LaneGauge(port, "locator_http_calls_waiting", "expensive") ==
+                 waiting;
+    });
+  };
+  // One grid runs, then one waits: the expensive lane is full.
+  for (int i = 0; i < 2; ++i) {
+    grids.emplace_back([port, &slow_grid] {
+      HttpReply reply;
+      static_cast<void>(SendHttp(port, "POST", "/v1/datasets/default:grid",
+                                 &reply, slow_grid,
+                                 {{"Content-Type", "application/json"}}));
+    });
+    ASSERT_TRUE(lane_holds(1, i)) << "grid " << i << " never reached the lane";
+  }
+
+  const HttpReply refused =
+      Post(port, "/v1/datasets/default:profile",
+           R"({"vertices": [{"x": 0.1, "y": 0.1}, {"x": 0.9, "y": 0.9}]})");
+  ExpectError(refused, 503, Code::UNAVAILABLE,
+              "the expensive lane of this server's HTTP API has 1 calls "
+              "waiting, its limit (--http-max-waiting-calls); retry");
+  EXPECT_EQ(refused.headers.count("retry-after"), 1u);
+  EXPECT_TRUE(lane_holds(1, 1));
+  const HttpReply located = Post(port, "/v1/datasets/default:locate",
+                                 R"({"point": {"x": 0.5, "y": 0.5}})");
+  EXPECT_EQ(located.status, 200u) << located.body;
 }
 
 }  // namespace

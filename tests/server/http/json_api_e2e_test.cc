@@ -150,7 +150,7 @@ struct ErrorRow {
 };
 
 void PrintTo(const ErrorRow& row, std::ostream* out) {
-  *out << row.method << " " << row.target;
+  *out << row.method << " " << row.target.substr(0, 80);
 }
 
 std::string BatchOf(size_t points) {
@@ -163,8 +163,12 @@ std::string BatchOf(size_t points) {
   return body.str();
 }
 
+// No error message is longer: each quotes what it was sent short.
+constexpr size_t kMaxMessageBytes = 300;
+
 std::vector<ErrorRow> ErrorRows() {
   const std::string locate = "/v1/datasets/terrain:locate";
+  const std::string long_name(6000, 'w');
   return {
       {"MalformedJson", "POST", locate, R"({"point": {"x": 1,)", 400,
        Code::INVALID_ARGUMENT,
@@ -200,13 +204,34 @@ std::vector<ErrorRow> ErrorRows() {
        "the request body is larger than this server's limit of 262144 bytes "
        "(--http-max-body-bytes)"},
       {"UnknownRoute", "GET", "/v1/nope", "", 404, Code::NOT_FOUND,
-       "no API method GET /v1/nope"},
+       "no API method 'GET /v1/nope'"},
       {"UnknownMethodOfADataset", "POST", "/v1/datasets/terrain:warp", "{}",
-       404, Code::NOT_FOUND, "no API method POST /v1/datasets/terrain:warp"},
+       404, Code::NOT_FOUND, "no API method 'POST /v1/datasets/terrain:warp'"},
       {"GetOfAPostMethod", "GET", locate, "", 405, Code::UNIMPLEMENTED,
-       "GET is not allowed on /v1/datasets/terrain:locate; use POST"},
+       "'GET' is not allowed on '/v1/datasets/terrain:locate'; use POST"},
       {"PostOfAGetMethod", "POST", "/v1/datasets", "{}", 405,
-       Code::UNIMPLEMENTED, "POST is not allowed on /v1/datasets; use GET"},
+       Code::UNIMPLEMENTED, "'POST' is not allowed on '/v1/datasets'; use GET"},
+      // What the client sent is quoted short, however long (within the
+      // 8 KiB header and the body limit).
+      {"LongUnknownRoute", "GET", "/v1/" + long_name, "", 404, Code::NOT_FOUND,
+       "no API method 'GET /v1/" + long_name.substr(0, 72) +
+           "...' (6008 bytes)"},
+      {"LongPathOfAPostMethod", "GET", "/v1/datasets/" + long_name + ":locate",
+       "", 405, Code::UNIMPLEMENTED,
+       "'GET' is not allowed on '/v1/datasets/" + long_name.substr(0, 67) +
+           "...' (6020 bytes); use POST"},
+      {"BodyNamesALongDataset", "POST", locate,
+       R"({"point": {"x": 1, "y": 2}, "dataset": ")" + long_name + R"("})", 400,
+       Code::INVALID_ARGUMENT,
+       "the body names dataset '" + long_name.substr(0, 80) +
+           "...' (6000 bytes) but the path names 'terrain'"},
+      {"LongUnknownField", "POST", locate, R"({")" + long_name + R"(": 1})",
+       400, Code::INVALID_ARGUMENT,
+       "the body is not a locator.v1.LocateRequest in JSON: "},
+      {"LongEnumValue", "POST", locate,
+       R"({"point": {"x": 1, "y": 2}, "interpolation": ")" + long_name +
+           R"("})",
+       400, Code::INVALID_ARGUMENT, "(interpolation): invalid value"},
       // What a page of another origin can POST without a CORS preflight.
       {"TextPlainPost", "POST", locate, R"({"point": {"x": 1, "y": 2}})", 415,
        Code::INVALID_ARGUMENT,
@@ -237,6 +262,10 @@ TEST_P(JsonApiErrorTest, AnswersTheGrpcStatusAsHttp) {
   ASSERT_TRUE(
       SendHttp(port(), row.method, row.target, &reply, row.body, headers).ok());
   ExpectError(reply, row.http, row.code, row.message);
+  JsonValue error;
+  ASSERT_TRUE(ParseJson(reply.body, &error).ok());
+  EXPECT_LE(error["message"].string().size(), kMaxMessageBytes)
+      << reply.body.substr(0, 300);
   if (row.http == 405) {
     EXPECT_EQ(reply.headers["allow"], row.method == "GET" ? "POST" : "GET");
   }
