@@ -439,9 +439,10 @@ Status ParseServerConfig(int argc, const char* const argv[],
       "FILE (CSV/XYZ, .node, .poly, .ele, .off, POINTS+CONSTRAINTS.wkt) | "
       "uniform:N[:SEED] | clusters:N:K[:SEED] | "
       "GIS.gpkg|.shp|.geojson|.fgb[?OPTIONS] | ogr:SOURCE[?OPTIONS] "
-      "(OPTIONS: layer=, z=, where=, breaklines=, domain=, a_srs=, oo=) | "
-      "DEM.tif|.vrt|.asc|.img|.hgt...[?OPTIONS] | raster:SOURCE[?OPTIONS] "
-      "(band=, a_srs=) | CLOUD.las[?OPTIONS] | las:PATH[?OPTIONS] "
+      "(OPTIONS: layer=, z=, where=, breaklines=, domain=, a_srs=, oo=, "
+      "driver=) | DEM.tif|.vrt|.asc|.img|.hgt...[?OPTIONS] | "
+      "raster:SOURCE[?OPTIONS] (band=, a_srs=, driver=) | CLOUD.las[?OPTIONS] "
+      "| las:PATH[?OPTIONS] "
       "(classes=2,9, returns=all|first|last); any SPEC also takes "
       "?max_error=E (a TIN within E of every sample; a raster always is "
       "one, E=0 by default) and max_points=N. Default: uniform:1000000:1")(
