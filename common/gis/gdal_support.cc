@@ -73,6 +73,28 @@ std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
   return found == nullptr ? "" : GDALGetDriverShortName(found);
 }
 
+std::string DriverNames(std::span<const char* const> drivers) {
+  std::string list;
+  for (const char* driver : drivers) {
+    list += (list.empty() ? "" : ", ") + std::string(driver);
+  }
+  return list;
+}
+
+Status ChooseUntrustedDriver(const std::string& requested,
+                             const std::string& path, unsigned kind,
+                             std::span<const char* const> drivers,
+                             std::string_view format, std::string* driver) {
+  *driver =
+      requested.empty() ? IdentifyDriverAmong(path, kind, drivers) : requested;
+  if (driver->empty()) {
+    return Status::InvalidArgument("not a " + std::string(format) +
+                                   " a Reload may read (" +
+                                   DriverNames(drivers) + ")");
+  }
+  return Status::OK();
+}
+
 Status VectorFileList(const std::string& source,
                       const std::vector<std::string>& open_options,
                       const std::string& driver,

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/status.h"
@@ -76,6 +77,18 @@ std::vector<std::string> GdalFileList(GDALDataset& dataset);
 // none of them does.
 std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
                                 std::span<const char* const> drivers);
+
+// `drivers` as "A, B, C".
+std::string DriverNames(std::span<const char* const> drivers);
+
+// The driver a request's file at `path` is to be read with: `requested`
+// when the request names one (checked against `drivers` before), else the
+// one among `drivers` IdentifyDriverAmong finds. InvalidArgument "not a
+// FORMAT a Reload may read (DRIVERS)" when none of them does.
+Status ChooseUntrustedDriver(const std::string& requested,
+                             const std::string& path, unsigned kind,
+                             std::span<const char* const> drivers,
+                             std::string_view format, std::string* driver);
 
 // GdalFileList of the vector source `source` opened with `open_options`
 // (NAME=VALUE each) by `driver` (a short name; "" for any), without reading

@@ -38,14 +38,6 @@ constexpr std::array<std::string_view, 26> kOpenOptions = {
     "GEOM_POSSIBLE_NAMES", "KEEP_GEOM_COLUMNS", "HEADERS",
     "EMPTY_STRING_AS_NULL", "MAX_LINE_SIZE"};
 
-std::string DriverList() {
-  std::string list;
-  for (const char* driver : kDrivers) {
-    list += (list.empty() ? "" : ", ") + std::string(driver);
-  }
-  return list;
-}
-
 }  // namespace
 
 Status CheckUntrustedOgrOptions(const OgrDatasetSpec& spec) {
@@ -75,23 +67,16 @@ Status CheckUntrustedOgrOptions(const OgrDatasetSpec& spec) {
       std::none_of(kDrivers.begin(), kDrivers.end(),
                    [&](const char* d) { return spec.driver == d; })) {
     return Status::InvalidArgument("driver=" + spec.driver.substr(0, 40) +
-                                   ": a Reload may read only " + DriverList());
+                                   ": a Reload may read only " +
+                                   DriverNames(kDrivers));
   }
   return Status::OK();
 }
 
 Status UntrustedOgrDriver(const OgrDatasetSpec& spec, const std::string& path,
                           std::string* driver) {
-  if (!spec.driver.empty()) {
-    *driver = spec.driver;
-    return Status::OK();
-  }
-  *driver = IdentifyDriverAmong(path, GDAL_OF_VECTOR, kDrivers);
-  if (driver->empty()) {
-    return Status::InvalidArgument("not a format a Reload may read (" +
-                                   DriverList() + ")");
-  }
-  return Status::OK();
+  return ChooseUntrustedDriver(spec.driver, path, GDAL_OF_VECTOR, kDrivers,
+                               "format", driver);
 }
 
 }  // namespace locator::gis

@@ -15,14 +15,6 @@ namespace {
 constexpr std::array<const char*, 8> kDrivers = {
     "GTiff", "AAIGrid", "EHdr", "SRTMHGT", "USGSDEM", "GSAG", "GSBG", "GS7BG"};
 
-std::string DriverList() {
-  std::string list;
-  for (const char* driver : kDrivers) {
-    list += (list.empty() ? "" : ", ") + std::string(driver);
-  }
-  return list;
-}
-
 }  // namespace
 
 Status CheckUntrustedRasterOptions(const RasterDatasetSpec& spec) {
@@ -35,23 +27,16 @@ Status CheckUntrustedRasterOptions(const RasterDatasetSpec& spec) {
       std::none_of(kDrivers.begin(), kDrivers.end(),
                    [&](const char* d) { return spec.driver == d; })) {
     return Status::InvalidArgument("driver=" + QuotedInput(spec.driver) +
-                                   ": a Reload may read only " + DriverList());
+                                   ": a Reload may read only " +
+                                   DriverNames(kDrivers));
   }
   return Status::OK();
 }
 
 Status UntrustedRasterDriver(const RasterDatasetSpec& spec,
                              const std::string& path, std::string* driver) {
-  if (!spec.driver.empty()) {
-    *driver = spec.driver;
-    return Status::OK();
-  }
-  *driver = IdentifyDriverAmong(path, GDAL_OF_RASTER, kDrivers);
-  if (driver->empty()) {
-    return Status::InvalidArgument("not a raster format a Reload may read (" +
-                                   DriverList() + ")");
-  }
-  return Status::OK();
+  return ChooseUntrustedDriver(spec.driver, path, GDAL_OF_RASTER, kDrivers,
+                               "raster format", driver);
 }
 
 }  // namespace locator::gis
