@@ -1,6 +1,8 @@
 #include "server/core/mesh_check.h"
 
 #include <algorithm>
+#include <cstring>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -130,7 +132,31 @@ Status CheckHull(const ServingMesh::Arrays& a) {
   return Status::OK();
 }
 
+// Equal sizes and bytes; empty spans may have no data pointer.
+template <typename T>
+bool SameBytes(std::span<const T> x, std::span<const T> y) {
+  return x.size() == y.size() &&
+         (x.empty() || std::memcmp(x.data(), y.data(), x.size_bytes()) == 0);
+}
+
 }  // namespace
+
+Status CompareMeshArrays(const ServingMesh::Arrays& got,
+                         const ServingMesh::Arrays& want) {
+  const char* differs =
+      !SameBytes(got.triangles, want.triangles) ? "triangles"
+      : !SameBytes(got.points, want.points)     ? "points"
+      : !SameBytes(got.values, want.values)     ? "values"
+      : !SameBytes(got.ids, want.ids)           ? "ids"
+      : !SameBytes(got.hull, want.hull)         ? "hull"
+      : got.in_domain != want.in_domain         ? "in-domain count"
+      : std::memcmp(&got.box, &want.box, sizeof(got.box)) != 0 ? "box"
+      : got.input_points != want.input_points ? "input point count"
+      : got.digest != want.digest             ? "digest"
+                                              : nullptr;
+  if (differs == nullptr) return Status::OK();
+  return Status::Internal(std::string("the meshes differ in their ") + differs);
+}
 
 Status CheckMeshArrays(const ServingMesh::Arrays& a) {
   if (Status s = CheckVertices(a); !s.ok()) return s;

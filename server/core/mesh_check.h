@@ -1,5 +1,6 @@
 // CheckMeshArrays: whether arrays are safe to serve from: every index a
 // query can follow stays inside the arrays, whatever bytes they came from.
+// CompareMeshArrays: whether two builds made the same mesh, byte for byte.
 // A mesh file's contents pass it before they are served (after its
 // checksum and fingerprint, which vouch that the mesh is the triangulation
 // a build of the dataset wrote).
@@ -31,6 +32,12 @@ namespace locator {
 // ending where the one before it starts (a closed ring). Otherwise
 // InvalidArgument naming the first violation.
 Status CheckMeshArrays(const ServingMesh::Arrays& a);
+
+// OK if `got` and `want` hold the same bytes in every array and the same
+// domain count, box, input count and digest; otherwise Internal naming the
+// first that differs.
+Status CompareMeshArrays(const ServingMesh::Arrays& got,
+                         const ServingMesh::Arrays& want);
 
 }  // namespace locator
 
