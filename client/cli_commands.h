@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "client/locator_client.h"
-#include "common/geometry.h"
 #include "common/gis/raster_writer.h"
+#include "locator/geometry.h"
 
 namespace locator {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "client/cli_commands.h"
-#include "common/status.h"
+#include "locator/status.h"
 #include "locator/v1/locator.pb.h"
 
 namespace locator {

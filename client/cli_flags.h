@@ -14,7 +14,7 @@
 
 #include "client/channel_options.h"
 #include "client/cli_commands.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator {
 

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 #include "locator/v1/locator.pb.h"
 
 namespace locator {

@@ -28,7 +28,7 @@
 
 #include "client/channel_options.h"
 #include "client/health_check.h"
-#include "common/geometry.h"
+#include "locator/geometry.h"
 #include "locator/v1/locator.grpc.pb.h"
 
 namespace locator {

@@ -1,13 +1,13 @@
 // PointsReader: reads query points (x, y) from a text file in chunks, so a
 // file of any size goes through in bounded memory.
 //
-// Format: the dataset text format of server/core/dataset.h, read as queries.
-// One point per line. A line with a comma is comma-separated (spaces around
-// fields allowed); otherwise fields are separated by whitespace. The first
-// two fields are x and y; further fields are ignored, so a dataset file or
-// the CSV that `locator batch` writes replays as it is. '#' starts a comment;
-// blank lines are skipped. The first non-comment line is a header, and is
-// skipped, when its first field is not a number. Every error is
+// Format: the dataset text format of locator/dataset_sources.h, read as
+// queries. One point per line. A line with a comma is comma-separated (spaces
+// around fields allowed); otherwise fields are separated by whitespace. The
+// first two fields are x and y; further fields are ignored, so a dataset file
+// or the CSV that `locator batch` writes replays as it is. '#' starts a
+// comment; blank lines are skipped. The first non-comment line is a header, and
+// is skipped, when its first field is not a number. Every error is
 // InvalidArgument "file:line: what" (not a number, not finite, one field).
 //
 // Owns the open file. Thread-safety: not thread-safe; one reader per thread.
@@ -23,8 +23,8 @@
 #include <string_view>
 #include <vector>
 
-#include "common/geometry.h"
-#include "common/status.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 namespace locator {
 

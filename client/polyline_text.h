@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "common/geometry.h"
-#include "common/status.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 namespace locator {
 

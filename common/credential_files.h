@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator {
 

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
+#include "locator/geometry.h"
 
 namespace locator {
 

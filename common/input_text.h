@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include "common/geometry.h"
+#include "locator/geometry.h"
 
 namespace locator {
 

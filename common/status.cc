@@ -1,4 +1,4 @@
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator {
 

@@ -238,7 +238,7 @@ import json, os, pathlib, sys
 
 work, victim, load_status, summary_path = sys.argv[1:]
 # A fresh self-tuning replica cannot re-tune before retune_every / 4 = 500
-# queries (server/core/self_tuning_locator.cc); a tuning seen earlier was
+# queries (server/core/strategies/self_tuning_locator.cc); a tuning seen earlier was
 # restored from its state directory.
 EARLIEST_OWN_RETUNE = 500
 

@@ -13,7 +13,7 @@
 
 #include "client/load/run_budget.h"
 #include "client/locator_client.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator {
 

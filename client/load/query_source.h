@@ -21,10 +21,10 @@
 #include <string_view>
 #include <vector>
 
-#include "common/geometry.h"
 #include "common/mutex.h"
-#include "common/status.h"
 #include "common/workload.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 namespace locator {
 

@@ -29,9 +29,9 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
 #include "common/gis/proj_objects.h"
-#include "common/status.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

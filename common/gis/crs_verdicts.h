@@ -19,8 +19,8 @@
 #include <string>
 
 #include "common/mutex.h"
-#include "common/status.h"
 #include "common/thread_annotations.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

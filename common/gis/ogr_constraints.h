@@ -9,9 +9,9 @@
 
 #include <ogrsf_frmts.h>
 
-#include "common/dataset.h"
 #include "common/gis/ogr_features.h"
-#include "common/status.h"
+#include "locator/dataset.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -31,9 +31,9 @@
 
 #include <string>
 
-#include "common/dataset.h"
 #include "common/gis/ogr_dataset_spec.h"
-#include "common/status.h"
+#include "locator/dataset.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

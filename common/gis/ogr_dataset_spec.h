@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "common/gis/dataset_spec_options.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

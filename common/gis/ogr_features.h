@@ -15,7 +15,7 @@
 #include <functional>
 #include <string>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "common/gis/proj_file_guard.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -26,7 +26,7 @@
 #include <string_view>
 
 #include "common/gis/dataset_spec_options.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -38,10 +38,10 @@
 #include <string>
 #include <vector>
 
-#include "common/dataset.h"
 #include "common/elevation_grid.h"
 #include "common/gis/raster_dataset_spec.h"
-#include "common/status.h"
+#include "locator/dataset.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

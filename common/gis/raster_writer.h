@@ -34,8 +34,8 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
-#include "common/status.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 class GDALDataset;
 

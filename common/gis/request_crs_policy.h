@@ -23,7 +23,7 @@
 #include <string_view>
 
 #include "common/gis/proj_objects.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -28,7 +28,7 @@
 #include <string>
 
 #include "common/gis/ogr_dataset_spec.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -21,7 +21,7 @@
 #include <string>
 
 #include "common/gis/raster_dataset_spec.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

@@ -32,7 +32,7 @@
 #include <cstddef>
 #include <string_view>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis {
 

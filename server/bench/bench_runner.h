@@ -10,10 +10,10 @@
 #include <span>
 #include <vector>
 
-#include "common/geometry.h"
 #include "common/workload.h"
-#include "server/core/locate_result.h"
-#include "server/core/point_locator.h"
+#include "locator/geometry.h"
+#include "locator/locate_result.h"
+#include "server/core/strategies/point_locator.h"
 
 namespace locator::bench {
 

@@ -14,14 +14,14 @@
 #include <string>
 #include <utility>
 
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
 #include "server/bench/stopwatch.h"
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
-#include "server/core/locator_factory.h"
-#include "server/core/mesh_check.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/mesh/mesh_check.h"
+#include "server/core/strategies/locator_factory.h"
 #include "server/core/tiling/canonical_delaunay.h"
 #include "server/core/tiling/tiled_build.h"
-#include "server/core/triangulation.h"
 
 namespace locator::bench {
 

@@ -17,7 +17,7 @@
 #include <ostream>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::bench {
 

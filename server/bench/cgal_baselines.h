@@ -15,9 +15,9 @@
 #include <cstddef>
 #include <memory>
 
-#include "server/core/dataset.h"
-#include "server/core/locate_result.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "locator/locate_result.h"
+#include "server/core/cgal/triangulation.h"
 
 namespace locator {
 

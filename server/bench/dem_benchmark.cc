@@ -14,12 +14,12 @@
 #include <limits>
 #include <string>
 
-#include "common/dataset.h"
 #include "common/elevation_grid.h"
+#include "locator/dataset.h"
 #include "server/bench/stopwatch.h"
 #include "server/core/terrain/fractal_terrain.h"
-#include "server/core/terrain/reference_greedy.h"
-#include "server/core/terrain/triangulate_grid.h"
+#include "server/core/terrain/grid/triangulate_grid.h"
+#include "server/core/terrain/points/reference_greedy.h"
 
 namespace locator::bench {
 namespace {

@@ -28,9 +28,9 @@
 #include <string_view>
 #include <vector>
 
-#include "common/geometry.h"
-#include "common/status.h"
-#include "server/core/dataset.h"
+#include "locator/dataset_sources.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 namespace locator::bench {
 

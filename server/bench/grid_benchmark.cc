@@ -17,10 +17,10 @@
 
 #include "common/gis/gdal_support.h"
 #include "common/gis/raster_writer.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
 #include "server/bench/stopwatch.h"
 #include "server/bench/surface_terrain.h"
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
 
 namespace locator::bench {
 namespace {

@@ -23,7 +23,7 @@
 #include <ostream>
 #include <string>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::bench {
 

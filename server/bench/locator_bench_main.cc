@@ -37,7 +37,7 @@
 #include "server/bench/build_benchmark.h"
 #include "server/bench/paper_benchmark.h"
 #include "server/bench/scale_benchmark.h"
-#include "server/core/byte_size.h"
+#include "server/core/dataset/byte_size.h"
 
 namespace po = boost::program_options;
 

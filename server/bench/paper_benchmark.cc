@@ -6,11 +6,11 @@
 #include <utility>
 
 #include "common/workload.h"
+#include "locator/dataset_sources.h"
 #include "server/bench/bench_runner.h"
 #include "server/bench/paper_figures.h"
-#include "server/core/dataset.h"
-#include "server/core/locator_factory.h"
-#include "server/core/triangulation.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/strategies/locator_factory.h"
 
 namespace locator::bench {
 

@@ -16,10 +16,10 @@
 #include <optional>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
+#include "locator/tuning_options.h"
 #include "server/bench/bench_report.h"
 #include "server/bench/domain_datasets.h"
-#include "server/core/tuning_options.h"
 
 namespace locator::bench {
 

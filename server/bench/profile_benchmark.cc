@@ -7,9 +7,9 @@
 #include <random>
 #include <vector>
 
+#include "locator/engine.h"
 #include "server/bench/stopwatch.h"
 #include "server/bench/surface_terrain.h"
-#include "server/core/engine.h"
 
 namespace locator::bench {
 namespace {

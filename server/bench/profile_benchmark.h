@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <ostream>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::bench {
 

@@ -11,15 +11,15 @@
 
 #include "common/random.h"
 #include "common/workload.h"
+#include "locator/dataset_sources.h"
 #include "server/bench/bench_runner.h"
 #include "server/bench/cgal_baselines.h"
 #include "server/bench/stopwatch.h"
-#include "server/core/dataset.h"
-#include "server/core/given_mesh.h"
-#include "server/core/locator_factory.h"
+#include "server/core/cgal/given_mesh.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/strategies/locator_factory.h"
 #include "server/core/terrain/fractal_terrain.h"
-#include "server/core/terrain/triangulate_grid.h"
-#include "server/core/triangulation.h"
+#include "server/core/terrain/grid/triangulate_grid.h"
 
 namespace locator::bench {
 

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
+#include "locator/tuning_options.h"
 #include "server/bench/bench_report.h"
-#include "server/core/tuning_options.h"
 
 namespace locator::bench {
 

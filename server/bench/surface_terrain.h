@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/dataset.h"
-#include "common/geometry.h"
-#include "server/core/dataset.h"
+#include "locator/dataset.h"
+#include "locator/dataset_sources.h"
+#include "locator/geometry.h"
 
 namespace locator::bench {
 

@@ -1,4 +1,4 @@
-#include "server/core/engine.h"
+#include "locator/engine.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,9 +7,12 @@
 #include <utility>
 
 #include "common/input_text.h"
-#include "server/core/hilbert.h"
-#include "server/core/locator_factory.h"
-#include "server/core/serving_mesh.h"
+#include "server/core/geometry/hilbert.h"
+#include "server/core/mesh/mesh_cache.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/strategies/locator_factory.h"
+#include "server/core/strategies/point_locator.h"
+#include "server/core/walk_cost_histogram.h"
 
 namespace locator {
 
@@ -35,7 +38,7 @@ Status CheckBatchPoint(const Point2& q, size_t index) {
   return CheckFinite(q, "point " + std::to_string(index));
 }
 
-Engine::Engine() = default;
+Engine::Engine() : walk_costs_(std::make_unique<WalkCostHistogram>()) {}
 Engine::~Engine() = default;
 
 Status Engine::Create(Dataset dataset, const EngineOptions& options,
@@ -90,7 +93,8 @@ Status Engine::Finish(BuiltMesh built, const EngineOptions& options,
                       std::unique_ptr<Engine> e,
                       std::unique_ptr<Engine>* engine) {
   e->mesh_ = std::move(built.mesh);
-  e->facts_ = std::move(built.facts);
+  e->edge_sample_ = std::move(built.facts.edge_sample);
+  e->outline_ = std::move(built.facts.outline);
   Status s = MakePointLocator(options.strategy, *e->mesh_, options.tuning,
                               &e->locator_);
   if (!s.ok()) return s;
@@ -98,11 +102,11 @@ Status Engine::Finish(BuiltMesh built, const EngineOptions& options,
   DatasetInfo& info = e->info_;
   info.input_points = mesh.input_points();
   info.vertices = mesh.num_vertices();
-  info.duplicates_merged = e->facts_.duplicates_merged;
+  info.duplicates_merged = built.facts.duplicates_merged;
   info.triangles = mesh.num_triangles();
   info.all_triangles = mesh.num_faces();
-  info.constraints = e->facts_.constraints;
-  info.holes = e->facts_.holes;
+  info.constraints = built.facts.constraints;
+  info.holes = built.facts.holes;
   info.bounding_box = mesh.bounding_box();
   info.has_values = mesh.has_values();
   info.triangulation_bytes = mesh.MemoryBytes();
@@ -137,7 +141,7 @@ Status Engine::Locate(const Point2& q, LocateResult* result,
   locator_->Locate(q, result);
   Reinterpolate(std::span(&q, 1), how, result);
   Record(1, result->cost.total());
-  walk_costs_.Add(result->cost.faces_visited);
+  walk_costs_->Add(result->cost.faces_visited);
   return Status::OK();
 }
 
@@ -163,7 +167,7 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
     uint64_t cost = 0;
     for (size_t i = 0; i < count; ++i) cost += located[i].cost.total();
     Record(count, cost);
-    walk_costs_.AddAll(std::span(located).first(count));
+    walk_costs_->AddAll(std::span(located).first(count));
     for (size_t i = 0; i < count; ++i) {
       (*results)[order[begin + i]] = located[i];
     }
@@ -185,7 +189,7 @@ EngineStats Engine::Stats() const {
       s.queries ? static_cast<double>(s.total_cost) / s.queries : 0;
   const double recent = last_window_mean_.load(std::memory_order_relaxed);
   s.mean_cost_recent = recent >= 0 ? recent : s.mean_cost_lifetime;
-  s.walk_costs = walk_costs_.Counts();
+  s.walk_costs = walk_costs_->Counts();
   s.tuning = locator_->Summary();
   return s;
 }

@@ -3,11 +3,12 @@
 #include <cstdint>
 #include <string>
 
-#include "server/core/engine.h"
-#include "server/core/profile_trace.h"
-#include "server/core/raster_render.h"
-#include "server/core/serving_mesh.h"
-#include "server/core/surface_value.h"
+#include "locator/engine.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/strategies/point_locator.h"
+#include "server/core/surface/profile_trace.h"
+#include "server/core/surface/raster_render.h"
+#include "server/core/surface/surface_value.h"
 
 namespace locator {
 namespace {

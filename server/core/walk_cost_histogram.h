@@ -16,19 +16,10 @@
 #include <span>
 #include <vector>
 
-#include "server/core/locate_result.h"
+#include "locator/engine_info.h"
+#include "locator/locate_result.h"
 
 namespace locator {
-
-// A snapshot of a WalkCostHistogram.
-struct WalkCostCounts {
-  // counts[i] is the number of walks with upper_bounds[i - 1] < faces <=
-  // upper_bounds[i]; the last count (one more than bounds) is the walks
-  // above every bound.
-  std::vector<uint32_t> upper_bounds;
-  std::vector<uint64_t> counts;
-  uint64_t faces_sum = 0;
-};
 
 class WalkCostHistogram {
  public:

@@ -2,8 +2,8 @@
 
 #include "common/grpc_code_name.h"
 #include "common/input_text.h"
+#include "server/grpc/status_mapping.h"
 #include "server/http/json_writer.h"
-#include "server/status_mapping.h"
 
 namespace locator {
 

@@ -28,7 +28,7 @@
 #include <functional>
 #include <string>
 
-#include "server/worker_pool.h"
+#include "server/serving/worker_pool.h"
 
 namespace locator {
 

@@ -5,10 +5,10 @@
 
 #include "common/proto_json.h"
 #include "locator/v1/locator.pb.h"
-#include "server/grid_stream.h"
+#include "server/grpc/grid_stream.h"
+#include "server/grpc/status_mapping.h"
+#include "server/grpc/surface_convert.h"
 #include "server/http/json_writer.h"
-#include "server/status_mapping.h"
-#include "server/surface_convert.h"
 
 namespace locator {
 namespace {

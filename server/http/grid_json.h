@@ -17,9 +17,9 @@
 
 #include <string>
 
-#include "server/call_deadline.h"
-#include "server/core/engine.h"
-#include "server/core/raster.h"
+#include "locator/engine.h"
+#include "locator/raster.h"
+#include "server/serving/call_deadline.h"
 
 namespace locator {
 

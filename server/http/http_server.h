@@ -54,7 +54,7 @@
 #include <vector>
 
 #include "common/mutex.h"
-#include "common/status.h"
+#include "locator/status.h"
 #include "server/http/connection_table.h"
 
 namespace locator {

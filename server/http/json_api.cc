@@ -11,10 +11,10 @@
 
 #include "common/input_text.h"
 #include "common/proto_json.h"
+#include "server/grpc/status_mapping.h"
+#include "server/grpc/surface_convert.h"
 #include "server/http/api_error.h"
 #include "server/http/grid_json.h"
-#include "server/status_mapping.h"
-#include "server/surface_convert.h"
 
 namespace locator {
 namespace {

@@ -53,11 +53,11 @@
 #include <memory>
 #include <string_view>
 
-#include "server/call_deadline.h"
-#include "server/drain_gate.h"
+#include "server/grpc/locator_service.h"
 #include "server/http/api_lane.h"
 #include "server/http/http_server.h"
-#include "server/locator_service.h"
+#include "server/serving/call_deadline.h"
+#include "server/serving/drain_gate.h"
 
 namespace locator {
 

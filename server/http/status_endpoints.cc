@@ -3,10 +3,10 @@
 #include <utility>
 
 #include "common/proto_json.h"
+#include "server/grpc/status_mapping.h"
 #include "server/http/api_error.h"
 #include "server/http/embedded_files.h"
 #include "server/http/json_writer.h"
-#include "server/status_mapping.h"
 
 namespace locator {
 namespace {

@@ -14,7 +14,7 @@
 //                 [x0, y0, x1, y1]: {"segments": a sample of its edges,
 //                 "boundary": the domain's boundary and holes,
 //                 "breaklines": its breaklines}, each at most 3000 long
-//                 (Engine::kEdgeSampleSize, Engine::kOutlineSize; evenly
+//                 (kEdgeSampleSize, kOutlineSize; evenly
 //                 thinned beyond), the last two empty without constraints;
 //                 503 while loading
 //   /            the status page (index.html); other embedded page files
@@ -47,8 +47,8 @@
 #include <string_view>
 #include <vector>
 
-#include "common/geometry.h"
-#include "common/status.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 #include "server/http/http_server.h"
 #include "server/http/stats_history.h"
 #include "server/metrics/engine_collector.h"

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "server/http/api_error.h"
+#include "server/main/server_runner.h"
 #include "server/metrics/metrics_text.h"
-#include "server/server_runner.h"
 
 namespace locator {
 namespace {

@@ -31,12 +31,12 @@
 #include <string>
 #include <vector>
 
+#include "server/grpc/locator_service.h"
 #include "server/http/cors_policy.h"
 #include "server/http/http_server.h"
 #include "server/http/json_api.h"
 #include "server/http/stats_history.h"
 #include "server/http/status_endpoints.h"
-#include "server/locator_service.h"
 #include "server/metrics/engine_collector.h"
 #include "server/metrics/rpc_metrics.h"
 

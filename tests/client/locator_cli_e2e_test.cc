@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "client/locator_client.h"
+#include "locator/dataset_sources.h"
 #include "locator/v1/locator.pb.h"
-#include "server/core/dataset.h"
 #include "tests/testing/run_binary.h"
 #include "tests/testing/server_process.h"
 #include "tests/testing/test_pki.h"

@@ -16,11 +16,11 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/orientation.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/orientation.h"
+#include "server/core/cgal/triangulation.h"
 #include "server/core/tiling/mesh_vectors.h"
 #include "server/core/tiling/tiled_build.h"
-#include "server/core/triangulation.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/engine.h"
+#include "locator/engine.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
 #include "tests/core/scratch_dir.h"
 
 namespace locator {

@@ -1,5 +1,3 @@
-#include "server/core/dataset.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,6 +5,8 @@
 #include <set>
 #include <string>
 #include <utility>
+
+#include "locator/dataset_sources.h"
 
 namespace locator {
 namespace {

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
 #include "tests/core/scratch_dir.h"
 
 namespace locator {

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "server/core/domain_outline.h"
-#include "server/core/locator_factory.h"
-#include "server/core/segment_distance.h"
-#include "server/core/triangulation.h"
+#include "server/core/cgal/domain_outline.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/geometry/segment_distance.h"
+#include "server/core/strategies/locator_factory.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 

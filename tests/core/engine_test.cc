@@ -1,4 +1,4 @@
-#include "server/core/engine.h"
+#include "locator/engine.h"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/locator_factory.h"
-#include "server/core/triangulation.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/strategies/locator_factory.h"
+#include "server/core/walk_cost_histogram.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {
@@ -300,8 +301,8 @@ TEST_F(EngineTest, StatsCountWalkCostsOfUnaryAndBatchQueries) {
 
 TEST_F(EngineTest, EdgeSampleIsBoundedAndLiesInTheBox) {
   const auto& sample = engine_->EdgeSample();
-  EXPECT_LE(sample.size(), Engine::kEdgeSampleSize);
-  EXPECT_GE(sample.size(), Engine::kEdgeSampleSize / 2);
+  EXPECT_LE(sample.size(), kEdgeSampleSize);
+  EXPECT_GE(sample.size(), kEdgeSampleSize / 2);
   const BoundingBox& box = engine_->dataset_info().bounding_box;
   for (const auto& [a, b] : sample) {
     EXPECT_TRUE(box.Contains(a) && box.Contains(b));

@@ -25,11 +25,11 @@
 #include <vector>
 
 #include "common/input_text.h"
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
-#include "server/core/raster.h"
-#include "server/core/triangulation.h"
-#include "server/core/wide_math.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "locator/raster.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/geometry/wide_math.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 

@@ -3,7 +3,7 @@
 // triangles, vertices, digest and facts) and answers as CGAL's locate on
 // it; bad meshes are refused with Triangulation::Build's messages.
 
-#include "server/core/given_mesh.h"
+#include "server/core/cgal/given_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "server/core/engine.h"
-#include "server/core/serving_mesh.h"
-#include "server/core/triangulation.h"
+#include "locator/engine.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/mesh/serving_mesh.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 
@@ -85,7 +85,7 @@ TEST(GivenMeshTest, IsTheMeshTriangulationServes) {
     EXPECT_EQ(given.facts.holes, t->num_holes());
     EXPECT_EQ(given.facts.holes, 1u);
     EXPECT_EQ(given.facts.duplicates_merged, t->duplicates_merged());
-    const DomainOutline outline = OutlineOf(*t, MeshFacts::kOutlineSize);
+    const DomainOutline outline = OutlineOf(*t, kOutlineSize);
     ASSERT_EQ(given.facts.outline.boundary.size(), outline.boundary.size());
     for (size_t k = 0; k < outline.boundary.size(); ++k) {
       for (int i = 0; i < 2; ++i) {

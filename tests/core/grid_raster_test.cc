@@ -2,7 +2,7 @@
 // samples its edge functions put inside (on an open edge: outside), with or
 // without its corners, checked against a test of every sample of its box.
 
-#include "server/core/terrain/grid_raster.h"
+#include "server/core/terrain/grid/grid_raster.h"
 
 #include <gtest/gtest.h>
 

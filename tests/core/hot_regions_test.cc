@@ -1,4 +1,4 @@
-#include "server/core/hot_regions.h"
+#include "server/core/tuning/hot_regions.h"
 
 #include <gtest/gtest.h>
 

@@ -16,7 +16,7 @@
 #include <tuple>
 #include <vector>
 
-#include "server/core/locator_factory.h"
+#include "server/core/strategies/locator_factory.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
-#include "server/core/locate_result.h"
-#include "server/core/point_locator.h"
-#include "server/core/triangulation.h"
+#include "locator/geometry.h"
+#include "locator/locate_result.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/strategies/point_locator.h"
 
 namespace locator::test {
 

@@ -3,7 +3,7 @@
 // reason and rebuilt; the bounds checks catch what a resealed file could
 // smuggle in; the tuning state keeps working beside a mapped mesh.
 
-#include "server/core/mesh_file.h"
+#include "server/core/mesh/mesh_file.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -21,13 +21,13 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/dataset_fingerprint.h"
-#include "server/core/engine.h"
-#include "server/core/file_io.h"
-#include "server/core/mesh_cache.h"
-#include "server/core/mesh_check.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/dataset/dataset_fingerprint.h"
+#include "server/core/dataset/file_io.h"
+#include "server/core/mesh/mesh_cache.h"
+#include "server/core/mesh/mesh_check.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/core/test_datasets.h"
 #include "tests/fuzz/mesh_file_fixture.h"

@@ -1,4 +1,4 @@
-#include "server/core/natural_neighbor.h"
+#include "server/core/geometry/natural_neighbor.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/natural_neighbor_coordinates_2.h>
@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/mesh_walk.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/mesh/mesh_walk.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {

@@ -2,7 +2,7 @@
 // most likely to be wrong: exactly and nearly collinear triples, at every
 // scale from subnormal to near overflow, and triples mixing scales.
 
-#include "server/core/orientation.h"
+#include "server/core/cgal/orientation.h"
 
 #include <gtest/gtest.h>
 

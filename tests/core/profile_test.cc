@@ -15,10 +15,10 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/barycentric.h"
-#include "server/core/profile_trace.h"
-#include "server/core/segment_distance.h"
-#include "server/core/triangulation.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/geometry/barycentric.h"
+#include "server/core/geometry/segment_distance.h"
+#include "server/core/surface/profile_trace.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {

@@ -1,4 +1,4 @@
-#include "server/core/query_histogram.h"
+#include "server/core/tuning/query_histogram.h"
 
 #include <gtest/gtest.h>
 

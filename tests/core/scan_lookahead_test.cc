@@ -1,4 +1,4 @@
-#include "server/core/scan_lookahead.h"
+#include "server/core/mesh/scan_lookahead.h"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "server/core/locator_factory.h"
-#include "server/core/self_tuning_locator.h"
+#include "server/core/strategies/locator_factory.h"
+#include "server/core/strategies/self_tuning_locator.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 #include "tests/testing/wait.h"

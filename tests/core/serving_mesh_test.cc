@@ -3,7 +3,7 @@
 // triangles in-domain first and in Hilbert order; walks on it give CGAL's
 // answers from any start.
 
-#include "server/core/serving_mesh.h"
+#include "server/core/mesh/serving_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -14,10 +14,10 @@
 #include <random>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/hilbert.h"
-#include "server/core/mesh_walk.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/geometry/hilbert.h"
+#include "server/core/mesh/mesh_walk.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {

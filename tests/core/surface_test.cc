@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/engine.h"
-#include "server/core/triangulation.h"
+#include "locator/engine.h"
+#include "server/core/cgal/triangulation.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "common/dataset.h"
 #include "common/elevation_grid.h"
-#include "server/core/engine.h"
+#include "locator/dataset.h"
+#include "locator/engine.h"
 #include "server/core/terrain/fractal_terrain.h"
-#include "server/core/terrain/reference_greedy.h"
-#include "server/core/terrain/triangulate_grid.h"
+#include "server/core/terrain/grid/triangulate_grid.h"
+#include "server/core/terrain/points/reference_greedy.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/terrain_test_support.h"
 #include "tests/core/test_datasets.h"

@@ -13,9 +13,9 @@
 #include <tuple>
 #include <vector>
 
-#include "common/dataset.h"
-#include "server/core/engine.h"
-#include "server/core/terrain/simplify_points.h"
+#include "locator/dataset.h"
+#include "locator/engine.h"
+#include "server/core/terrain/points/simplify_points.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/terrain_test_support.h"
 #include "tests/core/test_datasets.h"

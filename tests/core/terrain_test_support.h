@@ -13,9 +13,9 @@
 #include <memory>
 #include <string>
 
-#include "common/dataset.h"
 #include "common/elevation_grid.h"
-#include "server/core/engine.h"
+#include "locator/dataset.h"
+#include "locator/engine.h"
 #include "server/core/terrain/tin_options.h"
 
 namespace locator::test {

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "common/random.h"
-#include "server/core/locator_factory.h"
+#include "server/core/strategies/locator_factory.h"
 
 namespace locator::test {
 

@@ -15,14 +15,14 @@
 #include <string_view>
 #include <vector>
 
-#include "common/geometry.h"
 #include "common/workload.h"
-#include "server/core/dataset.h"
-#include "server/core/locate_result.h"
-#include "server/core/point_locator.h"
-#include "server/core/serving_mesh.h"
-#include "server/core/triangulation.h"
-#include "server/core/tuning_options.h"
+#include "locator/dataset_sources.h"
+#include "locator/geometry.h"
+#include "locator/locate_result.h"
+#include "locator/tuning_options.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/strategies/point_locator.h"
 
 namespace locator::test {
 

@@ -18,10 +18,10 @@
 #include <tuple>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/mesh_check.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/mesh/mesh_check.h"
 #include "server/core/tiling/canonical_delaunay.h"
-#include "server/core/triangulation.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {
@@ -106,7 +106,7 @@ TEST_P(TiledBuildTest, EqualsTheGlobalCanonicalTriangulation) {
   EXPECT_TRUE(CheckMeshArrays(built.mesh->arrays()).ok());
   EXPECT_EQ(CountNonCanonicalEdges(*built.mesh), 0u);
   EXPECT_EQ(built.facts.duplicates_merged, global->duplicates_merged());
-  const auto sample = global->mesh().SampleEdges(MeshFacts::kEdgeSampleSize);
+  const auto sample = global->mesh().SampleEdges(kEdgeSampleSize);
   ASSERT_EQ(built.facts.edge_sample.size(), sample.size());
   ASSERT_FALSE(sample.empty());
   EXPECT_EQ(std::memcmp(built.facts.edge_sample.data(), sample.data(),

@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
-#include "server/core/locator_factory.h"
-#include "server/core/tiling/sorted_points.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/strategies/locator_factory.h"
+#include "server/core/tiling/cells/sorted_points.h"
 #include "server/core/tiling/tile_triangulation.h"
 #include "server/core/tiling/tiled_build.h"
-#include "server/core/triangulation.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 

@@ -12,15 +12,15 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/hilbert.h"
-#include "server/core/orientation.h"
-#include "server/core/tiling/cell_grid.h"
-#include "server/core/tiling/circumdisk.h"
-#include "server/core/tiling/halo_cells.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/orientation.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/geometry/hilbert.h"
+#include "server/core/tiling/cells/cell_grid.h"
+#include "server/core/tiling/cells/circumdisk.h"
+#include "server/core/tiling/cells/halo_cells.h"
+#include "server/core/tiling/cells/sorted_points.h"
 #include "server/core/tiling/hull_edges.h"
-#include "server/core/tiling/sorted_points.h"
-#include "server/core/triangulation.h"
 #include "tests/core/test_datasets.h"
 
 namespace locator {

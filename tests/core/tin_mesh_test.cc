@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/circle.h"
-#include "server/core/orientation.h"
+#include "server/core/cgal/orientation.h"
+#include "server/core/geometry/circle.h"
 
 namespace locator {
 namespace {

@@ -1,4 +1,4 @@
-#include "server/core/triangulation.h"
+#include "server/core/cgal/triangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -16,8 +16,9 @@
 #include <vector>
 
 #include "common/workload.h"
-#include "server/core/engine.h"
-#include "server/core/file_io.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "server/core/dataset/file_io.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/testing/wait.h"
 

@@ -4,7 +4,7 @@
 // a Status that says why, never a crash. Also checks the committed fuzz
 // seeds still decode.
 
-#include "server/core/tuning_state.h"
+#include "server/core/tuning/tuning_state.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -20,9 +20,9 @@
 #include <string>
 
 #include "common/workload.h"
-#include "server/core/file_io.h"
-#include "server/core/hot_region_tuner.h"
-#include "server/core/self_tuning_locator.h"
+#include "server/core/dataset/file_io.h"
+#include "server/core/strategies/self_tuning_locator.h"
+#include "server/core/tuning/hot_region_tuner.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/fuzz/tuning_state_fixture.h"
 

@@ -36,8 +36,8 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/engine.h"
-#include "server/core/triangulation.h"
+#include "locator/engine.h"
+#include "server/core/cgal/triangulation.h"
 #include "tests/core/locator_checks.h"
 #include "tests/core/test_datasets.h"
 

@@ -31,8 +31,8 @@
 #include <string_view>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/triangulation.h"
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
 
 namespace locator {
 namespace {

@@ -35,12 +35,12 @@
 #include <string_view>
 
 #include "common/gis/proj_objects.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
 #include "locator/v1/locator.pb.h"
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
+#include "server/grpc/locator_service.h"
+#include "server/grpc/status_mapping.h"
 #include "server/http/json_api.h"
-#include "server/locator_service.h"
-#include "server/status_mapping.h"
 
 namespace locator {
 namespace {

@@ -34,12 +34,12 @@
 #include <utility>
 #include <vector>
 
+#include "locator/engine.h"
 #include "locator/v1/locator.pb.h"
-#include "server/batch_locator.h"
-#include "server/core/engine.h"
-#include "server/core/triangulation.h"
-#include "server/proto_convert.h"
-#include "server/status_mapping.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/grpc/proto_convert.h"
+#include "server/grpc/status_mapping.h"
+#include "server/serving/batch_locator.h"
 
 namespace locator {
 namespace {

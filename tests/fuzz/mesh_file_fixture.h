@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/dataset_fingerprint.h"
-#include "server/core/mesh_file.h"
+#include "locator/dataset_sources.h"
+#include "server/core/dataset/dataset_fingerprint.h"
+#include "server/core/mesh/mesh_file.h"
 
 #define XXH_INLINE_ALL
 #include <xxhash.h>

@@ -11,8 +11,8 @@
 #include <memory>
 #include <string>
 
-#include "server/core/mesh_check.h"
-#include "server/core/mesh_file.h"
+#include "server/core/mesh/mesh_check.h"
+#include "server/core/mesh/mesh_file.h"
 #include "tests/fuzz/mesh_file_fixture.h"
 
 namespace {

@@ -15,13 +15,13 @@
 #include <memory>
 #include <string>
 
-#include "server/core/dataset.h"
-#include "server/core/fnv_hash.h"
-#include "server/core/hot_region_tuner.h"
-#include "server/core/self_tuning_locator.h"
-#include "server/core/triangulation.h"
-#include "server/core/tuning_options.h"
-#include "server/core/tuning_state.h"
+#include "locator/dataset_sources.h"
+#include "locator/tuning_options.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/geometry/fnv_hash.h"
+#include "server/core/strategies/self_tuning_locator.h"
+#include "server/core/tuning/hot_region_tuner.h"
+#include "server/core/tuning/tuning_state.h"
 
 namespace locator::fuzz {
 

@@ -11,8 +11,8 @@
 #include <memory>
 #include <string>
 
-#include "server/core/hot_region_tuner.h"
-#include "server/core/tuning_state.h"
+#include "server/core/tuning/hot_region_tuner.h"
+#include "server/core/tuning/tuning_state.h"
 #include "tests/fuzz/tuning_state_fixture.h"
 
 namespace {

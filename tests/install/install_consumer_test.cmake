@@ -28,13 +28,17 @@ function(run step)
 endfunction()
 
 run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(installed
-    include/locator/server/core/engine.h
-    include/locator/common/status.h)
-  if(NOT EXISTS ${prefix}/${installed})
-    message(FATAL_ERROR "install: ${installed} is missing")
-  endif()
-endforeach()
+# Exactly the chosen public headers, and nothing of the machinery.
+set(public_headers dataset.h dataset_sources.h engine.h engine_info.h
+  geometry.h interpolation.h locate_result.h profile.h raster.h status.h
+  tuning_options.h)
+file(GLOB_RECURSE installed RELATIVE ${prefix}/include ${prefix}/include/*)
+list(SORT installed)
+list(TRANSFORM public_headers PREPEND locator/)
+if(NOT installed STREQUAL public_headers)
+  message(FATAL_ERROR "install: the headers are\n  ${installed}\n"
+                      "not the public set\n  ${public_headers}")
+endif()
 file(GLOB_RECURSE configs ${prefix}/*/locatorConfig.cmake)
 if(NOT configs)
   message(FATAL_ERROR "install: no locatorConfig.cmake under ${prefix}")

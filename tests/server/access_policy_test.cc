@@ -1,7 +1,7 @@
 // AccessPolicy's decisions, one row per case of the table in
-// server/access_policy.h.
+// server/serving/access_policy.h.
 
-#include "server/access_policy.h"
+#include "server/serving/access_policy.h"
 
 #include <gtest/gtest.h>
 

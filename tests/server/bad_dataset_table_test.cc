@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/core/dataset_fingerprint.h"
-#include "server/core/mesh_cache.h"
-#include "server/core/mesh_file.h"
+#include "locator/dataset_sources.h"
+#include "server/core/dataset/dataset_fingerprint.h"
+#include "server/core/mesh/mesh_cache.h"
+#include "server/core/mesh/mesh_file.h"
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/server/dataset_table.h"
 

@@ -5,7 +5,7 @@
 // holds a block until the call is interrupted, so that every interruption
 // happens by construction.
 
-#include "server/batch_locator.h"
+#include "server/serving/batch_locator.h"
 
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // simplifier's last progress while simplifying, reported from another
 // thread. (The concurrency label runs it under ThreadSanitizer too.)
 
-#include "server/build_heartbeat.h"
+#include "server/datasets/build_heartbeat.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // its engine and generation, and no other slot sees anything), and the
 // point budget is a total that concurrent claims never exceed.
 
-#include "server/dataset_registry.h"
+#include "server/datasets/dataset_registry.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -19,8 +19,8 @@
 #include <thread>
 #include <vector>
 
-#include "server/core/dataset.h"
-#include "server/point_budget.h"
+#include "locator/dataset_sources.h"
+#include "server/serving/point_budget.h"
 
 namespace locator {
 namespace {

@@ -1,10 +1,10 @@
-// LoadServedDataset (server/dataset_source.h): each spec's kind, its parts
-// for the reload policy, the files each kind reports for the mesh cache's
+// LoadServedDataset (server/datasets/dataset_source.h): each spec's kind, its
+// parts for the reload policy, the files each kind reports for the mesh cache's
 // source keys, the options each kind takes and refuses, a raster always
 // simplified and a point dataset simplified when asked (with the
 // certificate and progress), and a file whose name holds '?' refused.
 
-#include "server/dataset_source.h"
+#include "server/datasets/dataset_source.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

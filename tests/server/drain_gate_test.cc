@@ -1,7 +1,7 @@
 // DrainGate: tickets until Close(), and WaitUntilIdle() tells when the last
 // admitted call has ended (or the deadline passed).
 
-#include "server/drain_gate.h"
+#include "server/serving/drain_gate.h"
 
 #include <gtest/gtest.h>
 

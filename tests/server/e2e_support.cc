@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "server/core/triangulation.h"
+#include "server/core/cgal/triangulation.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {

@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "client/locator_client.h"
-#include "common/geometry.h"
+#include "locator/dataset_sources.h"
+#include "locator/geometry.h"
+#include "locator/locate_result.h"
 #include "locator/v1/locator.grpc.pb.h"
-#include "server/core/dataset.h"
-#include "server/core/locate_result.h"
 #include "tests/testing/server_process.h"
 
 namespace locator {

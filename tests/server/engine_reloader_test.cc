@@ -2,7 +2,7 @@
 // done, and "reload in progress" while a build runs. The builds here are
 // held at a barrier, so every state is observed by construction.
 
-#include "server/engine_reloader.h"
+#include "server/datasets/engine_reloader.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "server/core/dataset.h"
+#include "locator/dataset_sources.h"
 
 namespace locator {
 namespace {

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "client/locator_client.h"
-#include "server/status_mapping.h"
+#include "server/grpc/status_mapping.h"
 #include "tests/server/http/json_value.h"
 
 namespace locator::test {

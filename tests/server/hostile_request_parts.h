@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
+#include "locator/geometry.h"
 #include "locator/v1/locator.pb.h"
 #include "tests/server/hostile_expect.h"
 #include "tests/server/hostile_oracle.h"

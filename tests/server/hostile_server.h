@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/server/e2e_support.h"

@@ -1,7 +1,7 @@
 // LocateStreamState driven directly, without gRPC: the operations it asks
 // for after each event, for every way a stream ends.
 
-#include "server/locate_stream_state.h"
+#include "server/grpc/locate_stream_state.h"
 
 #include <gtest/gtest.h>
 

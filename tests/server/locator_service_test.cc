@@ -4,7 +4,7 @@
 // engine they started with (a stream keeps it for its whole life), calls
 // started after it use the new one.
 
-#include "server/locator_service.h"
+#include "server/grpc/locator_service.h"
 
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "server/core/dataset.h"
+#include "locator/dataset_sources.h"
 #include "tests/server/e2e_support.h"
 #include "tests/server/in_process_server.h"
 

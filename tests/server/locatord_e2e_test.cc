@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/engine.h"
+#include "locator/engine.h"
 #include "tests/server/e2e_support.h"
 
 namespace locator::test {

@@ -1,7 +1,7 @@
 // ReloadPolicy: the configured dataset always; generator specs and files
 // inside --reload-dir only with one; every other spec refused alike.
 
-#include "server/reload_policy.h"
+#include "server/datasets/reload_policy.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "common/credential_files.h"
-#include "server/server_config.h"
+#include "server/config/server_config.h"
 #include "tests/testing/test_pki.h"
 
 namespace locator {

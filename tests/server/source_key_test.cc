@@ -1,9 +1,9 @@
-// Source keys (server/source_key.h): what a key records round-trips
+// Source keys (server/datasets/source_key.h): what a key records round-trips
 // exactly; a key of another spec, a damaged key and a truncated one are
 // refused naming the file; a file replaced, written, removed or a side-car
 // that appears is noticed, and an untouched file is not.
 
-#include "server/source_key.h"
+#include "server/datasets/source_key.h"
 
 #include <fcntl.h>
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-#include "server/stats_redaction.h"
+#include "server/serving/stats_redaction.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // destructor runs every task already queued before it joins (the first two
 // tests destroy the pool right after queueing).
 
-#include "server/worker_pool.h"
+#include "server/serving/worker_pool.h"
 
 #include <gtest/gtest.h>
 

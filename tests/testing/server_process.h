@@ -28,7 +28,7 @@
 
 #include "client/channel_options.h"
 #include "client/health_check.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::test {
 

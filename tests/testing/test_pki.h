@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "client/channel_options.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::test {
 

@@ -23,7 +23,7 @@
 
 #include "common/gis/las/las_header.h"
 #include "common/gis/las/las_input.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis::las {
 

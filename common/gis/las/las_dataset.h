@@ -16,9 +16,9 @@
 
 #include <string>
 
-#include "common/dataset.h"
 #include "common/gis/las/las_points.h"
-#include "common/status.h"
+#include "locator/dataset.h"
+#include "locator/status.h"
 
 namespace locator::gis::las {
 

@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "common/gis/las/las_input.h"
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::gis::las {
 

@@ -14,11 +14,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "common/dataset.h"
 #include "common/gis/las/las_dataset_spec.h"
 #include "common/gis/las/las_header.h"
 #include "common/gis/las/las_input.h"
-#include "common/status.h"
+#include "locator/dataset.h"
+#include "locator/status.h"
 
 namespace locator::gis::las {
 

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "server/bench/noop/noop_services.h"
-#include "server/server_config.h"
-#include "server/server_runner.h"
+#include "server/config/server_config.h"
+#include "server/main/server_runner.h"
 
 namespace locator {
 namespace {

@@ -1,7 +1,7 @@
 #include "server/bench/noop/noop_services.h"
 
-#include "server/locate_stream_reactor.h"
-#include "server/proto_convert.h"
+#include "server/grpc/locate_stream_reactor.h"
+#include "server/grpc/proto_convert.h"
 
 namespace locator {
 namespace {

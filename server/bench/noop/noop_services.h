@@ -17,10 +17,10 @@
 #include <chrono>
 
 #include "locator/bench/v1/nested_batch.grpc.pb.h"
+#include "locator/locate_result.h"
 #include "locator/v1/locator.grpc.pb.h"
-#include "server/batch_locator.h"
-#include "server/core/locate_result.h"
-#include "server/server_config.h"
+#include "server/config/server_config.h"
+#include "server/serving/batch_locator.h"
 
 namespace locator {
 

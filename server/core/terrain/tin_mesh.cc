@@ -3,7 +3,7 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/circle.h"
+#include "server/core/geometry/circle.h"
 
 namespace locator {
 

@@ -31,8 +31,8 @@
 #include <span>
 #include <vector>
 
-#include "common/geometry.h"
-#include "server/core/orientation.h"
+#include "locator/geometry.h"
+#include "server/core/cgal/orientation.h"
 #include "server/core/terrain/pod_array.h"
 
 namespace locator {

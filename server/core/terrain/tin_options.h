@@ -11,7 +11,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "common/status.h"
+#include "locator/engine_info.h"
+#include "locator/status.h"
 
 namespace locator {
 
@@ -35,26 +36,6 @@ struct TinOptions {
   // the building thread(s), never two calls at once.
   std::function<void(const TinProgress&)> progress;
   double progress_interval_s = 5;
-};
-
-// The certificate that GetStats and ListDatasets report (the proto block
-// `simplification`).
-struct SimplificationStats {
-  // Valid source samples read (pixels that are not nodata, or points).
-  uint64_t source_samples = 0;
-  // Valid source samples outside the served domain, so without a value and
-  // not in max_error: for a grid, samples that are the corner of no cell
-  // with four valid corners (a lone pixel, a one-pixel-wide line); for
-  // points, points in a hole or outside the domain's boundary.
-  uint64_t unserved_samples = 0;
-  uint64_t vertices = 0;   // kept
-  uint64_t triangles = 0;  // served
-  // max |z - TIN(x, y)| over every served source sample, measured on the
-  // output TIN with the engine's own linear interpolation (barycentric.h).
-  double max_error = 0;
-  double target_error = 0;  // TinOptions::max_error
-  uint64_t max_points = 0;  // TinOptions::max_points
-  double build_seconds = 0;
 };
 
 // OK if `options` can be honoured; InvalidArgument naming the field and its

@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "server/core/orientation.h"
-#include "server/core/serving_mesh.h"
+#include "server/core/cgal/orientation.h"
+#include "server/core/mesh/serving_mesh.h"
 
 namespace locator {
 

@@ -10,8 +10,8 @@
 #include <cstddef>
 #include <span>
 
-#include "common/geometry.h"
-#include "common/status.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
 
 namespace locator {
 

@@ -6,7 +6,7 @@
 #include <array>
 #include <tuple>
 
-#include "server/core/orientation.h"
+#include "server/core/cgal/orientation.h"
 
 namespace locator {
 

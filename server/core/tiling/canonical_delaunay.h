@@ -37,8 +37,8 @@
 
 #include <cstddef>
 
-#include "common/geometry.h"
-#include "server/core/serving_mesh.h"
+#include "locator/geometry.h"
+#include "server/core/mesh/serving_mesh.h"
 
 namespace locator {
 

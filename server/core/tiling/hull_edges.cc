@@ -5,8 +5,8 @@
 #include <tuple>
 #include <utility>
 
-#include "server/core/orientation.h"
-#include "server/core/tiling/parallel.h"
+#include "server/core/cgal/orientation.h"
+#include "server/core/tiling/cells/parallel.h"
 
 namespace locator {
 

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "common/geometry.h"
+#include "locator/geometry.h"
 
 namespace locator {
 

@@ -6,11 +6,11 @@
 #include <tuple>
 #include <utility>
 
-#include "server/core/fnv_hash.h"
+#include "server/core/geometry/fnv_hash.h"
 #include "server/core/tiling/build_checks.h"
+#include "server/core/tiling/cells/parallel.h"
+#include "server/core/tiling/cells/radix_sort.h"
 #include "server/core/tiling/mesh_vectors.h"
-#include "server/core/tiling/parallel.h"
-#include "server/core/tiling/radix_sort.h"
 
 namespace locator {
 

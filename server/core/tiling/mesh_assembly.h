@@ -27,9 +27,9 @@
 #include <span>
 #include <vector>
 
-#include "common/status.h"
-#include "server/core/serving_mesh.h"
-#include "server/core/tiling/sorted_points.h"
+#include "locator/status.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/tiling/cells/sorted_points.h"
 #include "server/core/tiling/tile_triangulation.h"
 
 namespace locator {

@@ -9,9 +9,9 @@
 
 #include <cstdint>
 
-#include "common/geometry.h"
-#include "server/core/serving_mesh.h"
-#include "server/core/tiling/large_vector.h"
+#include "locator/geometry.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/tiling/cells/large_vector.h"
 
 namespace locator {
 

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <string>
 
-#include "server/core/tiling/circumdisk.h"
+#include "server/core/tiling/cells/circumdisk.h"
 
 namespace locator {
 

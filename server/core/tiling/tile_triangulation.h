@@ -28,13 +28,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/status.h"
-#include "server/core/serving_mesh.h"
-#include "server/core/tiling/cell_grid.h"
-#include "server/core/tiling/cell_source.h"
-#include "server/core/tiling/halo_cells.h"
+#include "locator/status.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/tiling/cells/cell_grid.h"
+#include "server/core/tiling/cells/cell_source.h"
+#include "server/core/tiling/cells/halo_cells.h"
+#include "server/core/tiling/cells/large_vector.h"
 #include "server/core/tiling/hull_edges.h"
-#include "server/core/tiling/large_vector.h"
 
 namespace locator {
 

@@ -10,13 +10,13 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/serving_mesh.h"
+#include "server/core/mesh/serving_mesh.h"
 #include "server/core/tiling/build_checks.h"
-#include "server/core/tiling/halo_cells.h"
+#include "server/core/tiling/cells/halo_cells.h"
+#include "server/core/tiling/cells/parallel.h"
+#include "server/core/tiling/cells/sorted_points.h"
 #include "server/core/tiling/hull_edges.h"
 #include "server/core/tiling/mesh_assembly.h"
-#include "server/core/tiling/parallel.h"
-#include "server/core/tiling/sorted_points.h"
 #include "server/core/tiling/tile_triangulation.h"
 
 namespace locator {
@@ -126,7 +126,7 @@ Status BuildTiledMesh(std::span<const Point2> points,
       !s.ok()) {
     return s;
   }
-  built.facts.edge_sample = built.mesh->SampleEdges(MeshFacts::kEdgeSampleSize);
+  built.facts.edge_sample = built.mesh->SampleEdges(kEdgeSampleSize);
   *out = std::move(built);
   stats->assembly_seconds = SecondsSince(start);
   return Status::OK();

@@ -27,9 +27,9 @@
 #include <cstddef>
 #include <span>
 
-#include "common/geometry.h"
-#include "common/status.h"
-#include "server/core/mesh_file.h"
+#include "locator/geometry.h"
+#include "locator/status.h"
+#include "server/core/mesh/mesh_file.h"
 
 namespace locator {
 

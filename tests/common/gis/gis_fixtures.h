@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
+#include "locator/geometry.h"
 
 namespace locator::gis::testing {
 

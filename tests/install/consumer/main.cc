@@ -7,9 +7,9 @@
 #include <string>
 #include <utility>
 
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
-#include "server/core/locate_result.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "locator/locate_result.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "server/status_mapping.h"
+#include "server/grpc/status_mapping.h"
 #include "tests/server/http/json_value.h"
 
 namespace locator {

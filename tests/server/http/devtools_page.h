@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 #include "tests/server/http/json_value.h"
 
 namespace locator::test {

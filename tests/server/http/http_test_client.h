@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::test {
 

@@ -14,7 +14,7 @@
 #include <variant>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 
 namespace locator::test {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "common/status.h"
+#include "locator/status.h"
 #include "locator/v1/locator.grpc.pb.h"
 #include "tests/server/http/json_value.h"
 #include "tests/testing/server_process.h"

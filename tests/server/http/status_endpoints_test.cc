@@ -9,12 +9,12 @@
 #include <string_view>
 #include <vector>
 
-#include "server/access_policy.h"
-#include "server/core/dataset.h"
-#include "server/core/engine.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "server/grpc/proto_convert.h"
 #include "server/metrics/engine_collector.h"
 #include "server/metrics/metrics_text.h"
-#include "server/proto_convert.h"
+#include "server/serving/access_policy.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/prometheus_text.h"
 

@@ -1,0 +1,126 @@
+#include "server/core/mesh/mesh_cache.h"
+
+#include <cerrno>
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <utility>
+
+#include "common/freed_memory.h"
+#include "server/core/cgal/given_mesh.h"
+#include "server/core/cgal/triangulation.h"
+#include "server/core/dataset/dataset_fingerprint.h"
+#include "server/core/dataset/file_io.h"
+#include "server/core/tiling/tiled_build.h"
+
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
+namespace locator {
+namespace {
+
+std::string GeneratedKeyPath(const std::string& dir,
+                             const GeneratorSpec& spec) {
+  const std::string key = spec.CanonicalKey();
+  return DigestNamedPath(dir, "generated-", XXH3_64bits(key.data(), key.size()),
+                         ".key");
+}
+
+}  // namespace
+
+std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
+  return DigestNamedPath(dir, "mesh-", fingerprint, ".mesh");
+}
+
+Status TriangulateMesh(const Dataset& dataset, unsigned threads,
+                       BuiltMesh* out) {
+  // A mesh served as given needs no constraint hierarchy.
+  if (IsGivenMesh(dataset)) return BuildGivenMesh(dataset, out);
+  if (dataset.constraints.empty()) {
+    TiledBuildOptions options;
+    options.threads = threads;
+    const Status s =
+        BuildTiledMesh(dataset.points, dataset.values, options, out);
+    // The tiles' CGAL triangulations were many small blocks, now freed.
+    ReturnFreedMemory();
+    return s;
+  }
+  std::unique_ptr<Triangulation> t;
+  if (Status s = Triangulation::Build(dataset, &t); !s.ok()) return s;
+  out->mesh = t->shared_mesh();
+  out->facts.constraints = t->num_constraints();
+  out->facts.holes = t->num_holes();
+  out->facts.duplicates_merged = t->duplicates_merged();
+  out->facts.outline = OutlineOf(*t, kOutlineSize);
+  out->facts.edge_sample = out->mesh->SampleEdges(kEdgeSampleSize);
+  // The engine serves from the mesh alone. CGAL's faces and vertices are
+  // many small blocks that malloc keeps after they are freed; trimming
+  // returns their pages, so the process shrinks to about the mesh.
+  t.reset();
+  ReturnFreedMemory();
+  return Status::OK();
+}
+
+Status MapCachedMesh(const std::string& cache_dir, uint64_t fingerprint,
+                     BuiltMesh* out, MeshCacheOutcome* outcome) {
+  *outcome = MeshCacheOutcome();
+  outcome->fingerprint = fingerprint;
+  outcome->path = MeshFilePath(cache_dir, fingerprint);
+  const Status status = MapMeshFile(outcome->path, fingerprint, out);
+  outcome->mapped = status.ok();
+  if (!status.ok() && status.code() != Status::Code::kNotFound) {
+    outcome->load_error = status.message();
+  }
+  return status;
+}
+
+Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
+                      BuiltMesh* out, MeshCacheOutcome* outcome,
+                      unsigned build_threads) {
+  *outcome = MeshCacheOutcome();
+  if (cache_dir.empty()) return TriangulateMesh(dataset, build_threads, out);
+  const uint64_t fingerprint = DatasetFingerprint(dataset);
+  Status status = MapCachedMesh(cache_dir, fingerprint, out, outcome);
+  if (status.ok()) return status;
+  if (status = TriangulateMesh(dataset, build_threads, out); !status.ok()) {
+    return status;
+  }
+  if (const Status saved = WriteMeshFile(outcome->path, fingerprint, *out);
+      !saved.ok()) {
+    outcome->save_error = saved.message();
+  }
+  return Status::OK();
+}
+
+Status FindGeneratedFingerprint(const std::string& cache_dir,
+                                const GeneratorSpec& spec,
+                                uint64_t* fingerprint) {
+  const std::string path = GeneratedKeyPath(cache_dir, spec);
+  std::string text;
+  if (Status s = ReadWholeFile(path, "generated dataset key", &text, 64);
+      !s.ok()) {
+    return s;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const uint64_t value = std::strtoull(text.c_str(), &end, 16);
+  if (text.size() != 17 || errno != 0 || end != text.c_str() + 16 ||
+      *end != '\n') {
+    return Status::InvalidArgument("generated dataset key " + path +
+                                   " is not 16 hex digits and a newline");
+  }
+  *fingerprint = value;
+  return Status::OK();
+}
+
+Status RecordGeneratedFingerprint(const std::string& cache_dir,
+                                  const GeneratorSpec& spec,
+                                  uint64_t fingerprint) {
+  char text[18];
+  std::snprintf(text, sizeof(text), "%016" PRIx64 "\n", fingerprint);
+  return WriteFileAtomically(GeneratedKeyPath(cache_dir, spec),
+                             std::string_view(text, 17));
+}
+
+}  // namespace locator

@@ -1,0 +1,91 @@
+#include "server/core/surface/raster_render.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/input_text.h"
+#include "server/core/geometry/wide_math.h"
+#include "server/core/mesh/mesh_walk.h"
+#include "server/core/surface/surface_value.h"
+
+namespace locator {
+
+Status CheckRasterBox(const BoundingBox& b) {
+  if (!IsFinite(Point2{b.min_x, b.min_y}) ||
+      !IsFinite(Point2{b.max_x, b.max_y})) {
+    return Status::InvalidArgument("the raster's box must be finite");
+  }
+  if (!(b.min_x < b.max_x) || !(b.min_y < b.max_y)) {
+    return Status::InvalidArgument(
+        "the raster's box must have min_x < max_x and min_y < max_y");
+  }
+  return Status::OK();
+}
+
+double RasterSpec::cell_width() const {
+  return Step(box.min_x, box.max_x, width);
+}
+
+double RasterSpec::cell_height() const {
+  return Step(box.min_y, box.max_y, height);
+}
+
+Point2 RasterSpec::CellCentre(uint32_t col, uint32_t row) const {
+  return Point2{GridLine(box.min_x, box.max_x, col + 0.5, width),
+                GridLine(box.max_y, box.min_y, row + 0.5, height)};
+}
+
+Status CheckRasterSpec(const RasterSpec& spec) {
+  const BoundingBox& b = spec.box;
+  if (Status s = CheckRasterBox(b); !s.ok()) return s;
+  if (spec.width == 0 || spec.height == 0) {
+    return Status::InvalidArgument("the raster needs width and height >= 1");
+  }
+  const double cell_width = spec.cell_width();
+  const double cell_height = spec.cell_height();
+  if (!(cell_width > 0) || !(cell_height > 0) || !std::isfinite(cell_width) ||
+      !std::isfinite(cell_height)) {
+    return Status::InvalidArgument(
+        "the raster's cells are not representable: the box " +
+        PointText({b.min_x, b.min_y}) + " - " + PointText({b.max_x, b.max_y}) +
+        " over " + std::to_string(spec.width) + " x " +
+        std::to_string(spec.height) + " cells makes cells of " +
+        NumberText(cell_width) + " x " + NumberText(cell_height) +
+        "; a cell's width and height must be positive doubles, at most " +
+        NumberText(std::numeric_limits<double>::max()));
+  }
+  return Status::OK();
+}
+
+namespace {
+
+// The value at the cell centre q that the walk `w` located, or nodata
+// outside the hull or the domain (a centre on the domain's boundary edge or
+// vertex takes the in-domain side).
+double CellValue(const ServingMesh& mesh, const RasterSpec& spec,
+                 const MeshWalkOutcome& w, const Point2& q) {
+  if (!mesh.has_values()) return spec.nodata;
+  const uint32_t f = ClosedDomainFace(mesh, w);
+  if (f == ServingMesh::kNoFace) return spec.nodata;
+  return ValueAt(mesh, f, q, spec.interpolation);
+}
+
+}  // namespace
+
+void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
+                uint32_t first_row, uint32_t rows, double* out) {
+  uint32_t row_start = hint;
+  for (uint32_t r = 0; r < rows; ++r) {
+    uint32_t face = row_start;
+    for (uint32_t col = 0; col < spec.width; ++col) {
+      const Point2 q = spec.CellCentre(col, first_row + r);
+      const MeshWalkOutcome w = Walk(mesh, face, q);
+      face = w.face;
+      if (col == 0) row_start = face;
+      *out++ = CellValue(mesh, spec, w, q);
+    }
+  }
+}
+
+}  // namespace locator

@@ -1,0 +1,31 @@
+// RenderRows: fills rows of a raster (see raster.h) from the surface with
+// scanline coherence: each cell's walk starts from the previous cell's
+// triangle, and each row's first walk from the previous row's first
+// triangle, so a cell costs about one orientation test per triangle edge
+// the scan crosses. Exact like every walk: CGAL's orientation_2 decides the
+// triangle, also for centres on edges and vertices.
+//
+// Thread-safety: a pure function over an immutable ServingMesh; threads
+// render disjoint rows at once.
+
+#ifndef LOCATOR_CORE_RASTER_RENDER_H_
+#define LOCATOR_CORE_RASTER_RENDER_H_
+
+#include <cstdint>
+
+#include "locator/raster.h"
+#include "server/core/mesh/serving_mesh.h"
+
+namespace locator {
+
+// Renders rows [first_row, first_row + rows) of `spec` into `out` (rows x
+// spec.width values, row by row, west to east), starting the first walk at
+// face `hint`. Preconditions: CheckRasterSpec(spec).ok(), the rows lie
+// within spec.height, and CheckInterpolation(spec.interpolation) is OK for
+// the mesh's dataset.
+void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
+                uint32_t first_row, uint32_t rows, double* out);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_RASTER_RENDER_H_

@@ -1,0 +1,49 @@
+// The sample of a grid triangle farthest from the triangle's surface, by
+// either measure greedy insertion uses (see grid_refiner.h):
+//   WorstPlaneSample   the plane through the corners in grid coordinates;
+//   WorstServedSample  the engine's own interpolation in dataset
+//                      coordinates (Barycentric; EdgeBarycentric on an
+//                      edge), with the corners in the order the output
+//                      lists them.
+// Corners are never the answer: they are vertices, exact by construction.
+//
+// Thread-safety: pure functions.
+
+#ifndef LOCATOR_CORE_TERRAIN_GRID_ERROR_H_
+#define LOCATOR_CORE_TERRAIN_GRID_ERROR_H_
+
+#include <array>
+#include <cstdint>
+
+#include "common/elevation_grid.h"
+#include "server/core/terrain/grid/grid_domain.h"
+
+namespace locator {
+
+struct WorstSample {
+  static constexpr uint64_t kNone = ~uint64_t{0};
+  double error = 0;
+  uint64_t sample = kNone;  // index into ElevationGrid::values
+};
+
+// Whether the output lists a grid triangle's corners in another order than
+// the mesh: the grid-to-dataset transform mirrors when step_x * step_y < 0,
+// and the output is counter-clockwise in dataset coordinates.
+inline bool OutputMirrors(const ElevationGrid& grid) {
+  return (grid.step_x < 0) != (grid.step_y < 0);
+}
+
+// The worst sample of the triangle `c` (counter-clockwise in grid
+// coordinates), leaving out those on edge i (corner i to i + 1) when
+// open[i]. error 0 and kNone if it covers no other sample.
+WorstSample WorstPlaneSample(const ElevationGrid& grid,
+                             const std::array<GridPoint, 3>& c,
+                             std::array<bool, 3> open);
+
+// The worst sample of the triangle `c` as the engine serves it.
+WorstSample WorstServedSample(const ElevationGrid& grid,
+                              const std::array<GridPoint, 3>& c);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_TERRAIN_GRID_ERROR_H_

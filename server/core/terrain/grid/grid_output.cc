@@ -1,0 +1,166 @@
+#include "server/core/terrain/grid/grid_output.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "server/core/cgal/orientation.h"
+#include "server/core/mesh/serving_mesh.h"
+#include "server/core/terrain/grid/grid_error.h"
+
+namespace locator {
+
+namespace {
+
+constexpr uint32_t kNoVertex = 0xffffffffu;
+
+Status CheckSize(uint64_t vertices, uint64_t triangles) {
+  if (vertices <= ServingMesh::kMaxElements &&
+      triangles <= ServingMesh::kMaxElements) {
+    return Status::OK();
+  }
+  return Status::InvalidArgument(
+      "the TIN has " + std::to_string(vertices) + " vertices and " +
+      std::to_string(triangles) + " triangles; a serving mesh holds at most " +
+      std::to_string(ServingMesh::kMaxElements) +
+      " of each (raise max_error or set max_points)");
+}
+
+// Appends triangle (a, b, c), counter-clockwise in grid coordinates, to
+// out's triangles counter-clockwise in dataset coordinates; InvalidArgument
+// if it is not strictly so there.
+Status AddTriangle(const ElevationGrid& grid, bool mirrors, uint32_t a,
+                   uint32_t b, uint32_t c, Dataset* out) {
+  const std::array<uint32_t, 3> corners =
+      mirrors ? std::array<uint32_t, 3>{a, c, b}
+              : std::array<uint32_t, 3>{a, b, c};
+  const std::vector<Point2>& p = out->points;
+  if (Orientation(p[corners[0]], p[corners[1]], p[corners[2]]) != Side::kLeft) {
+    return Status::InvalidArgument(
+        "placing the samples in dataset coordinates (origin " +
+        std::to_string(grid.origin_x) + ", " + std::to_string(grid.origin_y) +
+        ", step " + std::to_string(grid.step_x) + ", " +
+        std::to_string(grid.step_y) +
+        ") rounds a triangle flat: the step is too small for the origin");
+  }
+  out->constraints.triangles.push_back(corners);
+  return Status::OK();
+}
+
+void StartOutput(const ElevationGrid& grid, Dataset* out) {
+  *out = Dataset();
+  out->crs = grid.crs;
+  out->source = grid.source;
+}
+
+}  // namespace
+
+void SortRowMajor(const ElevationGrid& grid, TinMesh* mesh) {
+  // Vertices by sample index.
+  std::vector<std::pair<uint64_t, uint32_t>> samples(mesh->num_vertices());
+  for (uint32_t v = 0; v < samples.size(); ++v) {
+    const Point2& p = mesh->point(v);
+    samples[v] = {
+        static_cast<uint64_t>(p.y) * grid.width + static_cast<uint64_t>(p.x),
+        v};
+  }
+  std::sort(samples.begin(), samples.end());
+  std::vector<uint32_t> vertices(samples.size());
+  std::vector<uint32_t> rank(samples.size());
+  for (uint32_t k = 0; k < samples.size(); ++k) {
+    vertices[k] = samples[k].second;
+    rank[samples[k].second] = k;
+  }
+  decltype(samples)().swap(samples);
+  // Triangles by their first corner in that order, then by index: sorting
+  // (first << 32 | index) does both.
+  std::vector<uint64_t> keyed(mesh->num_triangles());
+  for (uint32_t t = 0; t < keyed.size(); ++t) {
+    const uint32_t first =
+        std::min({rank[mesh->Corner(t, 0)], rank[mesh->Corner(t, 1)],
+                  rank[mesh->Corner(t, 2)]});
+    keyed[t] = (uint64_t{first} << 32) | t;
+  }
+  std::vector<uint32_t>().swap(rank);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> triangles(keyed.size());
+  for (size_t k = 0; k < keyed.size(); ++k) {
+    triangles[k] = static_cast<uint32_t>(keyed[k]);
+  }
+  std::vector<uint64_t>().swap(keyed);
+  mesh->Renumber(vertices, triangles);
+}
+
+Status WriteGridTin(const ElevationGrid& grid, const TinMesh& mesh,
+                    Dataset* out) {
+  if (Status s = CheckSize(mesh.num_vertices(), mesh.num_triangles());
+      !s.ok()) {
+    return s;
+  }
+  StartOutput(grid, out);
+  out->points.reserve(mesh.num_vertices());
+  out->values.reserve(mesh.num_vertices());
+  for (uint32_t v = 0; v < mesh.num_vertices(); ++v) {
+    const Point2& p = mesh.point(v);
+    const auto col = static_cast<uint32_t>(p.x);
+    const auto row = static_cast<uint32_t>(p.y);
+    out->points.push_back(grid.SampleAt(col, row));
+    out->values.push_back(grid.ValueAt(col, row));
+  }
+  const bool mirrors = OutputMirrors(grid);
+  out->constraints.triangles.reserve(mesh.num_triangles());
+  for (uint32_t t = 0; t < mesh.num_triangles(); ++t) {
+    if (Status s = AddTriangle(grid, mirrors, mesh.Corner(t, 0),
+                               mesh.Corner(t, 1), mesh.Corner(t, 2), out);
+        !s.ok()) {
+      return s;
+    }
+  }
+  return Status::OK();
+}
+
+Status WriteGridCells(const ElevationGrid& grid, const CellMask& mask,
+                      Dataset* out) {
+  StartOutput(grid, out);
+  const bool mirrors = OutputMirrors(grid);
+  // The ids of the domain's samples in the previous and the current row.
+  std::vector<uint32_t> above(grid.width, kNoVertex);
+  std::vector<uint32_t> row_ids(grid.width, kNoVertex);
+  for (uint32_t row = 0; row < grid.height; ++row) {
+    for (uint32_t col = 0; col < grid.width; ++col) {
+      const bool in_domain = mask.Valid(col - int64_t{1}, row - int64_t{1}) ||
+                             mask.Valid(col, row - int64_t{1}) ||
+                             mask.Valid(col - int64_t{1}, row) ||
+                             mask.Valid(col, row);
+      row_ids[col] = kNoVertex;
+      if (!in_domain) continue;
+      if (out->points.size() >= ServingMesh::kMaxElements) {
+        return CheckSize(grid.samples(), 2 * mask.valid_cells());
+      }
+      row_ids[col] = static_cast<uint32_t>(out->points.size());
+      out->points.push_back(grid.SampleAt(col, row));
+      out->values.push_back(grid.ValueAt(col, row));
+    }
+    for (uint32_t col = 0; row > 0 && col + 1 < grid.width; ++col) {
+      if (!mask.Valid(col, row - int64_t{1})) continue;
+      const uint32_t a = above[col], b = above[col + 1];
+      const uint32_t c = row_ids[col], d = row_ids[col + 1];
+      if (Status s = CheckSize(out->points.size(),
+                               out->constraints.triangles.size() + 2);
+          !s.ok()) {
+        return s;
+      }
+      Status s = AddTriangle(grid, mirrors, a, b, d, out);
+      if (s.ok()) s = AddTriangle(grid, mirrors, a, d, c, out);
+      if (!s.ok()) return s;
+    }
+    std::swap(above, row_ids);
+  }
+  return Status::OK();
+}
+
+}  // namespace locator

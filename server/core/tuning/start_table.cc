@@ -1,0 +1,164 @@
+#include "server/core/tuning/start_table.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+
+#include "server/core/geometry/wide_math.h"
+#include "server/core/mesh/mesh_walk.h"
+
+namespace locator {
+
+namespace {
+
+// Finite for any cell of any grid (GridLine), so every walk has a finite
+// target.
+Point2 SubCellCentre(const BoundingBox& cell, const SubGrid& sub_grid,
+                     uint32_t sx, uint32_t sy) {
+  return Point2{GridLine(cell.min_x, cell.max_x, sx + 0.5, sub_grid.columns),
+                GridLine(cell.min_y, cell.max_y, sy + 0.5, sub_grid.rows)};
+}
+
+}  // namespace
+
+StartTable::StartTable(const ServingMesh& mesh, const GridGeometry& grid,
+                       const std::vector<SubGrid>& sub_grids,
+                       const StartTable* previous)
+    : grid_(grid) {
+  Builder builder(mesh, grid, sub_grids, previous);
+  size_t units = 0;
+  builder.Step(SIZE_MAX, &units);
+  *this = std::move(builder.table_);
+}
+
+StartTable::Builder::Builder(const ServingMesh& mesh, const GridGeometry& grid,
+                             std::vector<SubGrid> sub_grids,
+                             const StartTable* previous)
+    : mesh_(mesh),
+      sub_grids_(std::move(sub_grids)),
+      previous_(previous),
+      table_(grid),
+      hint_(mesh.DefaultStart()) {}
+
+bool StartTable::Builder::Step(size_t max_units, size_t* units) {
+  // Visit cells and sub-cells in serpentine order so that each centre is
+  // located by a short walk from the previous one.
+  const int g = table_.grid_.size();
+  const size_t end = table_.cells_.size();
+  size_t done = 0;
+  while (next_cell_ < end && done < max_units) {
+    const int row = static_cast<int>(next_cell_ / g);
+    const int k = static_cast<int>(next_cell_ % g);
+    const int col = (row % 2 == 0) ? k : g - 1 - k;
+    const size_t index = static_cast<size_t>(row) * g + col;
+    Cell& cell = table_.cells_[index];
+    const BoundingBox box = table_.grid_.CellBox(col, row);
+    const SubGrid sub = sub_grids_[index];
+    if (!leaves_) {
+      if (sub.cells() > 1) table_.leaf_count_ += sub.cells();
+      if (previous_ && previous_->cells_[index].sub_grid == sub) {
+        ++done;
+        cell = previous_->cells_[index];
+        hint_ = cell.leaves ? cell.leaves[0] : cell.face;
+        ++next_cell_;
+        continue;
+      }
+      cell.sub_grid = sub;
+      if (sub.cells() == 1) {
+        ++done;
+        hint_ = cell.face =
+            FaceNear(mesh_, hint_, SubCellCentre(box, sub, 0, 0));
+        ++next_cell_;
+        continue;
+      }
+      leaves_ = std::make_shared_for_overwrite<Face[]>(sub.cells());
+    }
+    for (; next_sub_ < sub.cells() && done < max_units; ++next_sub_, ++done) {
+      const uint32_t sy = static_cast<uint32_t>(next_sub_ / sub.columns);
+      const uint32_t j = static_cast<uint32_t>(next_sub_ % sub.columns);
+      const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
+      hint_ = FaceNear(mesh_, hint_, SubCellCentre(box, sub, sx, sy));
+      leaves_[size_t{sy} * sub.columns + sx] = hint_;
+    }
+    if (next_sub_ < sub.cells()) break;
+    cell.leaves = std::move(leaves_);  // leaves_ is null again
+    next_sub_ = 0;
+    ++next_cell_;
+  }
+  *units += done;
+  return next_cell_ == end;
+}
+
+std::shared_ptr<const StartTable> StartTable::Builder::Finish() {
+  return std::make_shared<const StartTable>(std::move(table_));
+}
+
+StartTable::StartTable(const GridGeometry& grid,
+                       const std::vector<SubGrid>& sub_grids,
+                       std::span<const Face> starts)
+    : grid_(grid), cells_(grid.cells()) {
+  size_t next = 0;
+  for (size_t index = 0; index < cells_.size(); ++index) {
+    Cell& cell = cells_[index];
+    cell.sub_grid = sub_grids[index];
+    const size_t n = cell.sub_grid.cells();
+    if (n == 1) {
+      cell.face = starts[next++];
+      continue;
+    }
+    auto leaves = std::make_shared_for_overwrite<Face[]>(n);
+    std::copy_n(starts.begin() + next, n, leaves.get());
+    next += n;
+    leaf_count_ += n;
+    cell.leaves = std::move(leaves);
+  }
+}
+
+std::vector<StartTable::Face> StartTable::Starts() const {
+  std::vector<Face> starts;
+  starts.reserve(start_count());
+  for (const Cell& cell : cells_) {
+    if (cell.leaves) {
+      starts.insert(starts.end(), cell.leaves.get(),
+                    cell.leaves.get() + cell.sub_grid.cells());
+    } else {
+      starts.push_back(cell.face);
+    }
+  }
+  return starts;
+}
+
+size_t StartTable::start_count() const {
+  size_t direct = 0;
+  for (const Cell& c : cells_) direct += !c.leaves;
+  return direct + leaf_count_;
+}
+
+size_t StartTable::MemoryBytes() const {
+  return cells_.size() * kBytesPerCell + leaf_count_ * kBytesPerStart;
+}
+
+std::vector<Point2> StartTable::SampleStartPoints(size_t max_points) const {
+  const size_t total = start_count();
+  const size_t step =
+      std::max<size_t>(1, (total + max_points - 1) / max_points);
+  std::vector<Point2> out;
+  size_t index = 0;
+  const int g = grid_.size();
+  for (int row = 0; row < g; ++row) {
+    for (int col = 0; col < g; ++col) {
+      const SubGrid& sub = cells_[static_cast<size_t>(row) * g + col].sub_grid;
+      const BoundingBox box = grid_.CellBox(col, row);
+      for (uint32_t sy = 0; sy < sub.rows; ++sy) {
+        for (uint32_t sx = 0; sx < sub.columns; ++sx, ++index) {
+          if (index % step == 0) {
+            out.push_back(SubCellCentre(box, sub, sx, sy));
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace locator

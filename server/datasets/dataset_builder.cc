@@ -1,0 +1,305 @@
+#include "server/datasets/dataset_builder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <system_error>
+#include <thread>
+#include <utility>
+
+#include "locator/dataset_sources.h"
+#include "server/config/server_log.h"
+#include "server/core/mesh/mesh_cache.h"
+#include "server/datasets/build_heartbeat.h"
+#include "server/datasets/dataset_source.h"
+#include "server/datasets/source_key.h"
+
+namespace locator {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// Says where a new engine's tuning came from, and why a state file in the
+// state dir was ignored.
+void LogTuningState(const Engine& engine, std::string_view tag) {
+  const PersistenceSummary p = engine.Stats().tuning.persistence;
+  if (p.state_path.empty()) return;
+  if (p.restored_from_state) {
+    LogLine(tag) << "restored the tuning state from " << p.state_path;
+  } else if (!p.load_error.empty()) {
+    LogLine(tag) << "warning: ignoring the tuning state " << p.state_path
+                 << ": " << p.load_error;
+  } else {
+    LogLine(tag) << "no tuning state at " << p.state_path << " yet";
+  }
+}
+
+// Says whether the mesh was mapped from the mesh cache, and why a file there
+// was ignored or could not be written.
+void LogMeshCache(const MeshCacheOutcome& cache, std::string_view tag) {
+  if (cache.path.empty()) return;
+  if (cache.mapped) {
+    LogLine(tag) << "mapped the serving mesh from " << cache.path;
+    return;
+  }
+  if (!cache.load_error.empty()) {
+    LogLine(tag) << "warning: ignoring the mesh file " << cache.path << ": "
+                 << cache.load_error << "; triangulated instead";
+  }
+  if (cache.save_error.empty()) {
+    LogLine(tag) << "wrote the serving mesh to " << cache.path;
+  } else {
+    LogLine(tag) << "warning: cannot write the mesh file " << cache.path << ": "
+                 << cache.save_error;
+  }
+}
+
+// Says how a new engine's mesh came to be, and where its tuning came from.
+void LogBuilt(const Engine& engine, std::string_view tag) {
+  const DatasetInfo& info = engine.dataset_info();
+  LogLine(tag) << (info.mesh_cache.mapped ? "mapped " : "built ")
+               << info.triangles << " triangles over " << info.vertices
+               << " vertices (" << info.duplicates_merged
+               << " duplicates merged) in " << info.build_seconds << " s";
+  LogMeshCache(info.mesh_cache, tag);
+  LogTuningState(engine, tag);
+}
+
+// How often a build says what it is doing (at least every 5 s).
+constexpr std::chrono::seconds kProgressInterval{4};
+
+// Says what a simplification made of its source (the certificate).
+void LogSimplified(const SimplificationStats& s, std::string_view tag) {
+  LogLine(tag) << "simplified " << s.source_samples << " source samples to "
+               << s.vertices << " vertices and " << s.triangles
+               << " triangles in " << s.build_seconds << " s: max error "
+               << s.max_error << " (target " << s.target_error
+               << ", max_points " << s.max_points << ", " << s.unserved_samples
+               << " samples outside the domain)";
+}
+
+}  // namespace
+
+DatasetBuilder::DatasetBuilder(const ServerConfig& config)
+    : config_(config),
+      budget_(config.dataset_limits.max_points, config.datasets.size()) {}
+
+std::string_view DatasetBuilder::Tag(const DatasetSlot& slot) const {
+  return config_.datasets.size() > 1 ? std::string_view(slot.name())
+                                     : std::string_view();
+}
+
+void DatasetBuilder::SaveTuningStateOrWarn(Engine& engine, std::string_view tag,
+                                           std::string_view when) {
+  const Status status = engine.SaveTuningState();
+  if (!status.ok()) {
+    LogLine(tag) << "warning: cannot save the tuning state " << when << ": "
+                 << status.ToString();
+  }
+}
+
+Status DatasetBuilder::EngineOptionsFor(const DatasetSlot& slot,
+                                        EngineOptions* options) {
+  *options = config_.engine;
+  std::string& dir = options->tuning.state_dir;
+  if (dir.empty() || !slot.named()) return Status::OK();
+  dir = (std::filesystem::path(dir) / slot.name()).string();
+  std::error_code error;
+  std::filesystem::create_directory(dir, error);
+  if (error) {
+    return Status::IOError("cannot make the state dir " + dir + ": " +
+                           error.message());
+  }
+  return Status::OK();
+}
+
+Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
+                                          const std::string& spec,
+                                          std::shared_ptr<Engine>* built) {
+  const std::string_view tag = Tag(slot);
+  EngineOptions options;
+  if (Status status = EngineOptionsFor(slot, &options); !status.ok()) {
+    return status;
+  }
+  if (MapGenerated(slot, spec, options, built) ||
+      MapBySourceKey(slot, spec, options, built)) {
+    return Status::OK();
+  }
+  LogLine(tag) << "loading dataset " << spec;
+  const auto load_start = std::chrono::steady_clock::now();
+  BuildHeartbeat heartbeat(
+      [tag](const std::string& line) { LogLine(tag) << line; },
+      kProgressInterval);
+  ServedLoadOptions load;
+  load.limits = config_.dataset_limits;
+  load.limits.max_points = budget_.Available(slot.index());
+  load.threads = std::max(1u, std::thread::hardware_concurrency());
+  load.progress = [&heartbeat](const TinProgress& p) { heartbeat.Report(p); };
+  load.progress_interval_s =
+      std::chrono::duration<double>(kProgressInterval).count();
+  ServedDataset served;
+  Status status = LoadServedDataset(spec, load, &served);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), served.dataset.points.size());
+  }
+  if (status.code() == Status::Code::kResourceExhausted) {
+    const std::string see =
+        config_.datasets.size() == 1
+            ? " (see --max-dataset-points)"
+            : " (see --max-dataset-points: a total of " +
+                  std::to_string(budget_.total()) +
+                  " points over all datasets, of which the others hold " +
+                  std::to_string(budget_.HeldByOthers(slot.index())) + ")";
+    return Status::ResourceExhausted(status.message() + see);
+  }
+  if (!status.ok()) return status;
+  LogLine(tag) << "loaded " << served.dataset.points.size() << " points in "
+               << SecondsSince(load_start) << " s; building the serving mesh";
+  if (served.simplification) LogSimplified(*served.simplification, tag);
+  heartbeat.SetPhase("building the serving mesh");
+  std::unique_ptr<Engine> created;
+  status =
+      served.simplification
+          ? Engine::CreateSimplified(std::move(served.dataset),
+                                     *served.simplification, options, &created)
+          : Engine::Create(std::move(served.dataset), options, &created);
+  if (!status.ok()) {
+    budget_.Cancel(slot.index());
+    return status;
+  }
+  // Published by the caller right after this returns.
+  budget_.Commit(slot.index());
+  const DatasetInfo& info = created->dataset_info();
+  RecordGenerated(spec, options, info.mesh_cache, tag);
+  RecordSourceKey(spec, options, served, info, tag);
+  LogBuilt(*created, tag);
+  *built = std::move(created);
+  return Status::OK();
+}
+
+bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
+                             uint64_t fingerprint, DatasetOrigin origin,
+                             const EngineOptions& options, std::string_view how,
+                             std::shared_ptr<Engine>* built) {
+  const std::string_view tag = Tag(slot);
+  std::unique_ptr<Engine> created;
+  Status status = Engine::CreateFromMeshFile(fingerprint, std::move(origin),
+                                             options, &created);
+  if (status.ok()) {
+    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
+  }
+  if (!status.ok()) {
+    // The slow path loads the spec and says what is wrong, if anything.
+    if (status.code() != Status::Code::kResourceExhausted) {
+      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
+                   << status.ToString() << "; loading it instead";
+    }
+    return false;
+  }
+  budget_.Commit(slot.index());
+  LogLine(tag) << "found the mesh of " << spec << " " << how;
+  LogBuilt(*created, tag);
+  *built = std::move(created);
+  return true;
+}
+
+bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
+                                  const std::string& spec,
+                                  const EngineOptions& options,
+                                  std::shared_ptr<Engine>* built) {
+  GeneratorSpec generator;
+  uint64_t fingerprint = 0;
+  if (options.mesh_cache_dir.empty() || !IsGeneratorSpec(spec) ||
+      !ParseGeneratorSpec(spec, &generator).ok() ||
+      !FindGeneratedFingerprint(options.mesh_cache_dir, generator, &fingerprint)
+           .ok()) {
+    return false;
+  }
+  DatasetOrigin origin;
+  origin.source = spec;
+  return MapMesh(slot, spec, fingerprint, std::move(origin), options,
+                 "without generating it", built);
+}
+
+bool DatasetBuilder::MapBySourceKey(const DatasetSlot& slot,
+                                    const std::string& spec,
+                                    const EngineOptions& options,
+                                    std::shared_ptr<Engine>* built) {
+  if (options.mesh_cache_dir.empty()) return false;
+  SourceKey key;
+  Status status = ReadSourceKey(options.mesh_cache_dir, spec, &key);
+  if (status.code() == Status::Code::kNotFound) return false;
+  if (status.ok()) status = CheckSourceFiles(key);
+  if (!status.ok()) {
+    LogLine(Tag(slot)) << "not mapping the cached mesh of " << spec << ": "
+                       << status.message();
+    return false;
+  }
+  DatasetOrigin origin;
+  origin.source = spec;
+  origin.crs = std::move(key.crs);
+  origin.simplification = key.simplification;
+  return MapMesh(slot, spec, key.fingerprint, std::move(origin), options,
+                 "by the identity of its files, without reading them", built);
+}
+
+void DatasetBuilder::RecordGenerated(const std::string& spec,
+                                     const EngineOptions& options,
+                                     const MeshCacheOutcome& cache,
+                                     std::string_view tag) {
+  GeneratorSpec generator;
+  if (cache.path.empty() || !cache.save_error.empty() ||
+      !IsGeneratorSpec(spec) || !ParseGeneratorSpec(spec, &generator).ok()) {
+    return;
+  }
+  const Status status = RecordGeneratedFingerprint(
+      options.mesh_cache_dir, generator, cache.fingerprint);
+  if (!status.ok()) {
+    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
+                 << status.ToString();
+  }
+}
+
+void DatasetBuilder::RecordSourceKey(const std::string& spec,
+                                     const EngineOptions& options,
+                                     const ServedDataset& served,
+                                     const DatasetInfo& info,
+                                     std::string_view tag) {
+  const MeshCacheOutcome& cache = info.mesh_cache;
+  if (cache.path.empty() || !cache.save_error.empty() || served.files.empty()) {
+    return;
+  }
+  SourceKey key;
+  for (const std::string& file : served.files) {
+    key.files.push_back(IdentifyFile(file));
+  }
+  for (const std::string& file : served.absent_files) {
+    key.files.push_back(IdentifyFile(file));
+  }
+  key.fingerprint = cache.fingerprint;
+  key.crs = info.crs;
+  key.simplification = info.simplification;
+  if (const Status status = WriteSourceKey(options.mesh_cache_dir, spec, key);
+      !status.ok()) {
+    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
+                 << status.ToString();
+  }
+}
+
+Status DatasetBuilder::Build(const DatasetSlot& slot, const std::string& spec,
+                             Engine* serving, std::shared_ptr<Engine>* built) {
+  if (serving != nullptr) {
+    SaveTuningStateOrWarn(*serving, Tag(slot), "before the reload");
+  }
+  const Status status = LoadAndTriangulate(slot, spec, built);
+  if (!status.ok() && serving != nullptr) {
+    LogLine(Tag(slot)) << "reload failed, still serving the previous dataset: "
+                       << status.ToString();
+  }
+  return status;
+}
+
+}  // namespace locator
