@@ -34,9 +34,9 @@
 #include <string>
 
 #include "server/bench/bench_report.h"
-#include "server/bench/build_benchmark.h"
-#include "server/bench/paper_benchmark.h"
-#include "server/bench/scale_benchmark.h"
+#include "server/bench/suites/build_benchmark.h"
+#include "server/bench/suites/paper_benchmark.h"
+#include "server/bench/suites/scale_benchmark.h"
 #include "server/core/dataset/byte_size.h"
 
 namespace po = boost::program_options;

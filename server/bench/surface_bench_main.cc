@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "server/bench/dem_benchmark.h"
-#include "server/bench/grid_benchmark.h"
-#include "server/bench/profile_benchmark.h"
+#include "server/bench/suites/dem_benchmark.h"
+#include "server/bench/suites/grid_benchmark.h"
+#include "server/bench/suites/profile_benchmark.h"
 
 namespace po = boost::program_options;
 

@@ -23,7 +23,7 @@
 // named it answers the stream's later messages for it too).
 //
 // The work of each RPC, after admission, is one Run*() method that the
-// gRPC handlers and the HTTP/JSON API (server/http/json_api.h) both call.
+// gRPC handlers and the HTTP/JSON API (server/http/json/json_api.h) both call.
 //
 // Thread-safety: all methods may be called concurrently.
 

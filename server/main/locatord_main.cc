@@ -27,7 +27,7 @@
 #include "server/datasets/dataset_builder.h"
 #include "server/datasets/dataset_registry.h"
 #include "server/grpc/locator_service.h"
-#include "server/http/status_server.h"
+#include "server/http/status/status_server.h"
 #include "server/main/server_runner.h"
 
 namespace locator {

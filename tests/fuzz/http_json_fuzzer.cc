@@ -40,7 +40,7 @@
 #include "locator/v1/locator.pb.h"
 #include "server/grpc/locator_service.h"
 #include "server/grpc/status_mapping.h"
-#include "server/http/json_api.h"
+#include "server/http/json/json_api.h"
 
 namespace locator {
 namespace {

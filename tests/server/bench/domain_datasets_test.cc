@@ -1,4 +1,4 @@
-#include "server/bench/domain_datasets.h"
+#include "server/bench/datasets/domain_datasets.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "server/http/json_writer.h"
+#include "server/http/json/json_writer.h"
 
 #include <gtest/gtest.h>
 

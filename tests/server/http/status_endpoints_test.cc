@@ -1,4 +1,4 @@
-#include "server/http/status_endpoints.h"
+#include "server/http/status/status_endpoints.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

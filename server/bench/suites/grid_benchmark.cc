@@ -1,4 +1,4 @@
-#include "server/bench/grid_benchmark.h"
+#include "server/bench/suites/grid_benchmark.h"
 
 #include <gdal_priv.h>
 
@@ -19,8 +19,8 @@
 #include "common/gis/raster_writer.h"
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
+#include "server/bench/datasets/surface_terrain.h"
 #include "server/bench/stopwatch.h"
-#include "server/bench/surface_terrain.h"
 
 namespace locator::bench {
 namespace {

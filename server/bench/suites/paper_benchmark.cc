@@ -1,4 +1,4 @@
-#include "server/bench/paper_benchmark.h"
+#include "server/bench/suites/paper_benchmark.h"
 
 #include <map>
 #include <memory>

@@ -50,7 +50,7 @@
 #include "locator/geometry.h"
 #include "locator/status.h"
 #include "server/http/http_server.h"
-#include "server/http/stats_history.h"
+#include "server/http/status/stats_history.h"
 #include "server/metrics/engine_collector.h"
 
 namespace locator {

@@ -1,4 +1,4 @@
-#include "server/bench/domain_datasets.h"
+#include "server/bench/datasets/domain_datasets.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/random.h"
-#include "server/bench/quality_mesh.h"
+#include "server/bench/datasets/quality_mesh.h"
 
 namespace locator::bench {
 

@@ -1,4 +1,4 @@
-#include "server/http/status_endpoints.h"
+#include "server/http/status/status_endpoints.h"
 
 #include <utility>
 
@@ -6,7 +6,7 @@
 #include "server/grpc/status_mapping.h"
 #include "server/http/api_error.h"
 #include "server/http/embedded_files.h"
-#include "server/http/json_writer.h"
+#include "server/http/json/json_writer.h"
 
 namespace locator {
 namespace {

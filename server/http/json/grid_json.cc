@@ -1,4 +1,4 @@
-#include "server/http/grid_json.h"
+#include "server/http/json/grid_json.h"
 
 #include <algorithm>
 #include <vector>
@@ -8,7 +8,7 @@
 #include "server/grpc/grid_stream.h"
 #include "server/grpc/status_mapping.h"
 #include "server/grpc/surface_convert.h"
-#include "server/http/json_writer.h"
+#include "server/http/json/json_writer.h"
 
 namespace locator {
 namespace {

@@ -1,4 +1,4 @@
-#include "server/bench/scale_benchmark.h"
+#include "server/bench/suites/scale_benchmark.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,8 +13,8 @@
 #include "common/workload.h"
 #include "locator/dataset_sources.h"
 #include "server/bench/bench_runner.h"
-#include "server/bench/cgal_baselines.h"
 #include "server/bench/stopwatch.h"
+#include "server/bench/suites/cgal_baselines.h"
 #include "server/core/cgal/given_mesh.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/strategies/locator_factory.h"

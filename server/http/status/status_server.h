@@ -34,9 +34,9 @@
 #include "server/grpc/locator_service.h"
 #include "server/http/cors_policy.h"
 #include "server/http/http_server.h"
-#include "server/http/json_api.h"
-#include "server/http/stats_history.h"
-#include "server/http/status_endpoints.h"
+#include "server/http/json/json_api.h"
+#include "server/http/status/stats_history.h"
+#include "server/http/status/status_endpoints.h"
 #include "server/metrics/engine_collector.h"
 #include "server/metrics/rpc_metrics.h"
 

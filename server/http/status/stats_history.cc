@@ -1,4 +1,4 @@
-#include "server/http/stats_history.h"
+#include "server/http/status/stats_history.h"
 
 #include <limits>
 

@@ -19,7 +19,7 @@
 #include "locator/status.h"
 #include "locator/tuning_options.h"
 #include "server/bench/bench_report.h"
-#include "server/bench/domain_datasets.h"
+#include "server/bench/datasets/domain_datasets.h"
 
 namespace locator::bench {
 

@@ -1,4 +1,4 @@
-#include "server/http/json_api.h"
+#include "server/http/json/json_api.h"
 
 #include <google/protobuf/util/json_util.h>
 #include <prometheus/gauge.h>
@@ -14,7 +14,7 @@
 #include "server/grpc/status_mapping.h"
 #include "server/grpc/surface_convert.h"
 #include "server/http/api_error.h"
-#include "server/http/grid_json.h"
+#include "server/http/json/grid_json.h"
 
 namespace locator {
 namespace {

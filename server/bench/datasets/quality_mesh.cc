@@ -1,4 +1,4 @@
-#include "server/bench/quality_mesh.h"
+#include "server/bench/datasets/quality_mesh.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>

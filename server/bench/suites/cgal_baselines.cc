@@ -1,4 +1,4 @@
-#include "server/bench/cgal_baselines.h"
+#include "server/bench/suites/cgal_baselines.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>

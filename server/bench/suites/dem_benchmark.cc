@@ -1,4 +1,4 @@
-#include "server/bench/dem_benchmark.h"
+#include "server/bench/suites/dem_benchmark.h"
 
 #include <sys/resource.h>
 #include <sys/time.h>

@@ -1,4 +1,4 @@
-#include "server/bench/profile_benchmark.h"
+#include "server/bench/suites/profile_benchmark.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "locator/engine.h"
+#include "server/bench/datasets/surface_terrain.h"
 #include "server/bench/stopwatch.h"
-#include "server/bench/surface_terrain.h"
 
 namespace locator::bench {
 namespace {

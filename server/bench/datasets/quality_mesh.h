@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "server/bench/domain_datasets.h"
+#include "server/bench/datasets/domain_datasets.h"
 
 namespace locator::bench {
 

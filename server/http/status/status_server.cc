@@ -1,4 +1,4 @@
-#include "server/http/status_server.h"
+#include "server/http/status/status_server.h"
 
 #include <boost/beast/core/string.hpp>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "server/bench/build_benchmark.h"
+#include "server/bench/suites/build_benchmark.h"
 
 #include <malloc.h>
 #include <sys/resource.h>
