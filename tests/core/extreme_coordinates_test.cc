@@ -760,5 +760,27 @@ TEST(ExtremeConstraintsTest, CrossingBreaklinesAtEveryScale) {
   }
 }
 
+// Breaklines whose crossing lies beyond the doubles (dataset_fuzzer found
+// them): CGAL cannot compute the crossing point, and the build is refused
+// naming why instead of aborting on CGAL's exception.
+TEST(ExtremeConstraintsTest, CrossingsBeyondDoublesAreRefused) {
+  Dataset ds;
+  ds.points = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+  ASSERT_TRUE(ParseWktConstraints(
+                  "LINESTRING (-1e300 -1e300, 1e300 1.7976931348623157e308)\n"
+                  "LINESTRING (-1.7976931348623157e308 1e300, 1e160 -1e160, "
+                  "1e300 -1e300)\n"
+                  "POLYGON ((-1e300 -1e300, 1e300 -1e300, 1e300 1e300, "
+                  "-1e300 1e300, -1e300 -1e300))\n",
+                  "crossing.wkt", &ds.constraints)
+                  .ok());
+  std::unique_ptr<Triangulation> t;
+  const Status s = Triangulation::Build(ds, &t);
+  EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
+  EXPECT_NE(s.message().find("cannot be computed in doubles"),
+            std::string::npos)
+      << s.ToString();
+}
+
 }  // namespace
 }  // namespace locator

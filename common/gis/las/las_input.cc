@@ -72,7 +72,8 @@ class MemoryInput final : public LasInput {
     if (!Inside(offset, length, bytes_.size())) {
       return OutOfRange(name_, offset, length, bytes_.size());
     }
-    std::memcpy(out, bytes_.data() + offset, length);
+    // memcpy's pointers must not be null, even for no bytes.
+    if (length > 0) std::memcpy(out, bytes_.data() + offset, length);
     return Status::OK();
   }
 

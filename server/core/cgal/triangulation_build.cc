@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -151,18 +152,36 @@ Status Triangulation::Builder::InsertPolylines(
   return Status::OK();
 }
 
+namespace {
+
+// InvalidArgument for a crossing of `what` whose point is beyond doubles.
+Status UncomputableCrossing(const std::string& what) {
+  return Status::InvalidArgument(
+      what +
+      " cross where the crossing point cannot be computed in doubles "
+      "(coordinates too large)");
+}
+
+}  // namespace
+
 Status Triangulation::Builder::InsertConstraints() {
-  Status s = InsertPolylines(c_.breaklines, false, ConstraintKind::kBreakline,
-                             "breakline");
-  if (s.ok()) {
-    s = InsertPolylines(c_.rings, true, ConstraintKind::kRing, "ring");
+  // CGAL computes where constraints cross in doubles; near +-DBL_MAX that
+  // overflows, and CGAL throws rather than insert a point at infinity.
+  try {
+    Status s = InsertPolylines(c_.breaklines, false, ConstraintKind::kBreakline,
+                               "breakline");
+    if (s.ok()) {
+      s = InsertPolylines(c_.rings, true, ConstraintKind::kRing, "ring");
+    }
+    if (s.ok()) {
+      s = InsertPolylines(c_.segments, false, ConstraintKind::kSegment,
+                          "segment");
+    }
+    if (s.ok()) s = InsertMeshEdges();
+    return s;
+  } catch (const std::exception&) {
+    return UncomputableCrossing("two constraints");
   }
-  if (s.ok()) {
-    s = InsertPolylines(c_.segments, false, ConstraintKind::kSegment,
-                        "segment");
-  }
-  if (s.ok()) s = InsertMeshEdges();
-  return s;
 }
 
 Status Triangulation::Builder::NameCrossings() {
@@ -185,6 +204,9 @@ Status Triangulation::Builder::NameCrossings() {
       if (!created && !inside_boundary) continue;
       const auto [where, fresh] = claimed.emplace(v, k);
       if (fresh && !created) continue;
+      if (fresh && !IsFinite(FromCgal(v->point()))) {
+        return UncomputableCrossing(segment.name + " and another constraint");
+      }
       if (fresh) {
         // In Wide: the distances and the values may reach +-DBL_MAX.
         const Wide ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
