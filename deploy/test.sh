@@ -1,26 +1,30 @@
 #!/usr/bin/env bash
 # README command 2, and what CI runs (.ci/run): installs what is missing,
-# builds, and runs every test. Each source is compiled once per tree, and each
-# tree has one job:
-#   build  the programs and libraries as shipped (gcc, Release; no GoogleTest
-#          suites), and the tests that drive them from outside: the local
-#          cluster, the Python client, a consumer of the installed engine
+# builds, and runs every test. Each source is compiled once per tree, and
+# each tree has one job:
 #   check  one clang tree with AddressSanitizer + UBSan, libFuzzer coverage
 #          and the thread-safety analysis as errors (build-check): every
-#          test, GoogleTest suites included, under ASAN+UBSAN, then every
-#          fuzzer for LOCATOR_FUZZ_SECONDS
-#   tsan   the concurrency tests (the engine under many threads, the serving
-#          layer's parts in process) and locatord under real traffic
+#          test, GoogleTest suites and the tests of the programs as shipped
+#          (the local cluster, the Python client, a consumer of the
+#          installed engine) under ASAN+UBSAN, then every fuzzer for
+#          LOCATOR_FUZZ_SECONDS, then deploy/soak.sh for
+#          LOCATOR_SOAK_SECONDS on its locatord and locator-load (ASAN's
+#          quarantine off, so that resident memory measures the server's own)
+#   tsan   (gcc) the concurrency tests (the engine under many threads, the
+#          serving layer's parts in process) and locatord under real traffic
 #          (locatord_e2e_test) under ThreadSanitizer (build-tsan; only their
 #          executables)
-#   soak   deploy/soak.sh for LOCATOR_SOAK_SECONDS on the shipped build
+# The Release tree README command 1 builds is not built here: its sources
+# are all compiled, and its programs all run, in the check tree.
 # Any test failure, thread-safety error, sanitizer report (from a test or
 # from a server it started), fuzzer crash or soak failure fails the run.
 # Stage timings are printed at the end, pass or fail.
 #
 # Environment knobs (defaults are what CI runs):
-#   BUILD_DIR=build  LOCATOR_CI_SANITIZERS=1  LOCATOR_CI_FUZZ=1
-#   LOCATOR_CI_SOAK=1  LOCATOR_FUZZ_SECONDS=20  LOCATOR_SOAK_SECONDS=60
+#   LOCATOR_CI_SANITIZERS=1  LOCATOR_CI_FUZZ=1  LOCATOR_CI_SOAK=1
+#   LOCATOR_FUZZ_SECONDS=20  LOCATOR_SOAK_SECONDS=60
+# With LOCATOR_CI_SANITIZERS=0 only a plain Release tree (BUILD_DIR, build)
+# is built and tested, for a quick local run.
 # ccache is used when it is installed (it is not installed by this script).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,9 +38,8 @@ FUZZ_SECONDS="${LOCATOR_FUZZ_SECONDS:-20}"
 SOAK_SECONDS="${LOCATOR_SOAK_SECONDS:-60}"
 JOBS="$(nproc)"
 # Sanitizer trees: -O1 (the sanitizers' own advice; half the compile time
-# of -O2), no debug info beyond clang's line tables, and no locator-bench (a
-# program, not a test).
-SANITIZER_FLAGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DLOCATOR_BUILD_BENCH=OFF)
+# of -O2) and no debug info beyond clang's line tables.
+SANITIZER_FLAGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
 # ccache caches objects built with a precompiled header (cmake/LocatorPch.cmake)
 # only under these sloppiness settings.
 LAUNCHER=()
@@ -127,6 +130,16 @@ tsan_test() {
     sanitized_ctest build-tsan -R '^LocatordTest\.'
 }
 
+# asan_soak: deploy/soak.sh on build-check's programs. Quarantine off: ASAN
+# would otherwise hold up to 256 MiB of freed blocks, which the soak would
+# count as the server's growth. Leaks and memory errors fail it as in tests.
+asan_soak() {
+  ASAN_OPTIONS="quarantine_size_mb=0:detect_leaks=1:halt_on_error=1" \
+    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+    BUILD_DIR=build-check SOAK_WARMUP=$((SOAK_SECONDS / 3)) \
+    bash deploy/soak.sh --duration "$SOAK_SECONDS"
+}
+
 # fuzz_run: every fuzzer for its bounded time, then how many inputs each ran.
 fuzz_run() {
   ctest --test-dir build-check -L fuzz --output-on-failure -j"$JOBS" &&
@@ -135,29 +148,29 @@ fuzz_run() {
 }
 
 stage deps bash deploy/install-deps.sh
-stage build build_tree "$BUILD_DIR" all -DCMAKE_BUILD_TYPE=Release \
-  -DLOCATOR_BUILD_TESTS=OFF
-stage test ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS" \
-  --timeout 300
 
-if [ "$SANITIZERS" != 0 ]; then
-  stage check-build build_tree build-check "all fuzzers" "${SANITIZER_FLAGS[@]}" \
-    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
-    -DCMAKE_CXX_COMPILER=clang++ "${CLANG_LINKER[@]}" -DLOCATOR_FUZZ=ON \
-    -DLOCATOR_THREAD_SAFETY=ON \
-    -DLOCATOR_FUZZ_SECONDS="$FUZZ_SECONDS"
-  stage asan-test sanitized_ctest build-check -LE fuzz
-  if [ "$FUZZ" != 0 ]; then
-    stage fuzz-run fuzz_run
-  fi
-  stage tsan-build build_tree build-tsan "tests-concurrency locatord_e2e_test" \
-    "${SANITIZER_FLAGS[@]}" \
-    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG" \
-    -DLOCATOR_SANITIZER=thread
-  stage tsan-test tsan_test
+if [ "$SANITIZERS" = 0 ]; then
+  stage build build_tree "$BUILD_DIR" all -DCMAKE_BUILD_TYPE=Release
+  stage test ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$JOBS" \
+    --timeout 600
+  exit 0
 fi
 
+stage check-build build_tree build-check "all fuzzers" "${SANITIZER_FLAGS[@]}" \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
+  -DCMAKE_CXX_COMPILER=clang++ "${CLANG_LINKER[@]}" -DLOCATOR_FUZZ=ON \
+  -DLOCATOR_THREAD_SAFETY=ON \
+  -DLOCATOR_FUZZ_SECONDS="$FUZZ_SECONDS"
+stage asan-test sanitized_ctest build-check -LE fuzz
+if [ "$FUZZ" != 0 ]; then
+  stage fuzz-run fuzz_run
+fi
 if [ "$SOAK" != 0 ]; then
-  stage soak env BUILD_DIR="$BUILD_DIR" bash deploy/soak.sh \
-    --duration "$SOAK_SECONDS"
+  stage soak asan_soak
 fi
+stage tsan-build build_tree build-tsan \
+  "tests-concurrency locatord_e2e_test" \
+  "${SANITIZER_FLAGS[@]}" \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG" \
+  -DLOCATOR_SANITIZER=thread
+stage tsan-test tsan_test
