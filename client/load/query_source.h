@@ -1,6 +1,6 @@
 // QuerySource: the query points of a load run.
 //
-// A spec is either a workload name of server/core/workload.h ("uniform",
+// A spec is either a workload name of common/workload.h ("uniform",
 // "1-cluster", "3-cluster", "d-cluster", "x-cluster", "mixed", "drift"),
 // generated into the dataset's bounding box, or "file:PATH", which replays
 // the points of PATH (client/points_reader.h format) in order, from the top

@@ -12,7 +12,6 @@
 
 #include <boost/asio/post.hpp>
 #include <chrono>
-#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -160,15 +159,6 @@ class StartupBuilds {
   StatusServer* const status_server_;
   ServerRunner* const runner_;
 };
-
-// Ends the process once ServerRunner::Run() has returned `exit_code`: the
-// log streams are flushed, and nothing still alive is torn down (see
-// ServerRunner::Run() for why).
-[[noreturn]] void ExitWithoutTeardown(int exit_code) {
-  std::cout.flush();
-  std::cerr.flush();
-  std::_Exit(exit_code);
-}
 
 int Main(int argc, char** argv) {
   ServerConfig config;

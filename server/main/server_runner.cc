@@ -5,6 +5,7 @@
 #include <grpcpp/health_check_service_interface.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <iterator>
 #include <utility>
@@ -200,6 +201,12 @@ int ServerRunner::Run() {
   // whatever state is worth keeping.
   if (before_exit_) before_exit_();
   return exit_code_;
+}
+
+void ExitWithoutTeardown(int exit_code) {
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(exit_code);
 }
 
 }  // namespace locator

@@ -123,6 +123,11 @@ class ServerRunner {
   int exit_code_ = 0;
 };
 
+// Ends the process with `exit_code` once ServerRunner::Run() has returned
+// it: the log streams are flushed, and nothing still alive is torn down
+// (see Run() for why).
+[[noreturn]] void ExitWithoutTeardown(int exit_code);
+
 }  // namespace locator
 
 #endif  // LOCATOR_SERVER_SERVER_RUNNER_H_

@@ -3,7 +3,6 @@
 // it as the ceiling the real server's throughput is compared against. Same
 // serving flags, listening line, health and shutdown as locatord.
 
-#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -17,15 +16,6 @@ namespace locator {
 namespace {
 
 constexpr char kProgram[] = "locator-noop-server";
-
-// Ends the process once ServerRunner::Run() has returned `exit_code`: the
-// log streams are flushed, and nothing still alive is torn down (see
-// ServerRunner::Run() for why).
-[[noreturn]] void ExitWithoutTeardown(int exit_code) {
-  std::cout.flush();
-  std::cerr.flush();
-  std::_Exit(exit_code);
-}
 
 int Main(int argc, char** argv) {
   ServingConfig config;

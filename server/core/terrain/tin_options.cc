@@ -21,4 +21,14 @@ Status CheckTinOptions(const TinOptions& options) {
   return Status::OK();
 }
 
+void RecordTinMade(const Dataset& tin,
+                   std::chrono::steady_clock::time_point start,
+                   SimplificationStats* stats) {
+  stats->vertices = tin.points.size();
+  stats->triangles = tin.constraints.triangles.size();
+  stats->build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+}
+
 }  // namespace locator

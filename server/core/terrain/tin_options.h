@@ -8,9 +8,11 @@
 #ifndef LOCATOR_CORE_TERRAIN_TIN_OPTIONS_H_
 #define LOCATOR_CORE_TERRAIN_TIN_OPTIONS_H_
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 
+#include "locator/dataset.h"
 #include "locator/engine_info.h"
 #include "locator/status.h"
 
@@ -42,6 +44,12 @@ struct TinOptions {
 // range otherwise (max_error NaN, negative or infinite; a progress interval
 // that is not positive).
 Status CheckTinOptions(const TinOptions& options);
+
+// Fills the counts of `tin`, the TIN just made, into *stats, and the
+// seconds since `start` as its build time.
+void RecordTinMade(const Dataset& tin,
+                   std::chrono::steady_clock::time_point start,
+                   SimplificationStats* stats);
 
 }  // namespace locator
 

@@ -136,11 +136,7 @@ Status TriangulateGrid(const ElevationGrid& grid, const TinOptions& options,
     if (s.ok()) s = WriteGridTin(grid, mesh, out);
   }
   if (!s.ok()) return s;
-  stats->vertices = out->points.size();
-  stats->triangles = out->constraints.triangles.size();
-  stats->build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
+  RecordTinMade(*out, start, stats);
   return Status::OK();
 }
 

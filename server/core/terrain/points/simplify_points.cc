@@ -321,11 +321,7 @@ Status SimplifyPoints(const Dataset& in, const TinOptions& options,
                                           id[mesh.Corner(tri, 1)],
                                           id[mesh.Corner(tri, 2)]});
   }
-  stats->vertices = out->points.size();
-  stats->triangles = out->constraints.triangles.size();
-  stats->build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
+  RecordTinMade(*out, start, stats);
   return Status::OK();
 }
 
