@@ -97,30 +97,38 @@ build_tree() {
     cmake --build "$dir" -j"$JOBS" --target $targets
 }
 
-# sanitized_ctest DIR CTEST_ARGS...: runs ctest in DIR with every sanitizer
-# halting on its first report and writing it to DIR/sanitizer-reports, where
-# reports of the servers the end-to-end tests spawn land too (their exit
-# status is not every test's business). Fails on a failed test or any report.
+# sanitized DIR COMMAND...: runs COMMAND with every sanitizer halting on its
+# first report and writing it to DIR/sanitizer-reports, where reports of the
+# servers tests and the soak spawn land too (their exit status is not every
+# caller's business). Fails if COMMAND fails or on any report. ASAN_EXTRA, if
+# set, adds to ASAN's options.
 # TSAN ignores what its interceptors (malloc, memcpy, ...) see when called
 # from code it did not instrument (gRPC, abseil, protobuf; see the top-level
 # CMakeLists.txt for why the gRPC layer is not instrumented): such accesses
 # have no visible synchronization, so each one would be a false report.
 # tests/sanitizers/tsan.supp holds the (third-party) suppressions.
-sanitized_ctest() {
-  local dir=$1 reports="$PWD/$1/sanitizer-reports" status=0
+sanitized() {
+  local reports="$PWD/$1/sanitizer-reports" status=0
   shift
   rm -rf "$reports" && mkdir -p "$reports" || return 1
-  ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_path=$reports/asan" \
+  ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_path=$reports/asan${ASAN_EXTRA:+:$ASAN_EXTRA}" \
     UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_path=$reports/ubsan" \
     TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:log_path=$reports/tsan:suppressions=$PWD/tests/sanitizers/tsan.supp" \
-    ctest --test-dir "$dir" --output-on-failure -j"$JOBS" --timeout 900 "$@" ||
-    status=1
+    "$@" || status=1
   if compgen -G "$reports/*" > /dev/null; then
     echo "sanitizer reports in $reports:"
     cat "$reports"/*
     status=1
   fi
   return $status
+}
+
+# sanitized_ctest DIR CTEST_ARGS...: ctest in DIR, sanitized.
+sanitized_ctest() {
+  local dir=$1
+  shift
+  sanitized "$dir" ctest --test-dir "$dir" --output-on-failure -j"$JOBS" \
+    --timeout 900 "$@"
 }
 
 # tsan_test: the concurrency tests, then locatord's engine, re-tune timer and
@@ -130,13 +138,12 @@ tsan_test() {
     sanitized_ctest build-tsan -R '^LocatordTest\.'
 }
 
-# asan_soak: deploy/soak.sh on build-check's programs. Quarantine off: ASAN
-# would otherwise hold up to 256 MiB of freed blocks, which the soak would
-# count as the server's growth. Leaks and memory errors fail it as in tests.
+# asan_soak: deploy/soak.sh on build-check's programs, sanitized. Quarantine
+# off: ASAN would otherwise hold up to 256 MiB of freed blocks, which the
+# soak would count as the server's growth.
 asan_soak() {
-  ASAN_OPTIONS="quarantine_size_mb=0:detect_leaks=1:halt_on_error=1" \
-    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-    BUILD_DIR=build-check SOAK_WARMUP=$((SOAK_SECONDS / 3)) \
+  ASAN_EXTRA=quarantine_size_mb=0 sanitized build-check \
+    env BUILD_DIR=build-check SOAK_WARMUP=$((SOAK_SECONDS / 3)) \
     bash deploy/soak.sh --duration "$SOAK_SECONDS"
 }
 

@@ -1,18 +1,16 @@
-// DomainOutline: what a map of a constrained dataset draws over the
-// triangulation: the domain's boundary (outer boundaries and holes alike)
-// and its breaklines, as plain segments.
+// OutlineOf, OutlineOfMesh: the DomainOutline (locator/engine_info.h) of a
+// triangulation or of a mesh given as triangles: what a map of a constrained
+// dataset draws over it, the domain's boundary (outer boundaries and holes
+// alike) and its breaklines, as plain segments.
 //
-// Thread-safety: a plain value.
+// Thread-safety: pure functions.
 
 #ifndef LOCATOR_CORE_DOMAIN_OUTLINE_H_
 #define LOCATOR_CORE_DOMAIN_OUTLINE_H_
 
-#include <array>
 #include <cstddef>
-#include <vector>
 
 #include "locator/engine_info.h"
-#include "locator/geometry.h"
 
 namespace locator {
 

@@ -152,21 +152,11 @@ Status Triangulation::Builder::InsertPolylines(
   return Status::OK();
 }
 
-namespace {
-
-// InvalidArgument for a crossing of `what` whose point is beyond doubles.
-Status UncomputableCrossing(const std::string& what) {
-  return Status::InvalidArgument(
-      what +
-      " cross where the crossing point cannot be computed in doubles "
-      "(coordinates too large)");
-}
-
-}  // namespace
-
 Status Triangulation::Builder::InsertConstraints() {
-  // CGAL computes where constraints cross in doubles; near +-DBL_MAX that
-  // overflows, and CGAL throws rather than insert a point at infinity.
+  // CGAL computes where constraints cross in doubles, then widens the
+  // point's box by a few ulps to snap it to a nearby end; a crossing that
+  // overflowed, or lies within those ulps of +-DBL_MAX, makes that throw
+  // (boost::math domain_error), so no crossing vertex is ever non-finite.
   try {
     Status s = InsertPolylines(c_.breaklines, false, ConstraintKind::kBreakline,
                                "breakline");
@@ -180,7 +170,9 @@ Status Triangulation::Builder::InsertConstraints() {
     if (s.ok()) s = InsertMeshEdges();
     return s;
   } catch (const std::exception&) {
-    return UncomputableCrossing("two constraints");
+    return Status::InvalidArgument(
+        "two constraints cross where the crossing point cannot be computed "
+        "in doubles (coordinates too large)");
   }
 }
 
@@ -204,9 +196,6 @@ Status Triangulation::Builder::NameCrossings() {
       if (!created && !inside_boundary) continue;
       const auto [where, fresh] = claimed.emplace(v, k);
       if (fresh && !created) continue;
-      if (fresh && !IsFinite(FromCgal(v->point()))) {
-        return UncomputableCrossing(segment.name + " and another constraint");
-      }
       if (fresh) {
         // In Wide: the distances and the values may reach +-DBL_MAX.
         const Wide ab = Distance(FromCgal(a->point()), FromCgal(b->point()));
