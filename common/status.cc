@@ -20,6 +20,14 @@ std::string_view StatusCodeName(Status::Code code) {
       return "INTERNAL";
     case Status::Code::kIOError:
       return "IO_ERROR";
+    case Status::Code::kCancelled:
+      return "CANCELLED";
+    case Status::Code::kDeadlineExceeded:
+      return "DEADLINE_EXCEEDED";
+    case Status::Code::kUnauthenticated:
+      return "UNAUTHENTICATED";
+    case Status::Code::kPermissionDenied:
+      return "PERMISSION_DENIED";
   }
   return "UNKNOWN";
 }

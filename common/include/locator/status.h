@@ -4,8 +4,9 @@
 // names what was wrong (for dataset errors: "file:line: what"). Every code
 // but kIOError has the meaning of the canonical gRPC code of the same name;
 // kIOError (a file that exists could not be read or written) has no gRPC
-// twin. The service maps them all in one place (server/grpc/status_mapping.cc);
-// the core itself never includes gRPC.
+// twin. The server maps them in one place per transport (gRPC:
+// server/grpc/status_mapping.cc; HTTP: server/http/api_error.cc); the core
+// itself never includes gRPC.
 //
 // [[nodiscard]]: every function returning a Status must have it handled.
 //
@@ -31,6 +32,11 @@ class [[nodiscard]] Status {
     kUnavailable,
     kInternal,
     kIOError,
+    // Codes of the serving layer; the core never returns them.
+    kCancelled,
+    kDeadlineExceeded,
+    kUnauthenticated,
+    kPermissionDenied,
   };
 
   // An OK status.
@@ -57,6 +63,18 @@ class [[nodiscard]] Status {
   }
   static Status IOError(std::string_view msg) {
     return Status(Code::kIOError, msg);
+  }
+  static Status Cancelled(std::string_view msg) {
+    return Status(Code::kCancelled, msg);
+  }
+  static Status DeadlineExceeded(std::string_view msg) {
+    return Status(Code::kDeadlineExceeded, msg);
+  }
+  static Status Unauthenticated(std::string_view msg) {
+    return Status(Code::kUnauthenticated, msg);
+  }
+  static Status PermissionDenied(std::string_view msg) {
+    return Status(Code::kPermissionDenied, msg);
   }
 
   bool ok() const { return code_ == Code::kOk; }
