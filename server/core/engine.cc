@@ -138,8 +138,11 @@ Status Engine::Locate(const Point2& q, LocateResult* result,
   Status s = CheckFinite(q, "query point");
   if (s.ok()) s = CheckInterpolation(how);
   if (!s.ok()) return s;
-  locator_->Locate(q, result);
-  Reinterpolate(std::span(&q, 1), how, result);
+  const Detail detail = StrategyDetail(how, Detail::kFull);
+  locator_->Locate(q, result, detail);
+  if (detail == Detail::kAllButValue) {
+    InterpolateValues(std::span(&q, 1), how, result);
+  }
   Record(1, result->cost.total());
   walk_costs_->Add(result->cost.faces_visited);
   return Status::OK();
@@ -155,6 +158,7 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
   if (Status s = CheckInterpolation(how); !s.ok()) return s;
   results->resize(queries.size());
   const std::vector<uint32_t> order = HilbertOrder(queries, info_.bounding_box);
+  const Detail strategy_detail = StrategyDetail(how, detail);
   Point2 sorted[kBatchChunk];
   std::vector<LocateResult> located(kBatchChunk);
   for (size_t begin = 0; begin < queries.size(); begin += kBatchChunk) {
@@ -162,8 +166,10 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
     const size_t count = std::min(queries.size() - begin, kBatchChunk);
     for (size_t i = 0; i < count; ++i) sorted[i] = queries[order[begin + i]];
     const std::span<const Point2> chunk(sorted, count);
-    locator_->LocateMany(chunk, located.data(), detail);
-    Reinterpolate(chunk, how, located.data());
+    locator_->LocateMany(chunk, located.data(), strategy_detail);
+    if (strategy_detail == Detail::kAllButValue) {
+      InterpolateValues(chunk, how, located.data());
+    }
     uint64_t cost = 0;
     for (size_t i = 0; i < count; ++i) cost += located[i].cost.total();
     Record(count, cost);

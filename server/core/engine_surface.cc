@@ -30,9 +30,14 @@ Status Engine::CheckInterpolation(Interpolation how) const {
   return ::locator::CheckInterpolation(info_.constraints, how);
 }
 
-void Engine::Reinterpolate(std::span<const Point2> queries, Interpolation how,
-                           LocateResult* results) const {
-  if (how == Interpolation::kLinear) return;
+Detail Engine::StrategyDetail(Interpolation how, Detail detail) {
+  return how == Interpolation::kLinear || detail != Detail::kFull
+             ? detail
+             : Detail::kAllButValue;
+}
+
+void Engine::InterpolateValues(std::span<const Point2> queries,
+                               Interpolation how, LocateResult* results) const {
   for (size_t i = 0; i < queries.size(); ++i) {
     LocateResult& r = results[i];
     // A value means an in-domain triangle, whose id is its mesh index.

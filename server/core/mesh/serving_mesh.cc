@@ -263,7 +263,7 @@ void ServingMesh::Describe(uint32_t f, LocationType type, int feature,
   }
   if (has_values()) {
     out->has_value = true;
-    out->value = CornerValue(f, out->barycentric);
+    if (detail == Detail::kFull) out->value = CornerValue(f, out->barycentric);
   }
 }
 

@@ -161,6 +161,9 @@ class Engine {
   const DomainOutline& domain_outline() const { return outline_; }
 
  private:
+  // Tests watch the strategy through it (tests/core/engine_test_peer.h).
+  friend class EngineTestPeer;
+
   Engine();
   // Create with the certificate `simplification`, if any.
   static Status Build(Dataset dataset,
@@ -175,10 +178,14 @@ class Engine {
                        std::unique_ptr<Engine>* engine);
   // Counts `queries` answered at total `cost` in the serving statistics.
   void Record(uint64_t queries, uint64_t cost) const;
-  // Replaces the linear values of `results` (located with the strategy)
-  // with values interpolated `how`.
-  void Reinterpolate(std::span<const Point2> queries, Interpolation how,
-                     LocateResult* results) const;
+  // What the strategy is asked to fill for a locate of `detail` whose
+  // values are interpolated `how`: the value only when it is linear (the
+  // strategy's own), so that each value is computed once.
+  static Detail StrategyDetail(Interpolation how, Detail detail);
+  // Fills the values of `results`, located with Detail::kAllButValue, as
+  // interpolated `how` in the face the strategy found.
+  void InterpolateValues(std::span<const Point2> queries, Interpolation how,
+                         LocateResult* results) const;
 
   DatasetInfo info_;
   std::vector<std::array<Point2, 2>> edge_sample_;

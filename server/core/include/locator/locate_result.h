@@ -39,6 +39,9 @@ std::string_view LocationTypeName(LocationType type);
 enum class Detail : uint8_t {
   kFull,      // everything
   kLocation,  // all but barycentric and value (zeros, has_value false)
+  // All but the value: has_value says whether the point has one, and the
+  // caller computes it (the engine, for an interpolation other than linear).
+  kAllButValue,
 };
 
 // Cost of one query in the paper's metric: faces visited by the walk plus
