@@ -41,6 +41,11 @@ std::string PointText(const Point2& p);
 // (`max_bytes` >= 3).
 std::string TruncatedMessage(std::string_view message, size_t max_bytes);
 
+// The longest status message sent, in bytes; longer ones end in "...". Even
+// percent-encoded (3 bytes for each byte that is not printable ASCII) it
+// fits gRPC's default 8 KiB header limit with room for the other headers.
+inline constexpr size_t kMaxStatusMessageBytes = 1024;
+
 }  // namespace locator
 
 #endif  // LOCATOR_COMMON_INPUT_TEXT_H_

@@ -28,6 +28,8 @@ std::string_view StatusCodeName(Status::Code code) {
       return "UNAUTHENTICATED";
     case Status::Code::kPermissionDenied:
       return "PERMISSION_DENIED";
+    case Status::Code::kUnimplemented:
+      return "UNIMPLEMENTED";
   }
   return "UNKNOWN";
 }

@@ -171,7 +171,8 @@ std::string CrsTransformer::Describe() const {
   return "from " + QuotedCrs(request_crs_) + " to " + QuotedCrs(dataset_crs_);
 }
 
-Status CrsTransformer::ToDataset(std::span<Point2> points) const {
+Status CrsTransformer::ToDataset(std::span<Point2> points,
+                                 size_t first_index) const {
   for (size_t i = 0; i < points.size(); ++i) {
     if (!IsFinite(points[i])) continue;  // the caller's check names it
     Point2 lon_lat = points[i];
@@ -181,14 +182,14 @@ Status CrsTransformer::ToDataset(std::span<Point2> points) const {
           return a.Contains(lon_lat.x, lon_lat.y);
         });
     if (!inside) {
-      return Status::InvalidArgument(PointText(i, points[i]) +
+      return Status::InvalidArgument(PointText(first_index + i, points[i]) +
                                      " is outside the area of use of the "
                                      "transformation " +
                                      Describe());
     }
     const Point2 original = points[i];
     if (!Transform(request_to_dataset_.get(), PJ_FWD, &points[i])) {
-      return Status::InvalidArgument(PointText(i, original) +
+      return Status::InvalidArgument(PointText(first_index + i, original) +
                                      " cannot be transformed " + Describe() +
                                      ": " + LastProjError(context_));
     }

@@ -58,11 +58,12 @@ class CrsTransformer {
   ~CrsTransformer();
 
   // Maps `points` (request CRS) to the dataset CRS in place.
-  // InvalidArgument naming the first point (by index) outside the area of
-  // use of either CRS or that PROJ cannot transform; then `points` is
-  // partly transformed. Non-finite points are left as they are, for the
-  // caller's own check to name.
-  Status ToDataset(std::span<Point2> points) const;
+  // InvalidArgument naming the first point (by its index in the request:
+  // points[0] is point `first_index`) outside the area of use of either CRS
+  // or that PROJ cannot transform; then `points` is partly transformed.
+  // Non-finite points are left as they are, for the caller's own check to
+  // name.
+  Status ToDataset(std::span<Point2> points, size_t first_index = 0) const;
 
   // Maps `points` (dataset CRS) back to the request CRS in place;
   // InvalidArgument naming the first point PROJ cannot transform.

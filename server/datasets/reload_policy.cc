@@ -14,9 +14,9 @@
 #include "common/gis/untrusted_ogr_spec.h"
 #include "common/gis/untrusted_raster_spec.h"
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "server/datasets/dataset_source.h"
-#include "server/grpc/status_mapping.h"
 
 namespace locator {
 namespace {
@@ -42,16 +42,15 @@ std::string DatasetQuoted(std::string_view requested) {
   return "dataset " + QuotedInput(requested);
 }
 
-grpc::Status NotInReloadDir(const std::string& requested) {
-  return ToGrpcStatus(
-      Refusal::kPermissionDenied,
-      DatasetQuoted(requested) + " is not a file in this server's reload dir");
+Status NotInReloadDir(const std::string& requested) {
+  return Status::PermissionDenied(DatasetQuoted(requested) +
+                                  " is not a file in this server's reload dir");
 }
 
 // PERMISSION_DENIED for a spec that asks what a request may not ask.
-grpc::Status Refused(std::string_view requested, const Status& why) {
-  return ToGrpcStatus(Refusal::kPermissionDenied,
-                      DatasetQuoted(requested) + ": " + why.message());
+Status Refused(std::string_view requested, const Status& why) {
+  return Status::PermissionDenied(DatasetQuoted(requested) + ": " +
+                                  why.message());
 }
 
 // Parses `kind_spec` (`requested` without max_error and max_points) as its
@@ -98,62 +97,46 @@ ReloadPolicy::ReloadPolicy(std::string configured_dataset,
     : configured_dataset_(std::move(configured_dataset)),
       reload_dir_(std::move(reload_dir)) {}
 
-grpc::Status ReloadPolicy::Resolve(const std::string& requested,
-                                   std::string* spec) const {
+StatusOr<std::string> ReloadPolicy::Resolve(
+    const std::string& requested) const {
   if (requested.empty() || requested == configured_dataset_) {
-    *spec = "";
-    return grpc::Status::OK;
+    return std::string();
   }
   if (reload_dir_.empty()) {
-    return ToGrpcStatus(Refusal::kPermissionDenied,
-                        "this server reloads only its configured dataset "
-                        "(start it with --reload-dir to allow others)");
+    return Status::PermissionDenied(
+        "this server reloads only its configured dataset (start it with "
+        "--reload-dir to allow others)");
   }
-  return ResolveInReloadDir(requested, spec);
+  return ResolveInReloadDir(requested);
 }
 
-grpc::Status ReloadPolicy::ResolveInReloadDir(const std::string& requested,
-                                              std::string* spec) const {
+StatusOr<std::string> ReloadPolicy::ResolveInReloadDir(
+    const std::string& requested) const {
   std::string_view points;
   std::string_view wkt;
   if (SplitWktConstraintsSpec(requested, &points, &wkt)) {
-    std::string points_spec;
-    if (grpc::Status status =
-            ResolveInReloadDir(std::string(points), &points_spec);
-        !status.ok()) {
-      return status;
-    }
+    ASSIGN_OR_RETURN(const std::string points_spec,
+                     ResolveInReloadDir(std::string(points)));
     const std::string wkt_file = FileInReloadDir(std::string(wkt));
     if (wkt_file.empty()) return NotInReloadDir(requested);
-    *spec = points_spec + "+" + wkt_file;
-    return grpc::Status::OK;
+    return points_spec + "+" + wkt_file;
   }
-  if (IsGeneratorSpec(requested)) {
-    *spec = requested;
-    return grpc::Status::OK;
-  }
-  return ResolveFileSpec(requested, spec);
+  if (IsGeneratorSpec(requested)) return requested;
+  return ResolveFileSpec(requested);
 }
 
-grpc::Status ReloadPolicy::ResolveFileSpec(const std::string& requested,
-                                           std::string* spec) const {
+StatusOr<std::string> ReloadPolicy::ResolveFileSpec(
+    const std::string& requested) const {
   // The options every kind takes (max_error, max_points) only bound what is
   // built; the rest are the kind's own, checked before the file is looked
   // at, so that a refusal says nothing about which files exist.
   gis::SimplifySpec simplify;
   std::string kind_spec;
-  if (Status status =
-          gis::TakeSimplifyOptions(requested, &simplify, &kind_spec);
-      !status.ok()) {
-    return ToGrpcStatus(status);
-  }
+  RETURN_IF_ERROR(gis::TakeSimplifyOptions(requested, &simplify, &kind_spec));
   const DatasetKind kind = DatasetKindOf(kind_spec);
   gis::OgrDatasetSpec ogr;
   gis::RasterDatasetSpec raster;
-  if (Status status = ParseKindSpec(requested, kind_spec, kind, &ogr, &raster);
-      !status.ok()) {
-    return ToGrpcStatus(status);
-  }
+  RETURN_IF_ERROR(ParseKindSpec(requested, kind_spec, kind, &ogr, &raster));
   const Status refusal =
       kind == DatasetKind::kOgr      ? gis::CheckUntrustedOgrOptions(ogr)
       : kind == DatasetKind::kRaster ? gis::CheckUntrustedRasterOptions(raster)
@@ -178,12 +161,13 @@ grpc::Status ReloadPolicy::ResolveFileSpec(const std::string& requested,
     identified = gis::UntrustedRasterDriver(raster, file, &driver);
   }
   if (!identified.ok()) return Refused(requested, identified);
-  *spec = std::string(parts.prefix) + file + std::string(parts.options);
+  std::string spec =
+      std::string(parts.prefix) + file + std::string(parts.options);
   if (!driver.empty()) {
-    spec->push_back(parts.options.empty() ? '?' : '&');
-    spec->append(DriverOption(driver));
+    spec.push_back(parts.options.empty() ? '?' : '&');
+    spec.append(DriverOption(driver));
   }
-  return grpc::Status::OK;
+  return spec;
 }
 
 std::string ReloadPolicy::FileInReloadDir(const std::string& requested) const {

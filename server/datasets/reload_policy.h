@@ -28,9 +28,9 @@
 #ifndef LOCATOR_SERVER_RELOAD_POLICY_H_
 #define LOCATOR_SERVER_RELOAD_POLICY_H_
 
-#include <grpcpp/support/status.h>
-
 #include <string>
+
+#include "locator/status_or.h"
 
 namespace locator {
 
@@ -41,21 +41,19 @@ class ReloadPolicy {
   // `reload_dir` empty: only `configured_dataset` (and "").
   ReloadPolicy(std::string configured_dataset, std::string reload_dir);
 
-  // OK with `*spec` set to what to load for a Reload of `requested`: "" for
-  // the configured dataset, the generator spec, or the spec with its file's
-  // resolved path. PERMISSION_DENIED otherwise; INVALID_ARGUMENT for a spec
-  // whose options do not parse.
-  grpc::Status Resolve(const std::string& requested, std::string* spec) const;
+  // What to load for a Reload of `requested`: "" for the configured
+  // dataset, the generator spec, or the spec with its file's resolved path.
+  // PERMISSION_DENIED otherwise; INVALID_ARGUMENT for a spec whose options do
+  // not parse.
+  StatusOr<std::string> Resolve(const std::string& requested) const;
 
  private:
   // What to load for `requested` (not the configured dataset): the
   // generator spec, or the spec with its file(s) resolved.
-  grpc::Status ResolveInReloadDir(const std::string& requested,
-                                  std::string* spec) const;
+  StatusOr<std::string> ResolveInReloadDir(const std::string& requested) const;
   // ResolveInReloadDir for a spec that names a file (any kind but a
   // generator): its options checked, its file resolved, its driver chosen.
-  grpc::Status ResolveFileSpec(const std::string& requested,
-                               std::string* spec) const;
+  StatusOr<std::string> ResolveFileSpec(const std::string& requested) const;
   // The file of `requested` inside reload_dir_, resolved; "" if there is none.
   std::string FileInReloadDir(const std::string& requested) const;
 

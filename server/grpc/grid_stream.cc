@@ -3,15 +3,10 @@
 #include <algorithm>
 #include <utility>
 
+#include "server/app/surface_convert.h"
 #include "server/grpc/status_mapping.h"
-#include "server/grpc/surface_convert.h"
 
 namespace locator {
-
-uint32_t GridStream::RowsPerBlock(const RasterSpec& spec) {
-  return static_cast<uint32_t>(
-      std::max<size_t>(1, kMessageValues / spec.width));
-}
 
 GridStream::GridStream(grpc::CallbackServerContext* context,
                        CallDeadline deadline,
@@ -22,7 +17,7 @@ GridStream::GridStream(grpc::CallbackServerContext* context,
       deadline_(deadline),
       engine_(std::move(engine)),
       spec_(spec),
-      rows_per_block_(RowsPerBlock(spec)),
+      rows_per_block_(GridRowsPerBlock(spec)),
       blocks_((spec.height + rows_per_block_ - 1) / rows_per_block_),
       pool_(pool),
       keep_alive_(std::move(keep_alive)) {
@@ -41,7 +36,7 @@ void GridStream::RenderBlock(uint32_t block) {
   const uint32_t rows = std::min(rows_per_block_, spec_.height - first);
   grpc::Status status;
   if (deadline_.Passed()) {
-    status = deadline_.ExceededStatus("rendering the grid");
+    status = ToGrpcStatus(deadline_.ExceededStatus("rendering the grid"));
   } else if (context_->IsCancelled()) {
     status = grpc::Status(grpc::StatusCode::CANCELLED,
                           "call cancelled while rendering the grid");

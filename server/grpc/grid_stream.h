@@ -3,7 +3,7 @@
 // arrive in any order; the first message carries the header), with at most
 // kWindowBlocks blocks rendered ahead of the stream.
 //
-// Blocks are cut so that a message holds about kMessageValues values. A
+// Blocks are cut as GridRowsPerBlock() (surface_convert.h) says. A
 // worker checks before each block whether the client has gone or the
 // call's deadline has passed; then the call ends CANCELLED or
 // DEADLINE_EXCEEDED once the blocks being rendered are done, with no more
@@ -40,7 +40,6 @@ namespace locator {
 
 class GridStream final : public grpc::ServerWriteReactor<v1::GridResponse> {
  public:
-  static constexpr size_t kMessageValues = 1 << 17;  // 1 MiB of doubles
   static constexpr size_t kWindowBlocks = 8;
 
   // Streams `spec` (checked) rendered by `engine` (held until done), with
@@ -54,10 +53,6 @@ class GridStream final : public grpc::ServerWriteReactor<v1::GridResponse> {
 
   void OnWriteDone(bool ok) override EXCLUDES(mu_);
   void OnDone() override { delete this; }
-
-  // Rows per message for `spec`: about kMessageValues values, at least one
-  // row.
-  static uint32_t RowsPerBlock(const RasterSpec& spec);
 
  private:
   // What to do once mu_ is released.

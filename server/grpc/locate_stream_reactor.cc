@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "server/grpc/call_context.h"
 #include "server/grpc/status_mapping.h"
 
 namespace locator {
@@ -10,7 +11,7 @@ LocateStreamReactor::LocateStreamReactor(
     grpc::CallbackServerContext* context,
     std::chrono::milliseconds default_deadline, LocateFn locate)
     : context_(context),
-      deadline_(CallDeadline::For(*context, default_deadline)),
+      deadline_(DeadlineOf(*context, default_deadline)),
       locate_(std::move(locate)) {
   {
     // The reactions run on other threads; they see this construction (and
@@ -134,7 +135,7 @@ LocateStreamReactor::Actions LocateStreamReactor::ToActionsLocked(
                                     "the client stopped reading answers");
       break;
     case LocateStreamState::End::kDeadline:
-      actions.finish = deadline_.ExceededStatus("streaming");
+      actions.finish = ToGrpcStatus(deadline_.ExceededStatus("streaming"));
       break;
   }
   return actions;

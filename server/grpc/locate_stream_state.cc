@@ -1,6 +1,6 @@
 #include "server/grpc/locate_stream_state.h"
 
-#include "server/grpc/proto_convert.h"
+#include "server/app/proto_convert.h"
 
 namespace locator {
 

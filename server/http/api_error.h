@@ -1,33 +1,47 @@
 // ApiError: how locatord's HTTP server answers a failed call, whatever the
-// endpoint: the gRPC status the same call would have ended with over gRPC,
-// as the HTTP status HttpStatusFor() maps it to (or `http_status`, where
-// HTTP has a more precise one: 413 for a body over the limit, 405 for a
-// method a path does not take) and the JSON body
+// endpoint, and the one place where a Status becomes an HTTP status (gRPC's
+// is server/grpc/status_mapping.h). The answer has the HTTP status
+// HttpStatusFor() maps the status's code to (or `http_status`, where HTTP
+// has a more precise one: 413 for a body over the limit, 405 for a method a
+// path does not take) and the JSON body
 //
-//   {"code": <gRPC code number>, "status": "<gRPC code name>",
-//    "message": "<the gRPC message>"}
+//   {"code": <canonical code number>, "status": "<canonical code name>",
+//    "message": "<the status's message>"}
 //
-// The message is cut to kMaxStatusMessageBytes, as ToGrpcStatus cuts a gRPC
-// one, whichever way the status was made.
+// with the canonical (google.rpc.Code) numbers and names a gRPC client of
+// the same call sees. The message is cut to kMaxStatusMessageBytes, as a
+// gRPC one is.
 //
-// Thread-safety: a pure function.
+// Thread-safety: pure functions.
 
 #ifndef LOCATOR_SERVER_HTTP_API_ERROR_H_
 #define LOCATOR_SERVER_HTTP_API_ERROR_H_
 
-#include <grpcpp/support/status.h>
-
 #include <string>
 
+#include "locator/status.h"
 #include "server/http/http_server.h"
 
 namespace locator {
 
 inline constexpr char kJsonContentType[] = "application/json";
 
+// The canonical (google.rpc.Code, gRPC's) number of `code`; IO_ERROR is
+// INTERNAL (13), as over gRPC.
+int CanonicalCode(Status::Code code);
+// The HTTP status of a call that ended with canonical code `canonical`, as
+// grpc-gateway maps them: OK 200; INVALID_ARGUMENT, FAILED_PRECONDITION and
+// OUT_OF_RANGE 400; UNAUTHENTICATED 401; PERMISSION_DENIED 403; NOT_FOUND
+// 404; ALREADY_EXISTS and ABORTED 409; RESOURCE_EXHAUSTED 429; CANCELLED
+// 499; UNIMPLEMENTED 501; UNAVAILABLE 503; DEADLINE_EXCEEDED 504; the rest
+// (and a number outside the canonical codes) 500.
+unsigned HttpStatusForCanonicalCode(int canonical);
+// HttpStatusForCanonicalCode(CanonicalCode(code)).
+unsigned HttpStatusFor(Status::Code code);
+
 // The answer to a call that failed with `status` (not OK); `http_status`
-// 0: HttpStatusFor(status.error_code()).
-HttpResponse ApiError(const grpc::Status& status, unsigned http_status = 0);
+// 0: HttpStatusFor(status.code()).
+HttpResponse ApiError(const Status& status, unsigned http_status = 0);
 
 // Seconds a refused client is told to wait (Retry-After) before it retries.
 inline constexpr int kRetryAfterSeconds = 1;

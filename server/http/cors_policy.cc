@@ -27,10 +27,9 @@ bool CorsPolicy::IsPreflight(const HttpRequest& request) const {
 HttpResponse CorsPolicy::Preflight(const HttpRequest& request) const {
   const std::optional<std::string_view> origin = request.Header("origin");
   if (!Allows(origin)) {
-    return ApiError(grpc::Status(grpc::StatusCode::PERMISSION_DENIED,
-                                 "origin " + QuotedInput(origin.value_or("")) +
-                                     " may not call this server (see "
-                                     "--http-cors-origin)"));
+    return ApiError(Status::PermissionDenied(
+        "origin " + QuotedInput(origin.value_or("")) +
+        " may not call this server (see --http-cors-origin)"));
   }
   HttpResponse response;
   response.status = 204;

@@ -21,13 +21,15 @@
 
 #include "common/grpc_lifetime.h"
 #include "locator/engine.h"
+#include "server/app/locator_app.h"
 #include "server/config/server_config.h"
 #include "server/config/server_log.h"
 #include "server/datasets/dataset_builder.h"
 #include "server/datasets/dataset_registry.h"
 #include "server/grpc/locator_service.h"
-#include "server/http/status/status_server.h"
+#include "server/http/http_frontend.h"
 #include "server/main/server_runner.h"
+#include "server/metrics/rpc_metrics.h"
 
 namespace locator {
 namespace {
@@ -37,8 +39,8 @@ constexpr char kProgram[] = "locatord";
 // SIGHUP reloads every dataset that serves from its configured spec, each
 // on its own, like a Reload RPC naming it; one still loading its first
 // engine is left to finish.
-void ReloadOnHangup(LocatorService& service, const DatasetBuilder& builder) {
-  for (const std::unique_ptr<DatasetSlot>& slot : service.datasets().slots()) {
+void ReloadOnHangup(LocatorApp& app, const DatasetBuilder& builder) {
+  for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
     const std::string_view tag = builder.Tag(*slot);
     if (slot->serving().engine == nullptr) {
       LogLine(tag) << "SIGHUP: still loading, not reloaded";
@@ -58,33 +60,31 @@ void ReloadOnHangup(LocatorService& service, const DatasetBuilder& builder) {
 }
 
 // Periodic work acts on whichever engines the datasets serve at the time.
-void StartPeriodicWork(const ServerConfig& config, LocatorService& service,
-                       const DatasetBuilder& builder, StatusServer* status,
+void StartPeriodicWork(const ServerConfig& config, LocatorApp& app,
+                       const DatasetBuilder& builder, HttpFrontend* status,
                        ServerRunner* runner) {
   if (status != nullptr) {
     // The first sample is the baseline the first interval is measured from.
     status->SampleHistory();
-    runner->RunEvery(StatusServer::kHistorySeconds,
+    runner->RunEvery(HttpFrontend::kHistorySeconds,
                      [status] { status->SampleHistory(); });
   }
   if (config.stats_interval_s > 0) {
-    runner->RunEvery(config.stats_interval_s, [&service, &builder] {
-      for (const std::unique_ptr<DatasetSlot>& slot :
-           service.datasets().slots()) {
-        v1::GetStatsResponse stats;
-        if (!service.CurrentStats(slot->name(), &stats).ok()) continue;
+    runner->RunEvery(config.stats_interval_s, [&app, &builder] {
+      for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
+        StatusOr<v1::GetStatsResponse> stats = app.CurrentStats(slot->name());
+        if (!stats.ok()) continue;
         LogLine(builder.Tag(*slot))
-            << "stats: queries=" << stats.queries_served()
-            << " mean_cost_recent=" << stats.mean_cost_recent()
-            << " snapshot_version=" << stats.tuning().snapshot_version();
+            << "stats: queries=" << stats->queries_served()
+            << " mean_cost_recent=" << stats->mean_cost_recent()
+            << " snapshot_version=" << stats->tuning().snapshot_version();
       }
     });
   }
   if (config.retune_interval_s > 0) {
     // On the loop thread, which has nothing else to do between signals.
-    runner->RunEvery(config.retune_interval_s, [&service] {
-      for (const std::unique_ptr<DatasetSlot>& slot :
-           service.datasets().slots()) {
+    runner->RunEvery(config.retune_interval_s, [&app] {
+      for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
         if (std::shared_ptr<Engine> engine = slot->serving().engine) {
           engine->Retune();
         }
@@ -98,20 +98,20 @@ void StartPeriodicWork(const ServerConfig& config, LocatorService& service,
 // reports SERVING. A dataset that cannot be built stops the server.
 class StartupBuilds {
  public:
-  StartupBuilds(const ServerConfig& config, LocatorService& service,
-                const DatasetBuilder& builder, StatusServer* status_server,
+  StartupBuilds(const ServerConfig& config, LocatorApp& app,
+                const DatasetBuilder& builder, HttpFrontend* http_frontend,
                 ServerRunner* runner)
       : config_(config),
-        service_(service),
+        app_(app),
         builder_(builder),
-        status_server_(status_server),
+        http_frontend_(http_frontend),
         runner_(runner) {}
 
   // Starts building dataset `index` (the first: 0). The build runs off the
   // loop, so that signals are handled meanwhile, and hands its outcome to
   // the loop, which owns every state change of the process.
   void Start(size_t index) {
-    DatasetSlot& slot = *service_.datasets().slots()[index];
+    DatasetSlot& slot = *app_.datasets().slots()[index];
     // A first build is a reload from nothing, which nothing can refuse.
     const Status started = slot.StartReload(
         "", [this, index](const Status& status, std::shared_ptr<Engine> engine,
@@ -128,20 +128,20 @@ class StartupBuilds {
   // On the loop thread, once dataset `index`'s first build has ended.
   // `engine` is the one built (null when the build failed).
   void Built(size_t index, const Status& status, const Engine* engine) {
-    const DatasetSlot& slot = *service_.datasets().slots()[index];
+    const DatasetSlot& slot = *app_.datasets().slots()[index];
     if (!status.ok()) {
       Fail(slot, status);
       return;
     }
     LogLine(builder_.Tag(slot))
         << "serving " << engine->dataset_info().triangles << " triangles";
-    if (index + 1 < service_.datasets().slots().size()) {
+    if (index + 1 < app_.datasets().slots().size()) {
       Start(index + 1);
       return;
     }
     runner_->SetServing(true);
     if (index > 0) LogLine() << "serving all " << index + 1 << " datasets";
-    StartPeriodicWork(config_, service_, builder_, status_server_, runner_);
+    StartPeriodicWork(config_, app_, builder_, http_frontend_, runner_);
   }
 
   void Fail(const DatasetSlot& slot, const Status& status) {
@@ -154,9 +154,9 @@ class StartupBuilds {
   }
 
   const ServerConfig& config_;
-  LocatorService& service_;
+  LocatorApp& app_;
   const DatasetBuilder& builder_;
-  StatusServer* const status_server_;
+  HttpFrontend* const http_frontend_;
   ServerRunner* const runner_;
 };
 
@@ -169,7 +169,7 @@ int Main(int argc, char** argv) {
   }
 
   DatasetBuilder builder(config);
-  LocatorService service(LocatorServiceOptions{
+  LocatorApp app(LocatorAppOptions{
       .batch_threads = config.serving.threads,
       .max_batch_points = config.serving.max_batch_points,
       .max_profile_crossings = config.serving.max_profile_crossings,
@@ -184,14 +184,21 @@ int Main(int argc, char** argv) {
                                  std::shared_ptr<Engine>* engine) {
         return builder.Build(slot, spec, serving, engine);
       }});
+  LocatorService service(&app);
   // With --http-listen, every gRPC call is counted for /metrics.
-  std::unique_ptr<StatusServer> status_server;
+  std::unique_ptr<HttpFrontend> http_frontend;
+  std::optional<RpcMetrics> rpc_metrics;
   std::vector<
       std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
       interceptors;
   if (config.http_enabled()) {
-    status_server = std::make_unique<StatusServer>(
-        &service,
+    auto registry = std::make_shared<prometheus::Registry>();
+    rpc_metrics.emplace(
+        registry.get(),
+        ServerRunner::MethodsServed({v1::Locator::service_full_name()}));
+    interceptors.push_back(rpc_metrics->NewInterceptorFactory());
+    http_frontend = std::make_unique<HttpFrontend>(
+        &app,
         HttpOptions{.limits = {.max_body_bytes = config.http_max_body_bytes,
                                .max_connections = config.http_max_connections,
                                .max_connections_per_address =
@@ -199,8 +206,8 @@ int Main(int argc, char** argv) {
                     .cors_origins = config.http_cors_origins,
                     .api = {.max_grid_cells = config.http_max_grid_cells,
                             .max_waiting_calls = config.http_max_waiting_calls},
-                    .public_status = config.http_public_status});
-    interceptors.push_back(status_server->NewInterceptorFactory());
+                    .public_status = config.http_public_status},
+        std::move(registry));
   }
   std::unique_ptr<ServerRunner> runner;
   if (Status started = ServerRunner::Start(kProgram, config.serving, {&service},
@@ -209,24 +216,23 @@ int Main(int argc, char** argv) {
     std::cerr << kProgram << ": " << started.message() << std::endl;
     return 1;
   }
-  if (status_server != nullptr) {
+  if (http_frontend != nullptr) {
     if (Status listening =
-            status_server->Listen(config.http_host, config.http_port);
+            http_frontend->Listen(config.http_host, config.http_port);
         !listening.ok()) {
       std::cerr << kProgram << ": " << listening.message() << std::endl;
       runner->Stop(1);
       ExitWithoutTeardown(runner->Run());
     }
     std::cout << kProgram << " http listening on " << config.http_host << ":"
-              << status_server->port() << std::endl;
+              << http_frontend->port() << std::endl;
   }
-  runner->OnDrain([&service](std::chrono::system_clock::time_point deadline) {
-    service.Drain(deadline);
+  runner->OnDrain([&app](std::chrono::system_clock::time_point deadline) {
+    app.Drain(deadline);
   });
-  runner->OnHangup([&] { ReloadOnHangup(service, builder); });
-  runner->BeforeExit([&service, &builder] {
-    for (const std::unique_ptr<DatasetSlot>& slot :
-         service.datasets().slots()) {
+  runner->OnHangup([&] { ReloadOnHangup(app, builder); });
+  runner->BeforeExit([&app, &builder] {
+    for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
       if (std::shared_ptr<Engine> engine = slot->serving().engine) {
         DatasetBuilder::SaveTuningStateOrWarn(*engine, builder.Tag(*slot),
                                               "at exit");
@@ -236,7 +242,7 @@ int Main(int argc, char** argv) {
 
   // What the callbacks refer to here outlives them: the process ends below
   // without unwinding this frame.
-  StartupBuilds startup(config, service, builder, status_server.get(),
+  StartupBuilds startup(config, app, builder, http_frontend.get(),
                         runner.get());
   startup.Start(0);
   ExitWithoutTeardown(runner->Run());

@@ -5,8 +5,6 @@
 
 #include <cctype>
 
-#include "server/grpc/status_mapping.h"
-
 namespace locator {
 namespace {
 
@@ -41,15 +39,7 @@ AccessPolicy::Digest AccessPolicy::Sha256(std::string_view text) {
   return digest;
 }
 
-std::optional<std::string_view> AccessPolicy::Authorization(
-    const grpc::ServerContextBase& context) {
-  const auto& metadata = context.client_metadata();
-  const auto found = metadata.find("authorization");
-  if (found == metadata.end()) return std::nullopt;
-  return std::string_view(found->second.data(), found->second.size());
-}
-
-grpc::Status AccessPolicy::CheckAuthorization(
+Status AccessPolicy::CheckAuthorization(
     std::optional<std::string_view> authorization, Scope scope) const {
   // The digests this RPC accepts; none at all means it is open.
   std::array<const Digest*, 2> accepted = {nullptr, nullptr};
@@ -58,13 +48,13 @@ grpc::Status AccessPolicy::CheckAuthorization(
   } else if (data_) {
     accepted = {&*data_, admin_ ? &*admin_ : nullptr};
   }
-  if (accepted[0] == nullptr) return grpc::Status::OK;
+  if (accepted[0] == nullptr) return Status::OK();
 
   std::string_view token;
   if (!ParseBearer(authorization, &token)) {
-    return ToGrpcStatus(Refusal::kUnauthenticated,
-                        "expected 'authorization: Bearer <token>' (gRPC "
-                        "metadata or HTTP header)");
+    return Status::Unauthenticated(
+        "expected 'authorization: Bearer <token>' (gRPC metadata or HTTP "
+        "header)");
   }
   const Digest presented = Sha256(token);
   bool matched = false;
@@ -75,11 +65,10 @@ grpc::Status AccessPolicy::CheckAuthorization(
     matched |=
         CRYPTO_memcmp(presented.data(), digest->data(), presented.size()) == 0;
   }
-  if (matched) return grpc::Status::OK;
-  return ToGrpcStatus(Refusal::kPermissionDenied,
-                      scope == Scope::kAdmin
-                          ? "the bearer token is not accepted for admin RPCs"
-                          : "the bearer token is not accepted");
+  if (matched) return Status::OK();
+  return Status::PermissionDenied(
+      scope == Scope::kAdmin ? "the bearer token is not accepted for admin RPCs"
+                             : "the bearer token is not accepted");
 }
 
 }  // namespace locator

@@ -21,11 +21,11 @@
 #ifndef LOCATOR_SERVER_ACCESS_POLICY_H_
 #define LOCATOR_SERVER_ACCESS_POLICY_H_
 
-#include <grpcpp/grpcpp.h>
-
 #include <array>
 #include <optional>
 #include <string_view>
+
+#include "locator/status.h"
 
 namespace locator {
 
@@ -39,17 +39,12 @@ class AccessPolicy {
   // Empty tokens are not required (see the table above).
   AccessPolicy(std::string_view data_token, std::string_view admin_token);
 
-  // The "authorization" metadata of the gRPC call of `context` (nullopt
-  // when it has none), for CheckAuthorization().
-  static std::optional<std::string_view> Authorization(
-      const grpc::ServerContextBase& context);
-
   // OK if a call presenting `authorization` (an "authorization" metadata or
   // HTTP header value; nullopt when the call has none) may run an RPC of
   // `scope`; otherwise the refusal to finish it with. gRPC and HTTP calls
-  // alike are admitted by it (LocatorService::Admit).
-  grpc::Status CheckAuthorization(std::optional<std::string_view> authorization,
-                                  Scope scope) const;
+  // alike are admitted by it (LocatorApp::Admit).
+  Status CheckAuthorization(std::optional<std::string_view> authorization,
+                            Scope scope) const;
 
  private:
   using Digest = std::array<unsigned char, 32>;

@@ -8,10 +8,10 @@
 #ifndef LOCATOR_SERVER_CALL_DEADLINE_H_
 #define LOCATOR_SERVER_CALL_DEADLINE_H_
 
-#include <grpcpp/grpcpp.h>
-
 #include <chrono>
 #include <string_view>
+
+#include "locator/status.h"
 
 namespace locator {
 
@@ -21,12 +21,8 @@ struct CallDeadline {
   // Nonzero when `when` is the server's default, not the client's deadline.
   std::chrono::milliseconds server_default{0};
 
-  // The deadline for the call of `context`, with `server_default` (zero:
-  // none) standing in for a deadline the client did not set.
-  static CallDeadline For(const grpc::CallbackServerContext& context,
-                          std::chrono::milliseconds server_default);
-  // The deadline of a call that cannot carry one (HTTP): `server_default`
-  // from now (zero: none).
+  // The deadline of a call whose client set none: `server_default` from now
+  // (zero: none).
   static CallDeadline ServerDefault(std::chrono::milliseconds server_default);
 
   bool Passed() const { return std::chrono::system_clock::now() >= when; }
@@ -36,7 +32,7 @@ struct CallDeadline {
 
   // DEADLINE_EXCEEDED "deadline passed while <doing>", saying when it was
   // the server's default.
-  grpc::Status ExceededStatus(std::string_view doing) const;
+  Status ExceededStatus(std::string_view doing) const;
 };
 
 }  // namespace locator

@@ -8,13 +8,14 @@
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
 // {"code", "status", "message"} whose HTTP status is the code's
-// (HttpStatusFor; 405 for a wrong method), never INTERNAL or UNKNOWN (every
-// fault is the caller's or a limit), with a non-empty message shorter than
-// 1 KiB; unless a :locate body that protobuf parses, with a finite point and no
-// other dataset, is answered 200 with the engine's own triangle, and every
-// other :locate body 400 INVALID_ARGUMENT; and unless a :locateBatch answer has
-// one entry per point, a :profile answer's breakpoints come in order with its
-// crossings counted, and a :grid answer holds every cell its header announces.
+// (HttpStatusForCanonicalCode; 405 for a wrong method), never INTERNAL or
+// UNKNOWN (every fault is the caller's or a limit), with a non-empty message
+// shorter than 1 KiB; unless a :locate body that protobuf parses, with a finite
+// point and no other dataset, is answered 200 with the engine's own triangle,
+// and every other :locate body 400 INVALID_ARGUMENT; and unless a :locateBatch
+// answer has one entry per point, a :profile answer's breakpoints come in order
+// with its crossings counted, and a :grid answer holds every cell its header
+// announces.
 //
 // The seeds and dictionaries/http_json_fuzzer.dict hold issue 26's hostile
 // values: 1e160, 1e300, DBL_MAX, denormals, NaN and infinities as JSON,
@@ -38,8 +39,8 @@
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
 #include "locator/v1/locator.pb.h"
-#include "server/grpc/locator_service.h"
-#include "server/grpc/status_mapping.h"
+#include "server/app/locator_app.h"
+#include "server/http/api_error.h"
 #include "server/http/json/json_api.h"
 
 namespace locator {
@@ -79,20 +80,20 @@ constexpr size_t kMaxMessageBytes = 1024;
 
 struct Fixture {
   std::shared_ptr<Engine> engine;
-  std::unique_ptr<LocatorService> service;
+  std::unique_ptr<LocatorApp> app;
   std::unique_ptr<JsonApi> api;
 };
 
 Fixture* MakeFixture() {
   auto* f = new Fixture;
-  LocatorServiceOptions options;
+  LocatorAppOptions options;
   options.max_batch_points = 64;
   options.max_profile_crossings = 20000;
   options.max_grid_cells = 4096;
   options.datasets = {DatasetConfig{.spec = "fixed"},
                       DatasetConfig{"other", "fixed", true},
                       DatasetConfig{"utm", "fixed", true}};
-  f->service = std::make_unique<LocatorService>(options);
+  f->app = std::make_unique<LocatorApp>(options);
   std::unique_ptr<Engine> engine, utm;
   Dataset dataset = GenerateUniform(200, 3);
   for (const Point2& p : dataset.points) dataset.values.push_back(p.x - p.y);
@@ -113,11 +114,11 @@ Fixture* MakeFixture() {
     Fail("cannot build the utm engine", "");
   }
   f->engine = std::move(engine);
-  const auto& slots = f->service->datasets().slots();
+  const auto& slots = f->app->datasets().slots();
   slots[0]->Publish(f->engine);
   slots[1]->Publish(f->engine);
   slots[2]->Publish(std::shared_ptr<Engine>(std::move(utm)));
-  f->api = std::make_unique<JsonApi>(f->service.get());
+  f->api = std::make_unique<JsonApi>(f->app.get());
   return f;
 }
 
@@ -150,9 +151,9 @@ int CheckError(const HttpResponse& response) {
     Fail("an error is not {code, status, message}", response.body);
   }
   const int code = static_cast<int>(fields.at("code").number_value());
-  const grpc::StatusCode status = static_cast<grpc::StatusCode>(code);
-  if (status == grpc::StatusCode::INTERNAL ||
-      status == grpc::StatusCode::UNKNOWN) {
+  // INTERNAL and UNKNOWN (2, which no Status maps to) are the server's own.
+  constexpr int kUnknown = 2;
+  if (code == CanonicalCode(Status::Code::kInternal) || code == kUnknown) {
     Fail("an error that is not the caller's", response.body);
   }
   const std::string& message = fields.at("message").string_value();
@@ -160,7 +161,7 @@ int CheckError(const HttpResponse& response) {
     Fail("an empty or long message", response.body.substr(0, 2000));
   }
   if (response.status != 405 &&
-      response.status != HttpStatusFor(static_cast<grpc::StatusCode>(code))) {
+      response.status != HttpStatusForCanonicalCode(code)) {
     Fail("HTTP status " + std::to_string(response.status) + " for code " +
              std::to_string(code),
          response.body);

@@ -36,10 +36,10 @@
 
 #include "locator/engine.h"
 #include "locator/v1/locator.pb.h"
+#include "server/app/batch_locator.h"
+#include "server/app/proto_convert.h"
 #include "server/core/cgal/triangulation.h"
-#include "server/grpc/proto_convert.h"
 #include "server/grpc/status_mapping.h"
-#include "server/serving/batch_locator.h"
 
 namespace locator {
 namespace {
@@ -316,7 +316,7 @@ void FuzzOneInput(const uint8_t* data, size_t size) {
   Engine& engine = *fixture->engines[(mode >> 1) % kStrategies.size()];
   if (mode & 0x80) engine.Retune();
 
-  // As BatchLocator::Serve: validate the whole request, then read the
+  // As BatchLocator::Run: validate the whole request, then read the
   // points out of the columns.
   const Status valid = f.service.Validate(request);
   const size_t n =

@@ -14,16 +14,16 @@ namespace {
 
 using Scope = AccessPolicy::Scope;
 
-constexpr grpc::StatusCode kOk = grpc::StatusCode::OK;
-constexpr grpc::StatusCode kUnauthenticated = grpc::StatusCode::UNAUTHENTICATED;
-constexpr grpc::StatusCode kDenied = grpc::StatusCode::PERMISSION_DENIED;
+constexpr Status::Code kOk = Status::Code::kOk;
+constexpr Status::Code kUnauthenticated = Status::Code::kUnauthenticated;
+constexpr Status::Code kDenied = Status::Code::kPermissionDenied;
 
 struct Case {
   std::string data_token;
   std::string admin_token;
   std::optional<std::string> authorization;
   Scope scope;
-  grpc::StatusCode want;
+  Status::Code want;
 };
 
 TEST(AccessPolicyTest, EveryCombinationOfTokensAndScopes) {
@@ -65,27 +65,23 @@ TEST(AccessPolicyTest, EveryCombinationOfTokensAndScopes) {
     const AccessPolicy policy(c.data_token, c.admin_token);
     std::optional<std::string_view> authorization;
     if (c.authorization) authorization = *c.authorization;
-    const grpc::Status status =
-        policy.CheckAuthorization(authorization, c.scope);
-    EXPECT_EQ(status.error_code(), c.want)
+    const Status status = policy.CheckAuthorization(authorization, c.scope);
+    EXPECT_EQ(status.code(), c.want)
         << "data='" << c.data_token << "' admin='" << c.admin_token
         << "' authorization='" << c.authorization.value_or("<none>")
         << "' scope=" << (c.scope == Scope::kAdmin ? "admin" : "data") << ": "
-        << status.error_message();
+        << status.message();
   }
 }
 
 TEST(AccessPolicyTest, RefusalsSayWhatIsExpectedWithoutEchoingTheToken) {
   const AccessPolicy policy("data", "admin");
-  const grpc::Status missing =
-      policy.CheckAuthorization(std::nullopt, Scope::kData);
-  EXPECT_EQ(missing.error_message(),
+  const Status missing = policy.CheckAuthorization(std::nullopt, Scope::kData);
+  EXPECT_EQ(missing.message(),
             "expected 'authorization: Bearer <token>' (gRPC metadata or HTTP "
             "header)");
-  const grpc::Status wrong =
-      policy.CheckAuthorization("Bearer guess", Scope::kAdmin);
-  EXPECT_EQ(wrong.error_message(),
-            "the bearer token is not accepted for admin RPCs");
+  const Status wrong = policy.CheckAuthorization("Bearer guess", Scope::kAdmin);
+  EXPECT_EQ(wrong.message(), "the bearer token is not accepted for admin RPCs");
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 // holds a block until the call is interrupted, so that every interruption
 // happens by construction.
 
-#include "server/serving/batch_locator.h"
+#include "server/app/batch_locator.h"
 
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "locator/v1/locator.grpc.pb.h"
+#include "server/grpc/call_context.h"
 #include "tests/server/in_process_server.h"
 #include "tests/testing/wait.h"
 
@@ -45,20 +46,23 @@ class FakeBatchService final : public v1::Locator::CallbackService {
  public:
   FakeBatchService(size_t threads, size_t max_points,
                    std::chrono::milliseconds default_deadline)
-      : batch_locator_(threads, max_points, default_deadline) {}
+      : default_deadline_(default_deadline),
+        batch_locator_(threads, max_points, default_deadline) {}
 
   grpc::ServerUnaryReactor* LocateBatch(
       grpc::CallbackServerContext* context,
       const v1::LocateBatchRequest* request,
       v1::LocateBatchResponse* response) override {
-    return batch_locator_.Serve(
-        context, *request,
-        [this](std::span<const Point2> points,
+    grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+    batch_locator_.Run(
+        *request,
+        [this](std::span<Point2> points, size_t /*first_index*/,
                std::vector<LocateResult>* results,
                const std::function<bool()>& keep_going) {
           return LocateBlock(points, results, keep_going);
         },
-        response);
+        UnaryCallControl(context, reactor, default_deadline_), response);
+    return reactor;
   }
 
   int hold_block = -1;
@@ -87,6 +91,7 @@ class FakeBatchService final : public v1::Locator::CallbackService {
     return Status::OK();
   }
 
+  const std::chrono::milliseconds default_deadline_;
   BatchLocator batch_locator_;
 };
 

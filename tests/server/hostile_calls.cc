@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "client/locator_client.h"
-#include "server/grpc/status_mapping.h"
+#include "server/http/api_error.h"
 #include "tests/server/http/json_value.h"
 
 namespace locator::test {
@@ -104,7 +104,9 @@ Outcome CallHttp(int port, std::string_view method, std::string_view target,
   const bool http_refusal = reply.status == 405 || reply.status == 413 ||
                             reply.status == 414 || reply.status == 415 ||
                             reply.status == 431;
-  if (reply.status != HttpStatusFor(outcome.code) && !http_refusal) {
+  if (reply.status !=
+          HttpStatusForCanonicalCode(static_cast<int>(outcome.code)) &&
+      !http_refusal) {
     outcome.transport_problem = "HTTP " + std::to_string(reply.status) +
                                 " for " + CodeName(outcome.code) + " \"" +
                                 Shorten(outcome.message) + "\"";

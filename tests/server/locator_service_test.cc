@@ -1,6 +1,6 @@
-// LocatorService behind an in-process gRPC server, with an engine build
-// held at a barrier: while a reload builds, GetStats reports it and a
-// second Reload is refused; calls started before the swap finish on the
+// LocatorService (over a LocatorApp) behind an in-process gRPC server, with an
+// engine build held at a barrier: while a reload builds, GetStats reports it
+// and a second Reload is refused; calls started before the swap finish on the
 // engine they started with (a stream keeps it for its whole life), calls
 // started after it use the new one.
 
@@ -70,10 +70,11 @@ TEST(LocatorServiceTest, CallsInFlightFinishOnTheEngineTheyStartedWith) {
   const std::shared_ptr<Engine> old_engine = UniformEngine(2000, 1);
   const std::shared_ptr<Engine> new_engine = UniformEngine(3000, 2);
   HeldBuild held(new_engine);
-  LocatorServiceOptions options;
+  LocatorAppOptions options;
   options.build_engine = held.Build();
-  LocatorService service(options);
-  DatasetSlot& dataset = service.datasets().default_slot();
+  LocatorApp app(options);
+  LocatorService service(&app);
+  DatasetSlot& dataset = app.datasets().default_slot();
   EXPECT_EQ(dataset.Publish(old_engine), 1u);
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
@@ -153,7 +154,8 @@ TEST(LocatorServiceTest, CallsInFlightFinishOnTheEngineTheyStartedWith) {
 }
 
 TEST(LocatorServiceTest, CallsBeforePublishAreRefusedAsLoading) {
-  LocatorService service(LocatorServiceOptions{});
+  LocatorApp app(LocatorAppOptions{});
+  LocatorService service(&app);
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
   v1::LocateResponse response;
@@ -163,11 +165,12 @@ TEST(LocatorServiceTest, CallsBeforePublishAreRefusedAsLoading) {
 }
 
 TEST(LocatorServiceTest, DrainRefusesNewCalls) {
-  LocatorService service(LocatorServiceOptions{});
-  service.datasets().default_slot().Publish(UniformEngine(500, 3));
+  LocatorApp app(LocatorAppOptions{});
+  LocatorService service(&app);
+  app.datasets().default_slot().Publish(UniformEngine(500, 3));
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
-  service.Drain(std::chrono::system_clock::now());
+  app.Drain(std::chrono::system_clock::now());
   v1::LocateResponse response;
   const grpc::Status status = test::LocateOne(*stub, {0.5, 0.5}, &response);
   EXPECT_EQ(status.error_code(), Code::UNAVAILABLE);

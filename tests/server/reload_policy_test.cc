@@ -40,10 +40,9 @@ class ReloadPolicyTest : public ::testing::Test {
   // What Resolve() makes of `requested` under policy_; "denied" if refused.
   std::string Resolved(const ReloadPolicy& policy,
                        const std::string& requested) {
-    std::string spec = "unset";
-    const grpc::Status status = policy.Resolve(requested, &spec);
-    if (status.ok()) return spec;
-    EXPECT_EQ(status.error_code(), grpc::StatusCode::PERMISSION_DENIED)
+    const StatusOr<std::string> spec = policy.Resolve(requested);
+    if (spec.ok()) return *spec;
+    EXPECT_EQ(spec.status().code(), Status::Code::kPermissionDenied)
         << requested;
     return "denied";
   }
@@ -73,8 +72,7 @@ TEST_F(ReloadPolicyTest, WithoutAReloadDirEverythingElseIsDenied) {
         std::string("clusters:500:2"), dir_ + "/points.csv"}) {
     EXPECT_EQ(Resolved(policy, requested), "denied") << requested;
   }
-  std::string spec;
-  EXPECT_THAT(policy.Resolve(secret_, &spec).error_message(),
+  EXPECT_THAT(policy.Resolve(secret_).status().message(),
               HasSubstr("--reload-dir"));
 }
 
@@ -163,13 +161,12 @@ TEST_F(ReloadPolicyTest, NoEscapeByDotDotOrSymlinks) {
 
 TEST_F(ReloadPolicyTest, MissingAndExistingFilesAreDeniedAlike) {
   const ReloadPolicy policy("uniform:300:7", dir_);
-  std::string spec;
-  const grpc::Status missing = policy.Resolve(root_.path() + "/x.csv", &spec);
+  const Status missing = policy.Resolve(root_.path() + "/x.csv").status();
   fs::rename(secret_, root_.path() + "/x.csv");
-  const grpc::Status existing = policy.Resolve(root_.path() + "/x.csv", &spec);
-  EXPECT_EQ(missing.error_code(), grpc::StatusCode::PERMISSION_DENIED);
-  EXPECT_EQ(existing.error_code(), grpc::StatusCode::PERMISSION_DENIED);
-  EXPECT_EQ(missing.error_message(), existing.error_message());
+  const Status existing = policy.Resolve(root_.path() + "/x.csv").status();
+  EXPECT_EQ(missing.code(), Status::Code::kPermissionDenied);
+  EXPECT_EQ(existing.code(), Status::Code::kPermissionDenied);
+  EXPECT_EQ(missing.message(), existing.message());
   // Inside the dir, too: a missing file says nothing more than a forbidden
   // one.
   EXPECT_EQ(Resolved(policy, "missing.csv"), "denied");
@@ -195,12 +192,11 @@ class ReloadPolicyGisTest : public ReloadPolicyTest {
 
   // The refusal of `requested`, which must be PERMISSION_DENIED.
   std::string Denial(const std::string& requested) {
-    std::string spec;
-    const grpc::Status status =
-        ReloadPolicy("uniform:300:7", dir_).Resolve(requested, &spec);
-    EXPECT_EQ(status.error_code(), grpc::StatusCode::PERMISSION_DENIED)
-        << requested << " resolved to " << spec;
-    return status.error_message();
+    const StatusOr<std::string> spec =
+        ReloadPolicy("uniform:300:7", dir_).Resolve(requested);
+    EXPECT_EQ(spec.status().code(), Status::Code::kPermissionDenied)
+        << requested << " resolved to " << (spec.ok() ? *spec : "");
+    return spec.status().message();
   }
 };
 
@@ -258,11 +254,11 @@ TEST_F(ReloadPolicyGisTest, AnOptionIsDeniedAlikeWhateverTheFile) {
 }
 
 TEST_F(ReloadPolicyGisTest, MalformedOptionsAreInvalidArgument) {
-  std::string spec;
-  const grpc::Status status = ReloadPolicy("uniform:300:7", dir_)
-                                  .Resolve("pts.geojson?colour=red", &spec);
-  EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
-  EXPECT_THAT(status.error_message(), HasSubstr("unknown option 'colour'"));
+  const Status status = ReloadPolicy("uniform:300:7", dir_)
+                            .Resolve("pts.geojson?colour=red")
+                            .status();
+  EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
+  EXPECT_THAT(status.message(), HasSubstr("unknown option 'colour'"));
 }
 
 // Rasters: only drivers that read no file the raster names, an a_srs that
@@ -315,12 +311,10 @@ TEST_F(ReloadPolicyGisTest, MalformedRasterAndLasOptionsAreInvalidArgument) {
       {"points.csv?z=h", "unknown option 'z'"},
   };
   for (const auto& c : kCases) {
-    std::string spec;
-    const grpc::Status status =
-        ReloadPolicy("uniform:300:7", dir_).Resolve(c.requested, &spec);
-    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
-        << c.requested;
-    EXPECT_THAT(status.error_message(), HasSubstr(c.message)) << c.requested;
+    const Status status =
+        ReloadPolicy("uniform:300:7", dir_).Resolve(c.requested).status();
+    EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << c.requested;
+    EXPECT_THAT(status.message(), HasSubstr(c.message)) << c.requested;
   }
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "locator/v1/locator.pb.h"
-#include "server/grpc/proto_convert.h"
+#include "server/app/proto_convert.h"
 
 namespace locator {
 namespace {

@@ -3,7 +3,7 @@
 // stay finite doubles, or the request is refused saying which bound it
 // passes, in a message of short numbers.
 
-#include "server/grpc/surface_convert.h"
+#include "server/app/surface_convert.h"
 
 #include <gtest/gtest.h>
 

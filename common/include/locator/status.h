@@ -37,6 +37,7 @@ class [[nodiscard]] Status {
     kDeadlineExceeded,
     kUnauthenticated,
     kPermissionDenied,
+    kUnimplemented,
   };
 
   // An OK status.
@@ -76,11 +77,18 @@ class [[nodiscard]] Status {
   static Status PermissionDenied(std::string_view msg) {
     return Status(Code::kPermissionDenied, msg);
   }
+  static Status Unimplemented(std::string_view msg) {
+    return Status(Code::kUnimplemented, msg);
+  }
 
   bool ok() const { return code_ == Code::kOk; }
   Code code() const { return code_; }
   // The message without the code prefix; empty for OK.
   const std::string& message() const { return message_; }
+  // This status's code with `message` instead of its own (OK stays OK).
+  Status WithMessage(std::string_view message) const {
+    return ok() ? Status() : Status(code_, message);
+  }
   // "OK" or "<CodeName>: <message>", for logs and CLI output.
   std::string ToString() const;
 

@@ -1,7 +1,8 @@
 #include "server/bench/noop/noop_services.h"
 
+#include "server/app/proto_convert.h"
+#include "server/grpc/call_context.h"
 #include "server/grpc/locate_stream_reactor.h"
-#include "server/grpc/proto_convert.h"
 
 namespace locator {
 namespace {
@@ -46,9 +47,11 @@ grpc::ServerUnaryReactor* NoopLocatorService::Locate(
 grpc::ServerUnaryReactor* NoopLocatorService::LocateBatch(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
     v1::LocateBatchResponse* response) {
-  return batch_locator_.Serve(
-      context, *request,
-      [](std::span<const Point2> points, std::vector<LocateResult>* results,
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  batch_locator_.Run(
+      *request,
+      [](std::span<Point2> points, size_t /*first_index*/,
+         std::vector<LocateResult>* results,
          const std::function<bool()>& /*keep_going*/) {
         results->resize(points.size());
         for (size_t i = 0; i < points.size(); ++i) {
@@ -56,7 +59,8 @@ grpc::ServerUnaryReactor* NoopLocatorService::LocateBatch(
         }
         return Status::OK();
       },
-      response);
+      UnaryCallControl(context, reactor, default_deadline_), response);
+  return reactor;
 }
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*

@@ -19,8 +19,8 @@
 #include "locator/bench/v1/nested_batch.grpc.pb.h"
 #include "locator/locate_result.h"
 #include "locator/v1/locator.grpc.pb.h"
+#include "server/app/batch_locator.h"
 #include "server/config/server_config.h"
-#include "server/serving/batch_locator.h"
 
 namespace locator {
 

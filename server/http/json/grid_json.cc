@@ -4,10 +4,9 @@
 #include <vector>
 
 #include "common/proto_json.h"
+#include "common/status_macros.h"
 #include "locator/v1/locator.pb.h"
-#include "server/grpc/grid_stream.h"
-#include "server/grpc/status_mapping.h"
-#include "server/grpc/surface_convert.h"
+#include "server/app/surface_convert.h"
 #include "server/http/json/json_writer.h"
 
 namespace locator {
@@ -19,8 +18,8 @@ constexpr size_t kMaxBytesPerValue = 25;
 
 }  // namespace
 
-grpc::Status GridJson(const Engine& engine, const RasterSpec& spec,
-                      const CallDeadline& deadline, std::string* json) {
+Status GridJson(const Engine& engine, const RasterSpec& spec,
+                const CallDeadline& deadline, std::string* json) {
   v1::GridHeader header;
   ToGridHeader(spec, engine.dataset_info().crs, &header);
   JsonWriter out;
@@ -35,21 +34,18 @@ grpc::Status GridJson(const Engine& engine, const RasterSpec& spec,
       .Integer(spec.height)
       .Key("values")
       .BeginArray();
-  const uint32_t rows_per_block = GridStream::RowsPerBlock(spec);
+  const uint32_t rows_per_block = GridRowsPerBlock(spec);
   std::vector<double> block(size_t{rows_per_block} * spec.width);
   for (uint32_t first = 0; first < spec.height; first += rows_per_block) {
     if (deadline.Passed()) return deadline.ExceededStatus("rendering the grid");
     const uint32_t rows = std::min(rows_per_block, spec.height - first);
-    if (Status status = engine.RenderRows(spec, first, rows, block.data());
-        !status.ok()) {
-      return ToGrpcStatus(status);
-    }
+    RETURN_IF_ERROR(engine.RenderRows(spec, first, rows, block.data()));
     const size_t values = size_t{rows} * spec.width;
     for (size_t i = 0; i < values; ++i) out.ProtoNumber(block[i]);
   }
   out.EndArray().EndObject();
   *json = out.TakeText();
-  return grpc::Status::OK;
+  return Status::OK();
 }
 
 }  // namespace locator

@@ -1,7 +1,7 @@
 // GridJson: the HTTP/JSON answer to a Grid call: one GridResponse holding
 // the header and every row (first_row 0, rows = height), in protobuf's JSON
 // mapping as ProtoJson prints it (NaN and infinities as strings), rendered
-// and printed block by block (GridStream::RowsPerBlock rows at a time), so
+// and printed block by block (GridRowsPerBlock rows at a time), so
 // that the only thing held whole is the text itself: building a
 // GridResponse and printing it with protobuf took about 300 bytes per cell
 // at its peak, this takes the text's ~20. It stops between blocks once the
@@ -13,20 +13,19 @@
 #ifndef LOCATOR_SERVER_HTTP_GRID_JSON_H_
 #define LOCATOR_SERVER_HTTP_GRID_JSON_H_
 
-#include <grpcpp/support/status.h>
-
 #include <string>
 
 #include "locator/engine.h"
 #include "locator/raster.h"
+#include "locator/status.h"
 #include "server/serving/call_deadline.h"
 
 namespace locator {
 
 // Renders `spec` (checked) with `engine` into `json`; DEADLINE_EXCEEDED if
 // `deadline` passes first, or the engine's error.
-grpc::Status GridJson(const Engine& engine, const RasterSpec& spec,
-                      const CallDeadline& deadline, std::string* json);
+Status GridJson(const Engine& engine, const RasterSpec& spec,
+                const CallDeadline& deadline, std::string* json);
 
 }  // namespace locator
 

@@ -11,8 +11,7 @@
 
 #include "common/input_text.h"
 #include "common/proto_json.h"
-#include "server/grpc/status_mapping.h"
-#include "server/grpc/surface_convert.h"
+#include "server/app/surface_convert.h"
 #include "server/http/api_error.h"
 #include "server/http/json/grid_json.h"
 
@@ -24,30 +23,24 @@ constexpr std::string_view kDatasetsPath = "/v1/datasets";
 // for the field's path and a quoted prefix of the value.
 constexpr size_t kParseErrorBytes = 2 * kQuotedInputBytes;
 
-grpc::Status InvalidArgument(const std::string& message) {
-  return grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, message);
-}
-
 HttpResponse JsonAnswer(const google::protobuf::Message& message) {
   return HttpResponse{.content_type = kJsonContentType,
                       .body = ProtoJson(message)};
 }
 
 HttpResponse NoRoute(const HttpRequest& request) {
-  return ApiError(grpc::Status(
-      grpc::StatusCode::NOT_FOUND,
+  return ApiError(Status::NotFound(
       "no API method " + QuotedInput(request.method + " " + request.path) +
-          " (GET /v1/datasets, POST /v1/datasets/{name}:locate, "
-          ":locateBatch, :profile or :grid)"));
+      " (GET /v1/datasets, POST /v1/datasets/{name}:locate, :locateBatch, "
+      ":profile or :grid)"));
 }
 
 HttpResponse MethodNotAllowed(const HttpRequest& request,
                               std::string_view allowed) {
   HttpResponse response = ApiError(
-      grpc::Status(grpc::StatusCode::UNIMPLEMENTED,
-                   QuotedInput(request.method) + " is not allowed on " +
-                       QuotedInput(request.path) + "; use " +
-                       std::string(allowed)),
+      Status::Unimplemented(QuotedInput(request.method) +
+                            " is not allowed on " + QuotedInput(request.path) +
+                            "; use " + std::string(allowed)),
       405);
   response.headers.emplace_back("Allow", std::string(allowed));
   return response;
@@ -57,8 +50,8 @@ HttpResponse MethodNotAllowed(const HttpRequest& request,
 // *out, whose `dataset` field it sets. INVALID_ARGUMENT naming the parse
 // error, or a body `dataset` other than the path's.
 template <typename Request>
-grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
-                       Request* out) {
+Status ParseBody(const HttpRequest& request, std::string_view dataset,
+                 Request* out) {
   google::protobuf::util::JsonParseOptions options;
   options.ignore_unknown_fields = false;
   const std::string_view body =
@@ -70,17 +63,17 @@ grpc::Status ParseBody(const HttpRequest& request, std::string_view dataset,
     // an unknown field or a bad value whole.
     const std::string_view error(parsed.message().data(),
                                  parsed.message().size());
-    return InvalidArgument(
+    return Status::InvalidArgument(
         "the body is not a " + out->GetTypeName() + " in JSON: " +
         TruncatedMessage(error.substr(0, error.find('\n')), kParseErrorBytes));
   }
   if (!out->dataset().empty() && out->dataset() != dataset) {
-    return InvalidArgument("the body names dataset " +
-                           QuotedInput(out->dataset()) +
-                           " but the path names " + QuotedInput(dataset));
+    return Status::InvalidArgument(
+        "the body names dataset " + QuotedInput(out->dataset()) +
+        " but the path names " + QuotedInput(dataset));
   }
   out->set_dataset(std::string(dataset));
-  return grpc::Status::OK;
+  return Status::OK();
 }
 
 // `registry`, or, when it is null, the one kept in `own`, made on the first
@@ -98,20 +91,20 @@ prometheus::Registry& RegistryOr(prometheus::Registry* registry,
 const JsonApi::DatasetRoute JsonApi::kDatasetRoutes[] = {
     {"locate", AccessPolicy::Scope::kData,
      &JsonApi::ServeUnary<v1::LocateRequest, v1::LocateResponse,
-                          &LocatorService::RunLocate>,
+                          &LocatorApp::Locate>,
      std::numeric_limits<size_t>::max()},
     {"locateBatch", AccessPolicy::Scope::kData, &JsonApi::ServeLocateBatch,
      kCheapBatchBodyBytes},
     {"profile", AccessPolicy::Scope::kData,
      &JsonApi::ServeUnary<v1::ProfileRequest, v1::ProfileResponse,
-                          &LocatorService::RunProfile>,
+                          &LocatorApp::Profile>,
      0},
     {"grid", AccessPolicy::Scope::kData, &JsonApi::ServeGrid, 0},
 };
 
-JsonApi::JsonApi(LocatorService* service, JsonApiOptions options,
+JsonApi::JsonApi(LocatorApp* app, JsonApiOptions options,
                  prometheus::Registry* registry)
-    : service_(service),
+    : app_(app),
       options_(options),
       running_(prometheus::BuildGauge()
                    .Name("locator_http_calls_running")
@@ -136,8 +129,7 @@ void JsonApi::Shutdown() {
 void JsonApi::Handle(HttpRequest request, HttpReply reply) {
   DrainGate::Ticket ticket = pending_.Enter();
   if (ticket == nullptr) {
-    reply(ApiError(grpc::Status(grpc::StatusCode::UNAVAILABLE,
-                                "server is shutting down")));
+    reply(ApiError(Status::Unavailable("server is shutting down")));
     return;
   }
   // The reply keeps the call counted until it has been answered.
@@ -166,16 +158,15 @@ void JsonApi::ServeListDatasets(const HttpRequest& request, HttpReply reply) {
     reply(MethodNotAllowed(request, "GET"));
     return;
   }
-  LocatorService::Admission call;
-  if (grpc::Status refused =
-          service_->Admit(request.Header("authorization"),
-                          AccessPolicy::Scope::kData, std::nullopt, &call);
+  if (StatusOr<LocatorApp::Admission> refused =
+          app_->Admit(request.Header("authorization"),
+                      AccessPolicy::Scope::kData, std::nullopt);
       !refused.ok()) {
-    reply(ApiError(refused));
+    reply(ApiError(refused.status()));
     return;
   }
   v1::ListDatasetsResponse response;
-  service_->RunListDatasets(&response);
+  app_->ListDatasets(&response);
   reply(JsonAnswer(response));
 }
 
@@ -188,18 +179,17 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
       return;
     }
     // The deadline runs from the call's arrival: time queued counts.
-    const CallDeadline deadline = service_->DefaultDeadline();
-    LocatorService::Admission call;
-    if (grpc::Status refused = service_->Admit(request.Header("authorization"),
-                                               route.scope, name, &call);
-        !refused.ok()) {
-      reply(ApiError(refused));
+    const CallDeadline deadline = app_->DefaultDeadline();
+    StatusOr<LocatorApp::Admission> call =
+        app_->Admit(request.Header("authorization"), route.scope, name);
+    if (!call.ok()) {
+      reply(ApiError(call.status()));
       return;
     }
     ApiLane& lane =
         request.body.size() <= route.cheap_up_to_bytes ? cheap_ : expensive_;
     lane.Submit([this, &lane, serve = route.serve, deadline,
-                 call = std::move(call), request = std::move(request),
+                 call = *std::move(call), request = std::move(request),
                  reply = std::move(reply)](bool admitted) mutable {
       if (!admitted) {
         reply(BusyError("the " + lane.name() + " lane of this server's " +
@@ -220,21 +210,21 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
 }
 
 template <typename Request, typename Response, auto run>
-void JsonApi::ServeUnary(LocatorService::Admission call,
+void JsonApi::ServeUnary(LocatorApp::Admission call,
                          const CallDeadline& /*deadline*/,
                          const HttpRequest& request, HttpReply reply) {
   Request parsed;
-  if (grpc::Status bad = ParseBody(request, call.dataset->name(), &parsed);
+  if (Status bad = ParseBody(request, call.dataset->name(), &parsed);
       !bad.ok()) {
     reply(ApiError(bad));
     return;
   }
   Response response;
-  const grpc::Status status = (service_->*run)(call, parsed, &response);
+  const Status status = (app_->*run)(call, parsed, &response);
   reply(status.ok() ? JsonAnswer(response) : ApiError(status));
 }
 
-void JsonApi::ServeLocateBatch(LocatorService::Admission call,
+void JsonApi::ServeLocateBatch(LocatorApp::Admission call,
                                const CallDeadline& deadline,
                                const HttpRequest& request, HttpReply reply) {
   // Both live until the batch has finished, which may be on another thread.
@@ -243,52 +233,51 @@ void JsonApi::ServeLocateBatch(LocatorService::Admission call,
     v1::LocateBatchResponse response;
   };
   auto batch = std::make_shared<Batch>();
-  if (grpc::Status bad =
-          ParseBody(request, call.dataset->name(), &batch->request);
+  if (Status bad = ParseBody(request, call.dataset->name(), &batch->request);
       !bad.ok()) {
     reply(ApiError(bad));
     return;
   }
-  service_->RunLocateBatch(
+  app_->LocateBatch(
       std::move(call), batch->request,
       BatchLocator::CallControl{
           .deadline = deadline,
           .cancelled = nullptr,
           .finish =
-              [batch, reply = std::move(reply)](const grpc::Status& status) {
+              [batch, reply = std::move(reply)](const Status& status) {
                 reply(status.ok() ? JsonAnswer(batch->response)
                                   : ApiError(status));
               }},
       &batch->response);
 }
 
-void JsonApi::ServeGrid(LocatorService::Admission call,
+void JsonApi::ServeGrid(LocatorApp::Admission call,
                         const CallDeadline& deadline,
                         const HttpRequest& request, HttpReply reply) {
   v1::GridRequest parsed;
-  if (grpc::Status bad = ParseBody(request, call.dataset->name(), &parsed);
+  if (Status bad = ParseBody(request, call.dataset->name(), &parsed);
       !bad.ok()) {
     reply(ApiError(bad));
     return;
   }
   // The HTTP limit is checked first, so that its error names its flag.
-  RasterSpec spec;
-  if (Status shape = FromGridRequest(parsed, options_.max_grid_cells, &spec);
-      shape.code() == Status::Code::kResourceExhausted) {
-    reply(ApiError(grpc::Status(
-        grpc::StatusCode::RESOURCE_EXHAUSTED,
-        shape.message() +
-            " (--http-max-grid-cells: an HTTP :grid answers in one JSON "
-            "text; the gRPC Grid streams up to --max-grid-cells)")));
+  RasterSpec shape;
+  if (const Status over =
+          FromGridRequest(parsed, options_.max_grid_cells, &shape);
+      over.code() == Status::Code::kResourceExhausted) {
+    reply(ApiError(over.WithMessage(
+        over.message() +
+        " (--http-max-grid-cells: an HTTP :grid answers in one JSON text; "
+        "the gRPC Grid streams up to --max-grid-cells)")));
     return;
   }
-  if (grpc::Status refused = service_->GridSpec(call, parsed, &spec);
-      !refused.ok()) {
-    reply(ApiError(refused));
+  StatusOr<RasterSpec> spec = app_->GridSpec(call, parsed);
+  if (!spec.ok()) {
+    reply(ApiError(spec.status()));
     return;
   }
   std::string json;
-  const grpc::Status status = GridJson(*call.engine, spec, deadline, &json);
+  const Status status = GridJson(*call.engine, *spec, deadline, &json);
   reply(status.ok() ? HttpResponse{.content_type = kJsonContentType,
                                    .body = std::move(json)}
                     : ApiError(status));

@@ -18,12 +18,12 @@
 // 64-bit integers as strings, NaN as "NaN"). {name} sets the request's
 // `dataset`; a body naming another dataset is INVALID_ARGUMENT.
 //
-// Every call is admitted by LocatorService::Admit, as a gRPC call is (the
+// Every call is admitted by LocatorApp::Admit, as a gRPC call is (the
 // "authorization: Bearer <token>" header, the same scopes, the drain), and
-// runs the service's own Run*() method (a grid: GridSpec and GridJson), so
+// runs the application's own method (a grid: GridSpec and GridJson), so
 // the answers, limits and errors are the gRPC ones, and a :grid is also held
 // to JsonApiOptions::max_grid_cells, since its answer is one JSON text. An
-// error is the gRPC status as an ApiError (HTTP status by HttpStatusFor);
+// error is the Status as an ApiError (HTTP status by HttpStatusFor);
 // malformed JSON is 400 naming the parse error, an unknown path 404, a
 // method a path does not take 405 with Allow. HTTP carries no deadline, so
 // every call is held to the server's default deadline from its arrival
@@ -53,7 +53,7 @@
 #include <memory>
 #include <string_view>
 
-#include "server/grpc/locator_service.h"
+#include "server/app/locator_app.h"
 #include "server/http/api_lane.h"
 #include "server/http/http_server.h"
 #include "server/serving/call_deadline.h"
@@ -81,10 +81,10 @@ class JsonApi {
   // Where the API's paths start.
   static constexpr std::string_view kPathPrefix = "/v1/";
 
-  // Serves `service` (not owned; it must outlive the API) within `options`,
+  // Serves `app` (not owned; it must outlive the API) within `options`,
   // with the lanes' gauges in `registry` (null: a registry of its own,
   // which nothing reads).
-  explicit JsonApi(LocatorService* service, JsonApiOptions options = {},
+  explicit JsonApi(LocatorApp* app, JsonApiOptions options = {},
                    prometheus::Registry* registry = nullptr);
   // Shutdown().
   ~JsonApi();
@@ -103,7 +103,7 @@ class JsonApi {
   // The API method of a dataset: POST /v1/datasets/{name}:{method}. Runs
   // in a lane with the admitted call, its deadline and the request whose
   // body it parses, and answers through `reply`.
-  using DatasetMethod = void (JsonApi::*)(LocatorService::Admission call,
+  using DatasetMethod = void (JsonApi::*)(LocatorApp::Admission call,
                                           const CallDeadline& deadline,
                                           const HttpRequest& request,
                                           HttpReply reply);
@@ -112,12 +112,12 @@ class JsonApi {
   // A unary call: parses the body into Request, runs `run` and answers its
   // Response.
   template <typename Request, typename Response, auto run>
-  void ServeUnary(LocatorService::Admission call, const CallDeadline& deadline,
+  void ServeUnary(LocatorApp::Admission call, const CallDeadline& deadline,
                   const HttpRequest& request, HttpReply reply);
-  void ServeLocateBatch(LocatorService::Admission call,
+  void ServeLocateBatch(LocatorApp::Admission call,
                         const CallDeadline& deadline,
                         const HttpRequest& request, HttpReply reply);
-  void ServeGrid(LocatorService::Admission call, const CallDeadline& deadline,
+  void ServeGrid(LocatorApp::Admission call, const CallDeadline& deadline,
                  const HttpRequest& request, HttpReply reply);
   // POST /v1/datasets/{name}:{method}.
   void ServeDatasetMethod(HttpRequest request, std::string name,
@@ -135,7 +135,7 @@ class JsonApi {
   };
   static const DatasetRoute kDatasetRoutes[];
 
-  LocatorService* const service_;
+  LocatorApp* const app_;
   const JsonApiOptions options_;
   // Counts the calls whose reply is pending, for the destructor.
   DrainGate pending_;

@@ -3,7 +3,6 @@
 #include <utility>
 
 #include "common/proto_json.h"
-#include "server/grpc/status_mapping.h"
 #include "server/http/api_error.h"
 #include "server/http/embedded_files.h"
 #include "server/http/json/json_writer.h"
@@ -22,7 +21,7 @@ HttpResponse Failed(const Status& status) {
   if (status.code() == Status::Code::kUnavailable) {
     return HttpResponse{503, kJsonContentType, R"({"state":"loading"})"};
   }
-  return ApiError(ToGrpcStatus(status));
+  return ApiError(status);
 }
 
 // The value of parameter `name` in the query string `query` ("" if absent).
@@ -141,8 +140,7 @@ HttpResponse StatusEndpoints::Api(
     std::string_view path, std::string_view dataset,
     std::optional<std::string_view> authorization) const {
   if ((path == "/api/stats" || path == "/api/edges") && sources_.authorize) {
-    if (grpc::Status refused = sources_.authorize(authorization);
-        !refused.ok()) {
+    if (Status refused = sources_.authorize(authorization); !refused.ok()) {
       return ApiError(refused);
     }
   }

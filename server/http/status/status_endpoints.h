@@ -38,8 +38,6 @@
 #ifndef LOCATOR_SERVER_HTTP_STATUS_ENDPOINTS_H_
 #define LOCATOR_SERVER_HTTP_STATUS_ENDPOINTS_H_
 
-#include <grpcpp/support/status.h>
-
 #include <array>
 #include <functional>
 #include <optional>
@@ -81,7 +79,7 @@ using HistorySource = std::function<Status(std::string_view dataset,
 // nullopt without one) may read a dataset's statistics and edges, otherwise
 // the refusal (UNAUTHENTICATED / PERMISSION_DENIED).
 using StatusAuthorizer =
-    std::function<grpc::Status(std::optional<std::string_view> authorization)>;
+    std::function<Status(std::optional<std::string_view> authorization)>;
 
 struct StatusSources {
   // Null: /api/stats and /api/edges are public (--http-public-status).

@@ -11,7 +11,7 @@
 
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
-#include "server/grpc/proto_convert.h"
+#include "server/app/proto_convert.h"
 #include "server/metrics/engine_collector.h"
 #include "server/metrics/metrics_text.h"
 #include "server/serving/access_policy.h"
@@ -31,7 +31,7 @@ using ::testing::HasSubstr;
 class StatusEndpointsTest : public ::testing::Test {
  protected:
   // Endpoints over engine_, one dataset named "default", wired as locatord
-  // wires them (there through LocatorService::CurrentStats).
+  // wires them (there through LocatorApp::CurrentStats).
   StatusEndpoints Endpoints() {
     const auto known = [](std::string_view dataset) {
       return dataset.empty() || dataset == "default"

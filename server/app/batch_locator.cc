@@ -1,4 +1,4 @@
-#include "server/serving/batch_locator.h"
+#include "server/app/batch_locator.h"
 
 #include <algorithm>
 #include <atomic>
@@ -9,18 +9,16 @@
 
 #include "common/mutex.h"
 #include "locator/engine.h"
-#include "server/grpc/proto_convert.h"
-#include "server/grpc/status_mapping.h"
+#include "server/app/proto_convert.h"
 #include "server/serving/call_deadline.h"
 
 namespace locator {
 namespace {
 
-grpc::Status InterruptedStatus(const CallDeadline& deadline) {
+Status InterruptedStatus(const CallDeadline& deadline) {
   if (deadline.Passed()) return deadline.ExceededStatus("locating the batch");
   // Not the deadline, so the client went.
-  return grpc::Status(grpc::StatusCode::CANCELLED,
-                      "call cancelled while locating the batch");
+  return Status::Cancelled("call cancelled while locating the batch");
 }
 
 }  // namespace
@@ -81,28 +79,11 @@ size_t BatchLocator::ShardCount(size_t points) const {
   return std::clamp<size_t>(points / kMinShardPoints, 1, threads);
 }
 
-BatchLocator::CallControl BatchLocator::ControlFor(
-    grpc::CallbackServerContext* context,
-    grpc::ServerUnaryReactor* reactor) const {
-  return CallControl{
-      .deadline = CallDeadline::For(*context, default_deadline_),
-      .cancelled = [context] { return context->IsCancelled(); },
-      .finish = [reactor](const grpc::Status& s) { reactor->Finish(s); }};
-}
-
-grpc::ServerUnaryReactor* BatchLocator::Serve(
-    grpc::CallbackServerContext* context, const v1::LocateBatchRequest& request,
-    LocateBatchFn locate_batch, v1::LocateBatchResponse* response) {
-  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  Run(request, std::move(locate_batch), ControlFor(context, reactor), response);
-  return reactor;
-}
-
 void BatchLocator::Run(const v1::LocateBatchRequest& request,
                        LocateBatchFn locate_batch, CallControl control,
                        v1::LocateBatchResponse* response) {
   if (Status invalid = Validate(request); !invalid.ok()) {
-    control.finish(ToGrpcStatus(invalid));
+    control.finish(invalid);
     return;
   }
   const size_t points = static_cast<size_t>(request.xs_size());
@@ -150,7 +131,8 @@ void BatchLocator::RunShard(const std::shared_ptr<Call>& call, size_t begin,
       points.push_back(Point2{request.xs(static_cast<int>(i)),
                               request.ys(static_cast<int>(i))});
     }
-    Status status = call->locate_batch(points, &results, call->keep_going);
+    Status status =
+        call->locate_batch(points, block, &results, call->keep_going);
     if (!status.ok()) {
       call->Fail(status);
       break;
@@ -169,16 +151,16 @@ void BatchLocator::Complete(Call* call) {
     MutexLock lock(&call->failure_mu);
     failure = call->failure;
   }
-  const std::function<void(const grpc::Status&)>& finish = call->control.finish;
+  const std::function<void(const Status&)>& finish = call->control.finish;
   if (failure.ok()) {
     call->response->set_total_cost(
         call->total_cost.load(std::memory_order_relaxed));
-    finish(grpc::Status::OK);
+    finish(Status::OK());
   } else if (!call->keep_going()) {
     // Whatever failed, the client has gone or stopped waiting.
     finish(InterruptedStatus(call->control.deadline));
   } else {
-    finish(ToGrpcStatus(failure));
+    finish(failure);
   }
 }
 

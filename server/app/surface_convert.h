@@ -43,6 +43,12 @@ Status FromGridRequest(const v1::GridRequest& request, uint64_t max_cells,
 void ToGridHeader(const RasterSpec& spec, const std::string& crs_wkt,
                   v1::GridHeader* header);
 
+// The values a grid is rendered and sent in at a time: 1 MiB of doubles.
+inline constexpr size_t kGridBlockValues = size_t{1} << 17;
+// Rows per block (and per GridResponse message) for `spec`: about
+// kGridBlockValues values, at least one row.
+uint32_t GridRowsPerBlock(const RasterSpec& spec);
+
 }  // namespace locator
 
 #endif  // LOCATOR_SERVER_SURFACE_CONVERT_H_

@@ -1,4 +1,4 @@
-#include "server/grpc/surface_convert.h"
+#include "server/app/surface_convert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -170,6 +170,11 @@ void ToGridHeader(const RasterSpec& spec, const std::string& crs_wkt,
   header->set_cell_height(spec.cell_height());
   header->set_nodata(spec.nodata);
   header->set_crs_wkt(crs_wkt);
+}
+
+uint32_t GridRowsPerBlock(const RasterSpec& spec) {
+  return static_cast<uint32_t>(
+      std::max<size_t>(1, kGridBlockValues / spec.width));
 }
 
 }  // namespace locator

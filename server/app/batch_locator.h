@@ -8,13 +8,11 @@
 // blocks of kBlockPoints, so its buffers stay small and cache-resident however
 // large the batch, and checks between blocks whether to keep going.
 //
-// Owns the pool (threads - 1 workers). Thread-safety: Serve() may be called
+// Owns the pool (threads - 1 workers). Thread-safety: Run() may be called
 // from any number of threads at once.
 
 #ifndef LOCATOR_SERVER_BATCH_LOCATOR_H_
 #define LOCATOR_SERVER_BATCH_LOCATOR_H_
-
-#include <grpcpp/grpcpp.h>
 
 #include <chrono>
 #include <cstddef>
@@ -37,11 +35,14 @@ class BatchLocator {
   static constexpr size_t kMinShardPoints = 4096;
   static constexpr size_t kBlockPoints = 4096;
 
-  // Locates `points` into `results` (resized), polling `keep_going` between
-  // chunks: Engine::LocateBatch, or the no-op server's canned answers.
-  using LocateBatchFn = std::function<Status(
-      std::span<const Point2> points, std::vector<LocateResult>* results,
-      const std::function<bool()>& keep_going)>;
+  // Locates `points`, the request's points from `first_index` on, into
+  // `results` (resized), polling `keep_going` between chunks: the
+  // application's (which may transform `points` in place), or the no-op
+  // server's canned answers.
+  using LocateBatchFn =
+      std::function<Status(std::span<Point2> points, size_t first_index,
+                           std::vector<LocateResult>* results,
+                           const std::function<bool()>& keep_going)>;
 
   // How one call is carried out, whatever transport brought it (gRPC,
   // HTTP).
@@ -50,7 +51,7 @@ class BatchLocator {
     // Whether the client has gone; null when the transport cannot tell.
     std::function<bool()> cancelled;
     // Receives the call's outcome, once, on the thread that finished it.
-    std::function<void(const grpc::Status&)> finish;
+    std::function<void(const Status&)> finish;
   };
 
   // Splits large batches across `threads` threads (the caller plus
@@ -72,25 +73,13 @@ class BatchLocator {
   void Run(const v1::LocateBatchRequest& request, LocateBatchFn locate_batch,
            CallControl control, v1::LocateBatchResponse* response);
 
-  // The control of the gRPC call of `context`: its deadline (or the
-  // server's default) and cancellation, finishing `reactor`.
-  CallControl ControlFor(grpc::CallbackServerContext* context,
-                         grpc::ServerUnaryReactor* reactor) const;
-
-  // Run() for the gRPC call of `context` (see ControlFor), finishing the
-  // returned reactor.
-  grpc::ServerUnaryReactor* Serve(grpc::CallbackServerContext* context,
-                                  const v1::LocateBatchRequest& request,
-                                  LocateBatchFn locate_batch,
-                                  v1::LocateBatchResponse* response);
-
   // The deadline of a call that carries none (HTTP): the server's default
   // from now.
   CallDeadline DefaultDeadline() const {
     return CallDeadline::ServerDefault(default_deadline_);
   }
 
-  // The checks Serve() makes before locating anything: xs and ys of equal
+  // The checks Run() makes before locating anything: xs and ys of equal
   // length (InvalidArgument), at most max_batch_points points
   // (ResourceExhausted), finite coordinates (InvalidArgument naming the first
   // bad point's index). Public for the request fuzzer.

@@ -1,4 +1,4 @@
-#include "server/http/status/status_server.h"
+#include "server/http/http_frontend.h"
 
 #include <boost/beast/core/string.hpp>
 #include <chrono>
@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "server/http/api_error.h"
-#include "server/main/server_runner.h"
 #include "server/metrics/metrics_text.h"
 
 namespace locator {
@@ -33,20 +32,20 @@ bool IsJsonContentType(std::optional<std::string_view> content_type) {
 
 }  // namespace
 
-StatusServer::StatusServer(LocatorService* service, HttpOptions options)
-    : service_(service),
+HttpFrontend::HttpFrontend(LocatorApp* app, HttpOptions options,
+                           std::shared_ptr<prometheus::Registry> registry)
+    : app_(app),
       options_(std::move(options)),
-      registry_(std::make_shared<prometheus::Registry>()),
-      rpc_metrics_(registry_.get(), ServerRunner::MethodsServed(
-                                        {v1::Locator::service_full_name()})),
-      engine_collector_(std::make_shared<EngineCollector>([service] {
+      registry_(std::move(registry)),
+      engine_collector_(std::make_shared<EngineCollector>([app] {
         std::vector<DatasetStatsSample> samples;
-        for (const auto& slot : service->datasets().slots()) {
+        for (const auto& slot : app->datasets().slots()) {
           DatasetStatsSample& sample = samples.emplace_back();
           sample.dataset = slot->name();
-          v1::GetStatsResponse stats;
-          if (service->CurrentStats(slot->name(), &stats).ok()) {
-            sample.stats = std::move(stats);
+          if (StatusOr<v1::GetStatsResponse> stats =
+                  app->CurrentStats(slot->name());
+              stats.ok()) {
+            sample.stats = *std::move(stats);
           }
         }
         return samples;
@@ -55,22 +54,26 @@ StatusServer::StatusServer(LocatorService* service, HttpOptions options)
           .authorize =
               options_.public_status
                   ? StatusAuthorizer()
-                  : [service](std::optional<std::string_view> authorization) {
-                      return service->access_policy().CheckAuthorization(
+                  : [app](std::optional<std::string_view> authorization) {
+                      return app->access_policy().CheckAuthorization(
                           authorization, AccessPolicy::Scope::kData);
                     },
           .stats =
-              [service](std::string_view dataset, v1::GetStatsResponse* out) {
-                return service->CurrentStats(dataset, out);
+              [app](std::string_view dataset, v1::GetStatsResponse* out) {
+                StatusOr<v1::GetStatsResponse> stats =
+                    app->CurrentStats(dataset);
+                if (!stats.ok()) return stats.status();
+                *out = *std::move(stats);
+                return Status::OK();
               },
           .edges =
-              [service](std::string_view dataset, MapEdges* edges) {
-                std::shared_ptr<Engine> engine;
-                const Status status = service->ServingEngine(dataset, &engine);
-                if (!status.ok()) return status;
-                edges->segments = engine->EdgeSample();
-                edges->boundary = engine->domain_outline().boundary;
-                edges->breaklines = engine->domain_outline().breaklines;
+              [app](std::string_view dataset, MapEdges* edges) {
+                StatusOr<std::shared_ptr<Engine>> engine =
+                    app->ServingEngine(dataset);
+                if (!engine.ok()) return engine.status();
+                edges->segments = (*engine)->EdgeSample();
+                edges->boundary = (*engine)->domain_outline().boundary;
+                edges->breaklines = (*engine)->domain_outline().breaklines;
                 return Status::OK();
               },
           .history =
@@ -82,20 +85,15 @@ StatusServer::StatusServer(LocatorService* service, HttpOptions options)
                 return MetricsText({registry_, engine_collector_});
               }}),
       cors_(options_.cors_origins),
-      api_(service, options_.api, registry_.get()) {
-  for (const auto& slot : service->datasets().slots()) {
+      api_(app, options_.api, registry_.get()) {
+  for (const auto& slot : app->datasets().slots()) {
     histories_.try_emplace(slot->name());
   }
 }
 
-StatusServer::~StatusServer() { api_.Shutdown(); }
+HttpFrontend::~HttpFrontend() { api_.Shutdown(); }
 
-std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>
-StatusServer::NewInterceptorFactory() {
-  return rpc_metrics_.NewInterceptorFactory();
-}
-
-Status StatusServer::Listen(const std::string& host, int port) {
+Status HttpFrontend::Listen(const std::string& host, int port) {
   return HttpServer::Start(
       host, port, options_.limits,
       [this](HttpRequest request, HttpReply reply) {
@@ -104,7 +102,7 @@ Status StatusServer::Listen(const std::string& host, int port) {
       &http_);
 }
 
-void StatusServer::Route(HttpRequest request, HttpReply reply) {
+void HttpFrontend::Route(HttpRequest request, HttpReply reply) {
   if (cors_.IsPreflight(request)) {
     reply(cors_.Preflight(request));
     return;
@@ -126,9 +124,8 @@ void StatusServer::Route(HttpRequest request, HttpReply reply) {
   if (request.path.starts_with(JsonApi::kPathPrefix)) {
     if (request.method == "POST" &&
         !IsJsonContentType(request.Header("content-type"))) {
-      reply(ApiError(grpc::Status(grpc::StatusCode::INVALID_ARGUMENT,
-                                  "a POST to the API must have Content-Type: "
-                                  "application/json"),
+      reply(ApiError(Status::InvalidArgument("a POST to the API must have "
+                                             "Content-Type: application/json"),
                      415));
       return;
     }
@@ -145,30 +142,30 @@ void StatusServer::Route(HttpRequest request, HttpReply reply) {
                           request.Header("authorization")));
 }
 
-HttpResponse StatusServer::ProblemAnswer(const HttpRequest& request) const {
+HttpResponse HttpFrontend::ProblemAnswer(const HttpRequest& request) const {
   using Problem = HttpRequest::Problem;
-  const auto error = [](grpc::StatusCode code, const std::string& message,
-                        unsigned http_status) {
-    return ApiError(grpc::Status(code, message), http_status);
-  };
+
   const HttpLimits& limits = options_.limits;
   std::string busy;
   switch (request.problem) {
     case Problem::kBodyTooLarge:
-      return error(grpc::StatusCode::RESOURCE_EXHAUSTED,
-                   "the request body is larger than this server's limit of " +
-                       std::to_string(limits.max_body_bytes) +
-                       " bytes (--http-max-body-bytes)",
-                   413);
+      return ApiError(Status::ResourceExhausted(
+                          "the request body is larger than this server's "
+                          "limit of " +
+                          std::to_string(limits.max_body_bytes) +
+                          " bytes (--http-max-body-bytes)"),
+                      413);
     case Problem::kHeaderTooLarge:
-      return error(grpc::StatusCode::RESOURCE_EXHAUSTED,
-                   "the request header is larger than this server's limit "
-                   "of " +
-                       std::to_string(HttpServer::kMaxHeaderBytes) + " bytes",
-                   431);
+      return ApiError(
+          Status::ResourceExhausted(
+              "the request header is larger than this server's "
+              "limit of " +
+              std::to_string(HttpServer::kMaxHeaderBytes) + " bytes"),
+          431);
     case Problem::kMalformed:
-      return error(grpc::StatusCode::INVALID_ARGUMENT,
-                   "malformed HTTP request: " + request.problem_detail, 400);
+      return ApiError(Status::InvalidArgument("malformed HTTP request: " +
+                                              request.problem_detail),
+                      400);
     case Problem::kAddressFull:
       busy = request.problem_detail + " has " +
              std::to_string(limits.max_connections_per_address) +
@@ -184,23 +181,23 @@ HttpResponse StatusServer::ProblemAnswer(const HttpRequest& request) const {
   return BusyError(busy);
 }
 
-Status StatusServer::HistoryOf(std::string_view dataset,
+Status HttpFrontend::HistoryOf(std::string_view dataset,
                                const StatsHistory** history) const {
   DatasetSlot* slot = nullptr;
-  if (Status found = service_->datasets().Find(dataset, &slot); !found.ok()) {
+  if (Status found = app_->datasets().Find(dataset, &slot); !found.ok()) {
     return found;
   }
   *history = &histories_.find(slot->name())->second;
   return Status::OK();
 }
 
-void StatusServer::SampleHistory() {
+void HttpFrontend::SampleHistory() {
   const auto now = std::chrono::system_clock::now();
   for (auto& [name, history] : histories_) {
-    v1::GetStatsResponse stats;
-    if (!service_->CurrentStats(name, &stats).ok()) continue;
-    history.Record(stats.generation(), stats.queries_served(),
-                   stats.total_cost(), now);
+    StatusOr<v1::GetStatsResponse> stats = app_->CurrentStats(name);
+    if (!stats.ok()) continue;
+    history.Record(stats->generation(), stats->queries_served(),
+                   stats->total_cost(), now);
   }
 }
 

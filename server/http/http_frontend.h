@@ -1,6 +1,7 @@
-// StatusServer: locatord's HTTP side in one place: the Prometheus registry
-// with the per-RPC series (fed by a gRPC interceptor) and the per-dataset
-// engine series (read at scrape time), each dataset's stats history for
+// HttpFrontend: locatord's HTTP side in one place: /metrics (the
+// Prometheus registry it is given, holding the per-RPC series, and the
+// per-dataset engine series read at scrape time), each dataset's stats
+// history for
 // the status page's charts, and the HTTP server that answers
 // StatusEndpoints' paths (GET), the HTTP/JSON API under /v1/ (JsonApi), and
 // CORS preflights (CorsPolicy, which also marks every answer to an allowed
@@ -13,17 +14,15 @@
 // run. With tokens, /api/stats and /api/edges want the data token as
 // GetStats does, unless HttpOptions::public_status.
 //
-// Owns all of them. It reads the datasets through the LocatorService it is
-// given, as GetStats answers them (already redacted, see
-// LocatorService::CurrentStats), so a swapped engine is followed.
-// Thread-safety: SampleHistory() may be called from any thread; the
-// interceptor factory and the HTTP server run on gRPC's and their own
-// threads; Listen() once, before port().
+// Owns all of them but the registry, which it shares. It reads the datasets
+// through the application it is given, as GetStats answers them (already
+// redacted, see LocatorApp::CurrentStats), so a swapped engine is followed.
+// Thread-safety: SampleHistory() may be called from any thread; the HTTP
+// server runs on its own threads; Listen() once, before port().
 
 #ifndef LOCATOR_SERVER_HTTP_STATUS_SERVER_H_
 #define LOCATOR_SERVER_HTTP_STATUS_SERVER_H_
 
-#include <grpcpp/support/server_interceptor.h>
 #include <prometheus/registry.h>
 
 #include <map>
@@ -31,14 +30,13 @@
 #include <string>
 #include <vector>
 
-#include "server/grpc/locator_service.h"
+#include "server/app/locator_app.h"
 #include "server/http/cors_policy.h"
 #include "server/http/http_server.h"
 #include "server/http/json/json_api.h"
 #include "server/http/status/stats_history.h"
 #include "server/http/status/status_endpoints.h"
 #include "server/metrics/engine_collector.h"
-#include "server/metrics/rpc_metrics.h"
 
 namespace locator {
 
@@ -54,20 +52,17 @@ struct HttpOptions {
   bool public_status = false;
 };
 
-class StatusServer {
+class HttpFrontend {
  public:
   // Sample the history this often (SampleHistory()'s intended period).
   static constexpr double kHistorySeconds = 1.0;
 
-  // Serves `service`'s datasets (not owned; it must outlive this).
-  StatusServer(LocatorService* service, HttpOptions options);
+  // Serves `app`'s datasets (not owned; it must outlive this), with
+  // `registry`'s series on /metrics besides the engines'.
+  HttpFrontend(LocatorApp* app, HttpOptions options,
+               std::shared_ptr<prometheus::Registry> registry);
   // Waits for the API calls in flight, then stops the HTTP server.
-  ~StatusServer();
-
-  // For grpc::ServerBuilder: counts every call into the RPC series. This
-  // object must outlive the gRPC server.
-  std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>
-  NewInterceptorFactory();
+  ~HttpFrontend();
 
   // Starts the HTTP server on host:port (port 0: the OS picks). IOError if
   // the address cannot be bound.
@@ -87,10 +82,9 @@ class StatusServer {
   Status HistoryOf(std::string_view dataset,
                    const StatsHistory** history) const;
 
-  LocatorService* const service_;
+  LocatorApp* const app_;
   const HttpOptions options_;
   std::shared_ptr<prometheus::Registry> registry_;
-  RpcMetrics rpc_metrics_;
   std::shared_ptr<EngineCollector> engine_collector_;
   // One per dataset, by name; the set is fixed at construction.
   std::map<std::string, StatsHistory, std::less<>> histories_;

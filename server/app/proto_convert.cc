@@ -1,4 +1,4 @@
-#include "server/grpc/proto_convert.h"
+#include "server/app/proto_convert.h"
 
 #include <limits>
 #include <string>

@@ -1,0 +1,59 @@
+#include "server/app/request_crs.h"
+
+#include <span>
+#include <string>
+
+#include "common/gis/crs_transformer.h"
+#include "common/input_text.h"
+#include "common/status_macros.h"
+
+namespace locator {
+namespace {
+
+// The calling thread's transformer from `request_crs` to the dataset's.
+// Errors name the request's field.
+Status TransformerFor(const Engine& engine, const std::string& request_crs,
+                      gis::CrsTransformer** out) {
+  const std::string& dataset_crs = engine.dataset_info().crs;
+  if (dataset_crs.empty()) {
+    return Status::InvalidArgument(
+        "crs: the request names CRS " + gis::QuotedCrs(request_crs) +
+        " but the dataset has none; send points in the dataset's own "
+        "coordinates (no crs)");
+  }
+  const Status status =
+      gis::CrsTransformer::ForThread(request_crs, dataset_crs, out);
+  if (status.ok()) return status;
+  return Status::InvalidArgument("crs: " + status.message());
+}
+
+}  // namespace
+
+Status CheckRequestCrs(const Engine& engine, const std::string& crs) {
+  if (crs.empty()) return Status::OK();
+  gis::CrsTransformer* transformer = nullptr;
+  return TransformerFor(engine, crs, &transformer);
+}
+
+Status PointsInDatasetCrs(const Engine& engine, const std::string& crs,
+                          std::span<Point2> points, size_t first_index) {
+  if (crs.empty()) return Status::OK();
+  gis::CrsTransformer* transformer = nullptr;
+  RETURN_IF_ERROR(TransformerFor(engine, crs, &transformer));
+  return transformer->ToDataset(points, first_index);
+}
+
+Status LocateInRequestCrs(const Engine& engine, Point2 point,
+                          const QueryOptions& options, LocateResult* result) {
+  RETURN_IF_ERROR(
+      PointsInDatasetCrs(engine, options.crs, std::span<Point2>(&point, 1)));
+  RETURN_IF_ERROR(engine.Locate(point, result, options.interpolation));
+  if (options.crs.empty() || !options.vertices_in_request_crs) {
+    return Status::OK();
+  }
+  gis::CrsTransformer* transformer = nullptr;
+  RETURN_IF_ERROR(TransformerFor(engine, options.crs, &transformer));
+  return transformer->ToRequest(result->vertices);
+}
+
+}  // namespace locator

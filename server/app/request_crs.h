@@ -1,0 +1,53 @@
+// The request CRS: points a request sends in another CRS than the
+// dataset's (QueryOptions::crs) are transformed to the dataset's CRS once,
+// with the calling thread's cached PROJ transformer
+// (locator::gis::CrsTransformer::ForThread).
+//
+// The request's CRS is held to the request CRS policy
+// (common/gis/request_crs_policy.h): bounded in length, and PROJ opens no
+// file for it outside its own data directories; a CRS that failed once
+// fails again without PROJ being asked.
+//
+// Errors are InvalidArgument: an unknown CRS, one too long or naming a file
+// PROJ may not open, a CRS sent to a dataset that has none (these start
+// "crs: "), a point outside the transformation's area of use (named by its
+// index). Non-finite points are left as they are, for the engine's own
+// check and message.
+//
+// Thread-safety: free functions; may run on any thread.
+
+#ifndef LOCATOR_SERVER_REQUEST_CRS_H_
+#define LOCATOR_SERVER_REQUEST_CRS_H_
+
+#include <cstddef>
+#include <span>
+#include <string>
+
+#include "locator/engine.h"
+#include "locator/geometry.h"
+#include "locator/locate_result.h"
+#include "locator/status.h"
+#include "server/app/query_options.h"
+
+namespace locator {
+
+// Checks that the engine's dataset can take points in `crs` (nothing when
+// it is empty), with the errors above but a point's; the calling thread's
+// transformer is made then.
+Status CheckRequestCrs(const Engine& engine, const std::string& crs);
+
+// Transforms `points` from `crs` to the engine's dataset CRS in place;
+// nothing when `crs` is empty. points[0] is the request's point
+// `first_index`, as an error names it.
+Status PointsInDatasetCrs(const Engine& engine, const std::string& crs,
+                          std::span<Point2> points, size_t first_index = 0);
+
+// Locates `point` (in options.crs) on `engine` as `options` say; with
+// options.vertices_in_request_crs the result's vertices are returned in
+// options.crs.
+Status LocateInRequestCrs(const Engine& engine, Point2 point,
+                          const QueryOptions& options, LocateResult* result);
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_REQUEST_CRS_H_
