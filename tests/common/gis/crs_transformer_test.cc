@@ -83,6 +83,10 @@ TEST(CrsTransformerTest, PointOutsideTheAreaOfUseIsNamedByIndex) {
   EXPECT_THAT(status.message(),
               HasSubstr("point 2 (40, 10) is outside the area of use of the "
                         "transformation from 'EPSG:4326' to 'EPSG:32633'"));
+  // A block of a larger request names the point by its index there.
+  std::vector<Point2> block = {{16, 50}, {40, 10}};
+  EXPECT_THAT(transformer->ToDataset(block, /*first_index=*/8192).message(),
+              HasSubstr("point 8193 (40, 10) is outside the area of use"));
   // Coordinates in shortest form, not 17 digits of 1e300's double.
   std::vector<Point2> huge = {{0.1, 1e300}};
   EXPECT_THAT(transformer->ToDataset(huge).message(),
