@@ -162,7 +162,9 @@ Status FlagSet::ParseFlag(std::string_view word,
 }
 
 std::string FlagSet::Help() const {
-  std::string help = usage_ + "\nflags:\n";
+  std::string help = usage_;
+  while (!help.empty() && help.back() == '\n') help.pop_back();
+  help += "\n\nflags:\n";
   const auto add = [&help](std::string head, std::string_view text) {
     help += "  " + head;
     const size_t used = 2 + head.size();

@@ -1,7 +1,9 @@
 #include "common/flags/flag_value.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "common/flags/byte_size.h"
@@ -58,15 +60,17 @@ std::string Alternatives(const std::vector<std::string>& words) {
   return text;
 }
 
-FlagValue NumberValue(double* out, double min, bool above,
-                      std::string_view unit, std::string shape) {
+FlagValue NumberValue(double min, bool above, std::string_view unit,
+                      std::string shape, std::string default_text,
+                      std::function<void(double)> store) {
   std::string form = "must be a number";
   if (!unit.empty()) form += " of " + std::string(unit);
   form += (above ? " > " : " >= ") + NumberText(min);
   return FlagValue{
       .shape = std::move(shape),
-      .default_text = NumberText(*out),
-      .parse = [out, min, above, form](const std::vector<std::string>& words) {
+      .default_text = std::move(default_text),
+      .parse = [min, above, form, store = std::move(store)](
+                   const std::vector<std::string>& words) {
         const std::string& text = words[0];
         double value = 0;
         const auto [end, error] =
@@ -76,7 +80,7 @@ FlagValue NumberValue(double* out, double min, bool above,
             (above ? !(value > min) : !(value >= min))) {
           return Problem(form);
         }
-        *out = value;
+        store(value);
         return Status::OK();
       }};
 }
@@ -133,11 +137,58 @@ FlagValue CountInto(uint64_t min, uint64_t max, uint64_t current,
 }
 
 FlagValue Number(double* out, double min, bool above) {
-  return NumberValue(out, min, above, "", "X");
+  return NumberValue(min, above, "", "X", NumberText(*out),
+                     [out](double value) { *out = value; });
 }
 
 FlagValue Seconds(double* out, double min, bool above) {
-  return NumberValue(out, min, above, "seconds", "SECONDS");
+  return NumberValue(min, above, "seconds", "SECONDS", NumberText(*out),
+                     [out](double value) { *out = value; });
+}
+
+FlagValue NumberInto(double min, bool above,
+                     std::function<void(double)> store) {
+  return NumberValue(min, above, "", "X", "", std::move(store));
+}
+
+FlagValue CommaList(FlagValue element, std::function<void()> begin,
+                    std::function<void()> commit, std::string default_text) {
+  return FlagValue{
+      .shape = element.shape + "," + element.shape + ",...",
+      .default_text = std::move(default_text),
+      .parse = [parse = std::move(element.parse), begin = std::move(begin),
+                commit =
+                    std::move(commit)](const std::vector<std::string>& words) {
+        begin();
+        const std::string_view text = words[0];
+        for (size_t start = 0;;) {
+          const size_t comma = std::min(text.find(',', start), text.size());
+          const Status status =
+              parse({std::string(text.substr(start, comma - start))});
+          if (!status.ok()) {
+            return Problem(status.message() + ", comma-separated");
+          }
+          if (comma == text.size()) break;
+          start = comma + 1;
+        }
+        commit();
+        return Status::OK();
+      }};
+}
+
+FlagValue Texts(std::vector<std::string>* out) {
+  auto parsed = std::make_shared<std::vector<std::string>>();
+  return CommaList(
+      FlagValue{.shape = "WORD",
+                .default_text = "",
+                .parse =
+                    [parsed](const std::vector<std::string>& words) {
+                      if (words[0].empty()) return Problem("must be a word");
+                      parsed->push_back(words[0]);
+                      return Status::OK();
+                    }},
+      [parsed] { parsed->clear(); }, [parsed, out] { *out = *parsed; },
+      JoinList(*out));
 }
 
 FlagValue BytesInto(uint64_t min, uint64_t max, uint64_t current,

@@ -1,7 +1,8 @@
 // FlagValue: how the words of one command-line flag become a typed value,
 // and the makers of the kinds every program uses (flag::Switch, flag::Text,
 // flag::Count, flag::Seconds, flag::Number, flag::Bytes, flag::Choice,
-// flag::Repeated, flag::Words, flag::Parsed). A FlagSet (flag_set.h) holds
+// flag::Repeated, flag::Words, flag::Parsed, and the comma-separated lists
+// flag::Counts, flag::Numbers, flag::Texts). A FlagSet (flag_set.h) holds
 // one per flag and calls its `parse` for each occurrence on the line.
 //
 // A maker binds the value to its destination, whose value at that moment
@@ -21,6 +22,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -108,6 +111,48 @@ FlagValue Bytes(T* out, uint64_t min, uint64_t max) {
   return BytesInto(min, max, *out,
                    [out](uint64_t value) { *out = static_cast<T>(value); });
 }
+
+// A comma-separated list ("1000,20000"), each item read by `element`
+// (which stores through its own function): `begin` runs before the first
+// item, `commit` after the last when all were accepted. The typed lists
+// below are what programs call; they replace their default.
+FlagValue CommaList(FlagValue element, std::function<void()> begin,
+                    std::function<void()> commit, std::string default_text);
+
+// "a,b,c" of a list's default.
+template <typename T>
+std::string JoinList(const std::vector<T>& items) {
+  std::ostringstream text;
+  for (size_t i = 0; i < items.size(); ++i) text << (i ? "," : "") << items[i];
+  return text.str();
+}
+
+// Whole numbers in [min, max], comma-separated. Shape "N,N,...".
+template <typename T>
+FlagValue Counts(std::vector<T>* out, uint64_t min, uint64_t max) {
+  auto parsed = std::make_shared<std::vector<T>>();
+  return CommaList(
+      CountInto(min, max, 0,
+                [parsed](uint64_t v) { parsed->push_back(static_cast<T>(v)); }),
+      [parsed] { parsed->clear(); }, [parsed, out] { *out = *parsed; },
+      JoinList(*out));
+}
+
+// A finite number >= min (> min when `above`), through `store`.
+FlagValue NumberInto(double min, bool above, std::function<void(double)> store);
+
+// Numbers as Number takes them, comma-separated. Shape "X,X,...".
+inline FlagValue Numbers(std::vector<double>* out, double min,
+                         bool above = false) {
+  auto parsed = std::make_shared<std::vector<double>>();
+  return CommaList(
+      NumberInto(min, above, [parsed](double v) { parsed->push_back(v); }),
+      [parsed] { parsed->clear(); }, [parsed, out] { *out = *parsed; },
+      JoinList(*out));
+}
+
+// Non-empty words, comma-separated. Shape "WORD,WORD,...".
+FlagValue Texts(std::vector<std::string>* out);
 
 // One word of `choices` (word, value), into *out. Shape "a|b|c".
 FlagValue ChoiceInto(std::vector<std::string> words, size_t current,

@@ -216,6 +216,33 @@ TEST(FlagSetTest, NumbersAboveAMinimum) {
             "--duration '0': must be a number of seconds > 0");
 }
 
+TEST(FlagSetTest, CommaListsReplaceTheirDefaultWhole) {
+  std::vector<size_t> sizes = {1000, 2000};
+  std::vector<double> errors = {0.01};
+  std::vector<std::string> names;
+  FlagSet flags("x");
+  flags.Add("sizes", flag::Counts(&sizes, 1, 1000000), "s");
+  flags.Add("errors", flag::Numbers(&errors, 0, /*above=*/true), "e");
+  flags.Add("names", flag::Texts(&names), "n");
+  EXPECT_THAT(flags.Help(), HasSubstr("--sizes N,N,... "));
+  EXPECT_THAT(flags.Help(), HasSubstr("(default: 1000,2000)"));
+  ASSERT_TRUE(
+      flags.Parse({"--sizes", "5,6,7", "--errors=0.5,2", "--names", "a,b"})
+          .ok());
+  EXPECT_EQ(sizes, (std::vector<size_t>{5, 6, 7}));
+  EXPECT_EQ(errors, (std::vector<double>{0.5, 2}));
+  EXPECT_EQ(names, (std::vector<std::string>{"a", "b"}));
+  // A bad item leaves the list as it was.
+  EXPECT_EQ(flags.Parse({"--sizes", "8,0"}).message(),
+            "--sizes '8,0': must be a whole number from 1 to 1000000, "
+            "comma-separated");
+  EXPECT_EQ(sizes, (std::vector<size_t>{5, 6, 7}));
+  EXPECT_EQ(flags.Parse({"--errors", "0.5,"}).message(),
+            "--errors '0.5,': must be a number > 0, comma-separated");
+  EXPECT_EQ(flags.Parse({"--names", "a,,b"}).message(),
+            "--names 'a,,b': must be a word, comma-separated");
+}
+
 TEST(FlagSetTest, ParsedFlagsSayTheirOwnProblem) {
   int port = 0;
   FlagSet flags("x");
