@@ -2,13 +2,10 @@
 
 #include <grpcpp/support/client_interceptor.h>
 
-#include <boost/program_options.hpp>
 #include <utility>
 #include <vector>
 
 #include "common/credential_files.h"
-
-namespace po = boost::program_options;
 
 namespace locator {
 namespace {
@@ -106,23 +103,25 @@ std::shared_ptr<grpc::Channel> CreateLocatorChannel(
       options.target, Credentials(security), args, std::move(interceptors));
 }
 
-void AddChannelSecurityFlags(ChannelSecurityFlags* flags,
-                             po::options_description* options) {
-  options->add_options()(
-      "token-file", po::value(&flags->token_file),
-      "send this file's token as 'authorization: Bearer <token>' on every "
-      "call")("tls", po::bool_switch(&flags->tls),
-              "speak TLS (implied by the other --tls flags); without --tls-ca, "
-              "trust the system's roots")(
-      "tls-ca", po::value(&flags->tls_ca),
-      "trust servers whose certificate this PEM CA signed")(
-      "tls-cert", po::value(&flags->tls_cert),
-      "mutual TLS: present this PEM certificate chain (needs --tls-key)")(
-      "tls-key", po::value(&flags->tls_key),
-      "PEM private key of --tls-cert (unencrypted)")(
-      "tls-server-name", po::value(&flags->tls_server_name),
-      "check the server's certificate against this name instead of the "
-      "target's host");
+void AddChannelSecurityFlags(ChannelSecurityFlags* security_flags,
+                             FlagSet* flags) {
+  ChannelSecurityFlags& f = *security_flags;
+  flags->Add("token-file", flag::Text(&f.token_file).Shape("FILE"),
+             "send this file's token as 'authorization: Bearer <token>' on "
+             "every call");
+  flags->Add("tls", flag::Switch(&f.tls),
+             "speak TLS (implied by the other --tls flags); without --tls-ca, "
+             "trust the system's roots");
+  flags->Add("tls-ca", flag::Text(&f.tls_ca).Shape("FILE"),
+             "trust servers whose certificate this PEM CA signed");
+  flags->Add("tls-cert", flag::Text(&f.tls_cert).Shape("FILE"),
+             "mutual TLS: present this PEM certificate chain (needs "
+             "--tls-key)");
+  flags->Add("tls-key", flag::Text(&f.tls_key).Shape("FILE"),
+             "PEM private key of --tls-cert (unencrypted)");
+  flags->Add("tls-server-name", flag::Text(&f.tls_server_name).Shape("NAME"),
+             "check the server's certificate against this name instead of the "
+             "target's host");
 }
 
 Status LoadChannelSecurity(const ChannelSecurityFlags& flags,

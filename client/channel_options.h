@@ -15,10 +15,10 @@
 
 #include <grpcpp/grpcpp.h>
 
-#include <boost/program_options/options_description.hpp>
 #include <memory>
 #include <string>
 
+#include "common/flags/flag_set.h"
 #include "locator/status.h"
 
 namespace locator {
@@ -66,10 +66,10 @@ struct ChannelSecurityFlags {
   std::string tls_server_name;
 };
 
-// Declares the security flags.
-void AddChannelSecurityFlags(
-    ChannelSecurityFlags* flags,
-    boost::program_options::options_description* options);
+// Declares the security flags on `flags`, into `security_flags`, which
+// must outlive the parse.
+void AddChannelSecurityFlags(ChannelSecurityFlags* security_flags,
+                             FlagSet* flags);
 
 // Reads the files the flags name into `security`. InvalidArgument naming
 // the flag and the file when one cannot be read or does not parse, or when

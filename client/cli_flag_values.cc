@@ -4,33 +4,18 @@
 #include <limits>
 
 #include "client/points_reader.h"
+#include "common/flags/flag_value.h"
 #include "common/str_cat.h"
 
 namespace locator {
 
-Status ParseInterpolation(const std::string& name,
-                          v1::Interpolation* interpolation) {
-  if (name == "linear") {
-    *interpolation = v1::INTERPOLATION_LINEAR;
-  } else if (name == "natural-neighbor") {
-    *interpolation = v1::INTERPOLATION_NATURAL_NEIGHBOR;
-  } else if (name == "nearest") {
-    *interpolation = v1::INTERPOLATION_NEAREST;
-  } else {
-    return Status::InvalidArgument(
-        "--interpolation must be linear, natural-neighbor or nearest, not '" +
-        name + "'");
-  }
-  return Status::OK();
-}
-
 namespace {
 
-// The words of a flag that takes several numbers: what it takes, and which
-// numbers it accepts.
+// A flag that takes several numbers: which numbers it accepts, said as the
+// accepted form of each.
 struct NumbersFlag {
   const char* flag;
-  const char* takes;
+  const char* form;
   size_t count;
   bool (*accepts)(double number);
 };
@@ -46,35 +31,29 @@ bool PositiveFinite(double number) {
   return number > 0 && std::isfinite(number);
 }
 
-constexpr NumbersFlag kTe{"te", "XMIN YMIN XMAX YMAX", 4, AnyNumber};
-constexpr NumbersFlag kOutsize{"outsize", "WIDTH HEIGHT, whole numbers from 1",
-                               2, WholeCount};
-constexpr NumbersFlag kTr{"tr", "XRES YRES, positive numbers", 2,
+constexpr NumbersFlag kTe{"te", "a number (XMIN YMIN XMAX YMAX)", 4, AnyNumber};
+constexpr NumbersFlag kOutsize{
+    "outsize", "a whole number from 1 to 4294967295 (WIDTH HEIGHT)", 2,
+    WholeCount};
+constexpr NumbersFlag kTr{"tr", "a positive number (XRES YRES)", 2,
                           PositiveFinite};
 
-// The numbers of `words`. InvalidArgument "--FLAG takes WHAT: ..." for
-// another count of words (the flag given twice, or too few at the end of
-// the line), a word that is not a number, or a number the flag does not
-// accept.
+// The numbers of `words`. InvalidArgument "--FLAG 'WORD': must be FORM" for
+// the first word that is not a number the flag accepts, or for another
+// count of words.
 Status ParseNumbers(const NumbersFlag& flag,
                     const std::vector<std::string>& words,
                     std::vector<double>* numbers) {
-  const std::string problem =
-      StrCat({"--", flag.flag, " takes ", flag.takes, ": "});
+  const std::string form = StrCat({"must be ", flag.form});
   if (words.size() != flag.count) {
-    return Status::InvalidArgument(
-        StrCat({problem, std::to_string(flag.count), " values, once, not ",
-                std::to_string(words.size())}));
+    return FlagError(flag.flag,
+                     StrCat({std::to_string(words.size()), " words"}), form);
   }
   numbers->clear();
   for (const std::string& word : words) {
     double number = 0;
-    if (!ParseDouble(word, &number)) {
-      return Status::InvalidArgument(
-          StrCat({problem, "'", word, "' is not a number"}));
-    }
-    if (!flag.accepts(number)) {
-      return Status::InvalidArgument(StrCat({problem, "not '", word, "'"}));
+    if (!ParseDouble(word, &number) || !flag.accepts(number)) {
+      return FlagError(flag.flag, word, form);
     }
     numbers->push_back(number);
   }
@@ -84,7 +63,6 @@ Status ParseNumbers(const NumbersFlag& flag,
 }  // namespace
 
 Status ParseGridFlags(const GridFlagWords& words, GridSettings* grid) {
-  // The numbers first: a flag's value may have swallowed --out.
   std::vector<double> numbers;
   if (!words.te.empty()) {
     if (Status status = ParseNumbers(kTe, words.te, &numbers); !status.ok()) {
@@ -107,21 +85,22 @@ Status ParseGridFlags(const GridFlagWords& words, GridSettings* grid) {
     grid->width = static_cast<uint32_t>(numbers[0]);
     grid->height = static_cast<uint32_t>(numbers[1]);
   } else if (numbers[0] != numbers[1]) {
-    return Status::InvalidArgument(
-        "--tr: the Grid RPC renders square cells; give XRES equal to YRES");
+    return FlagError("tr", StrCat({words.tr[0], " ", words.tr[1]}),
+                     "the Grid RPC renders square cells: XRES must equal YRES");
   } else {
     grid->cell_size = numbers[0];
   }
   if (words.a_nodata.has_value() && words.nodata.has_value()) {
     return Status::InvalidArgument("give --a_nodata or --nodata, not both");
   }
+  const bool by_nodata = words.nodata.has_value();
   const std::optional<std::string>& nodata =
-      words.nodata.has_value() ? words.nodata : words.a_nodata;
+      by_nodata ? words.nodata : words.a_nodata;
   if (nodata.has_value()) {
     double value = 0;
     if (!ParseDouble(*nodata, &value)) {
-      return Status::InvalidArgument("--a_nodata takes a number, not '" +
-                                     *nodata + "'");
+      return FlagError(by_nodata ? "nodata" : "a_nodata", *nodata,
+                       "must be a number or nan");
     }
     grid->nodata = value;
   }

@@ -1,6 +1,6 @@
-// The values of the `locator` CLI's command-specific flags that need more
-// than the flag parser: --interpolation's names, and `grid`'s
-// GDAL-style --te, --outsize, --tr, --a_nodata (--nodata), --of and --co.
+// The values of the `locator` CLI's flags that need more than the flag
+// parser (common/flags): `grid`'s GDAL-style --te, --outsize, --tr,
+// --a_nodata (--nodata), --of and --co, which go together.
 //
 // Thread-safety: stateless functions.
 
@@ -17,12 +17,8 @@
 
 namespace locator {
 
-// "linear", "natural-neighbor" or "nearest" into `interpolation`;
-// InvalidArgument naming the three otherwise.
-Status ParseInterpolation(const std::string& name,
-                          v1::Interpolation* interpolation);
-
-// `grid`'s flags as the command line gave them (empty or absent: not given).
+// `grid`'s flags as the command line gave them (empty or absent: not given),
+// each with its number of words (the flag parser sees to that).
 struct GridFlagWords {
   std::vector<std::string> te;       // XMIN YMIN XMAX YMAX
   std::vector<std::string> outsize;  // WIDTH HEIGHT
@@ -34,9 +30,9 @@ struct GridFlagWords {
 
 // Converts `words` into `grid`, whose `out` and `format.driver` the flag
 // parser has set (an empty driver becomes gis::DefaultRasterDriver()).
-// InvalidArgument naming the flag: a word that is not a number, another
-// count of words, --outsize not whole numbers from 1, --tr not positive and
-// finite or not square, --outsize and --tr both or neither, --a_nodata
+// InvalidArgument naming the flag, as FlagError words it: a word that is
+// not a number, --outsize not whole numbers from 1, --tr not positive and
+// finite or not square; and --outsize and --tr both or neither, --a_nodata
 // and --nodata both, no --out, and a format gis::CheckRasterFormat rejects.
 Status ParseGridFlags(const GridFlagWords& words, GridSettings* grid);
 

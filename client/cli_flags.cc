@@ -1,14 +1,11 @@
 #include "client/cli_flags.h"
 
 #include <algorithm>
-#include <boost/program_options.hpp>
 #include <limits>
-#include <sstream>
 
 #include "client/cli_flag_values.h"
 #include "client/polyline_text.h"
-
-namespace po = boost::program_options;
+#include "common/flags/flag_set.h"
 
 namespace locator {
 namespace {
@@ -45,7 +42,6 @@ commands:
 
 exit codes: 0 ok, 1 RPC error (or not SERVING), 2 usage error (or a file
 that cannot be read or written)
-
 )";
 
 // The commands that take each command-specific flag.
@@ -89,124 +85,103 @@ std::string JoinNames(const std::vector<std::string_view>& names) {
   return joined;
 }
 
-// A flag that takes exactly `count` values, e.g. --te XMIN YMIN XMAX YMAX.
-// Values may be negative numbers: short flags are off, so "-10" is a value.
-class FixedTokens : public po::typed_value<std::vector<std::string>> {
- public:
-  FixedTokens(std::vector<std::string>* store, unsigned count)
-      : po::typed_value<std::vector<std::string>>(store), count_(count) {}
-  unsigned min_tokens() const override { return count_; }
-  unsigned max_tokens() const override { return count_; }
-
- private:
-  const unsigned count_;
+// The flags whose values ParseCliLine checks once the command is known.
+struct GridValues {
+  GridFlagWords words;
+  std::string a_nodata;  // into words.a_nodata when given
+  std::string nodata;    // into words.nodata when given
 };
 
-// The flags as parsed, before they are checked and converted.
-struct RawFlags {
-  int64_t deadline_ms = 0;
-  int64_t chunk = 0;
-  int64_t samples = 0;
-  std::string interpolation;
-  std::string line;
-  GridFlagWords grid;
-  std::string a_nodata;  // into grid.a_nodata when given
-  std::string nodata;    // into grid.nodata when given
-};
-
-// The profile command's flags into settings->profile.
-Status ParseProfileFlags(const RawFlags& raw, const po::variables_map& parsed,
-                         CliSettings* settings) {
-  if (!parsed.count("line")) {
+// The profile command's flags: --line is required, --json and --csv
+// exclusive.
+Status CheckProfileFlags(const FlagSet& flags, const CliSettings& settings) {
+  if (!flags.Given("line")) {
     return Status::InvalidArgument("profile needs --line");
   }
-  if (Status status = ParsePolyline(raw.line, &settings->profile.line);
-      !status.ok()) {
-    return Status::InvalidArgument("--line: " + status.message());
-  }
-  if (raw.samples < 0 || raw.samples > std::numeric_limits<uint32_t>::max()) {
-    return Status::InvalidArgument("--samples must be from 0 to 4294967295");
-  }
-  settings->profile.samples = static_cast<uint32_t>(raw.samples);
-  if (settings->json && settings->csv) {
+  if (settings.json && settings.csv) {
     return Status::InvalidArgument("give --json or --csv, not both");
   }
   return Status::OK();
 }
 
 // InvalidArgument for a command-specific flag given to another command.
-Status CheckFlagsFitCommand(const std::string& command,
-                            const po::variables_map& parsed) {
+Status CheckFlagsFitCommand(const std::string& command, const FlagSet& flags) {
   for (const FlagCommands& flag : CommandFlags()) {
-    const std::string name(flag.flag);
-    if (!parsed.count(name) || parsed[name].defaulted()) continue;
+    if (!flags.Given(flag.flag)) continue;
     if (std::find(flag.commands.begin(), flag.commands.end(), command) !=
         flag.commands.end()) {
       continue;
     }
-    return Status::InvalidArgument("--" + name + " is for " +
+    return Status::InvalidArgument("--" + std::string(flag.flag) + " is for " +
                                    JoinNames(flag.commands) + " only");
   }
   return Status::OK();
 }
 
-po::options_description Flags(CliLine* line, RawFlags* raw) {
-  po::options_description flags("flags");
-  flags.add_options()              //
-      ("help", "print this help")  //
-      ("target",
-       po::value(&line->channel.target)->default_value(line->channel.target),
-       "server address HOST:PORT")  //
-      ("deadline-ms",
-       po::value(&raw->deadline_ms)->default_value(raw->deadline_ms),
-       "deadline of every call, in milliseconds")  //
-      ("json", po::bool_switch(&line->settings.json),
-       "print one JSON object (locate, stats, retune, reload, health, "
-       "datasets, profile)")  //
-      ("retry", po::bool_switch(&line->channel.retry_unavailable),
-       "retry calls that fail with UNAVAILABLE, with backoff")  //
-      ("dataset", po::value(&line->scope.dataset)->value_name("NAME"),
-       "the server's dataset to query (default: its default dataset)")  //
-      ("crs", po::value(&line->scope.crs)->value_name("CRS"),
-       "locate, batch, profile: the CRS of the points (EPSG:4326, WKT or a "
-       "PROJ string; x = longitude/easting); default: the dataset's own "
-       "coordinates")  //
-      ("interpolation", po::value(&raw->interpolation)->value_name("METHOD"),
-       "locate, batch, profile, grid: linear (default), natural-neighbor or "
-       "nearest")  //
-      ("chunk", po::value(&raw->chunk)->default_value(raw->chunk),
-       "points per LocateBatch call of `batch`")  //
-      ("line", po::value(&raw->line)->value_name("LINE"),
-       "profile: the polyline, \"x0,y0 x1,y1 ...\" or WKT \"LINESTRING (x0 "
-       "y0, x1 y1, ...)\"")  //
-      ("samples", po::value(&raw->samples)->value_name("N"),
-       "profile: also N evenly spaced points along the line")  //
-      ("csv", po::bool_switch(&line->settings.csv),
-       "profile: print CSV (kind,distance,x,y,z,triangle_id,segment)")  //
-      ("te",
-       (new FixedTokens(&raw->grid.te, 4))->value_name("XMIN YMIN XMAX YMAX"),
-       "grid: the raster's outer edges, in the dataset's CRS (default: the "
-       "dataset's bounding box)")  //
-      ("outsize", (new FixedTokens(&raw->grid.outsize, 2))->value_name("W H"),
-       "grid: columns and rows")  //
-      ("tr", (new FixedTokens(&raw->grid.tr, 2))->value_name("XRES YRES"),
-       "grid: the cell size instead (square: XRES = YRES); the box grows "
-       "east and south to whole cells")  //
-      ("a_nodata", po::value(&raw->a_nodata)->value_name("VALUE"),
-       "grid: the value of cells without one (default NaN)")  //
-      ("nodata", po::value(&raw->nodata)->value_name("VALUE"),
-       "grid: the same as --a_nodata")  //
-      ("of",
-       po::value(&line->settings.grid.format.driver)->value_name("FORMAT"),
-       "grid: COG (Cloud-Optimized GeoTIFF; the default where GDAL has the "
-       "COG driver) or GTiff (tiled 256x256)")  //
-      ("co", po::value(&raw->grid.co)->composing()->value_name("NAME=VALUE"),
-       "grid: a creation option of the format's GDAL driver, repeatable "
-       "(e.g. COMPRESS=DEFLATE)")  //
-      ("out", po::value(&line->settings.grid.out)->value_name("FILE"),
-       "grid: the raster file to write");
-  AddChannelSecurityFlags(&line->security, &flags);
-  return flags;
+// Declares every flag of the CLI on `flags`, into `line`, `deadline_ms` and
+// `grid`.
+void AddCliFlags(CliLine* line, int64_t* deadline_ms, GridValues* grid,
+                 FlagSet* flags) {
+  CliSettings& settings = line->settings;
+  flags->Add("target", flag::Text(&line->channel.target).Shape("HOST:PORT"),
+             "server address");
+  flags->Add("deadline-ms", flag::Count(deadline_ms, 1, flag::kMaxOf<int64_t>),
+             "deadline of every call, in milliseconds (reload and grid: 10 "
+             "minutes unless given)");
+  flags->Add("json", flag::Switch(&settings.json),
+             "print one JSON object (locate, stats, retune, reload, health, "
+             "datasets, profile)");
+  flags->Add("retry", flag::Switch(&line->channel.retry_unavailable),
+             "retry calls that fail with UNAVAILABLE, with backoff");
+  flags->Add("dataset", flag::Text(&line->scope.dataset).Shape("NAME"),
+             "all but health and datasets: the server's dataset to query, or "
+             "to reload (default: its default dataset)");
+  flags->Add("crs", flag::Text(&line->scope.crs).Shape("CRS"),
+             "locate, batch, profile: the CRS of the points (EPSG:4326, WKT or "
+             "a PROJ string; x = longitude/easting); default: the dataset's "
+             "own coordinates");
+  flags->Add(
+      "interpolation",
+      flag::Choice(&line->scope.interpolation,
+                   {{"linear", v1::INTERPOLATION_LINEAR},
+                    {"natural-neighbor", v1::INTERPOLATION_NATURAL_NEIGHBOR},
+                    {"nearest", v1::INTERPOLATION_NEAREST}}),
+      "locate, batch, profile, grid: how values are interpolated "
+      "(default: linear)");
+  flags->Add("chunk", flag::Count(&settings.chunk, 1, flag::kMaxOf<int64_t>),
+             "points per LocateBatch call of `batch`");
+  flags->Add("line", flag::Parsed([&settings](std::string_view text) {
+                       return ParsePolyline(text, &settings.profile.line);
+                     }).Shape("LINE"),
+             "profile: the polyline, \"x0,y0 x1,y1 ...\" or WKT \"LINESTRING "
+             "(x0 y0, x1 y1, ...)\"");
+  flags->Add("samples",
+             flag::Count(&settings.profile.samples, 0,
+                         std::numeric_limits<uint32_t>::max()),
+             "profile: also N evenly spaced points along the line");
+  flags->Add("csv", flag::Switch(&settings.csv),
+             "profile: print CSV (kind,distance,x,y,z,triangle_id,segment)");
+  flags->Add("te", flag::Words(&grid->words.te, 4).Shape("XMIN YMIN XMAX YMAX"),
+             "grid: the raster's outer edges, in the dataset's CRS (default: "
+             "the dataset's bounding box)");
+  flags->Add("outsize", flag::Words(&grid->words.outsize, 2).Shape("W H"),
+             "grid: columns and rows");
+  flags->Add("tr", flag::Words(&grid->words.tr, 2).Shape("XRES YRES"),
+             "grid: the cell size instead (square: XRES = YRES); the box grows "
+             "east and south to whole cells");
+  flags->Add("a_nodata", flag::Text(&grid->a_nodata).Shape("VALUE"),
+             "grid: the value of cells without one (default NaN)");
+  flags->Add("nodata", flag::Text(&grid->nodata).Shape("VALUE"),
+             "grid: the same as --a_nodata");
+  flags->Add("of", flag::Text(&settings.grid.format.driver).Shape("FORMAT"),
+             "grid: COG (Cloud-Optimized GeoTIFF; the default where GDAL has "
+             "the COG driver) or GTiff (tiled 256x256)");
+  flags->Add("co", flag::Repeated(&grid->words.co).Shape("NAME=VALUE"),
+             "grid: a creation option of the format's GDAL driver, repeatable "
+             "(e.g. COMPRESS=DEFLATE)");
+  flags->Add("out", flag::Text(&settings.grid.out).Shape("FILE"),
+             "grid: the raster file to write");
+  AddChannelSecurityFlags(&line->security, flags);
 }
 
 }  // namespace
@@ -225,37 +200,15 @@ CliCommand FindCliCommand(std::string_view name) {
 }
 
 Status ParseCliLine(int argc, const char* const* argv, CliLine* line) {
-  RawFlags raw;
-  raw.deadline_ms = line->deadline.count();
-  raw.chunk = static_cast<int64_t>(line->settings.chunk);
+  int64_t deadline_ms = line->deadline.count();
+  GridValues grid;
   CliArgs words;  // the command, then its arguments
-
-  const po::options_description flags = Flags(line, &raw);
-  po::options_description all;
-  all.add(flags).add_options()("words", po::value(&words));
-  po::positional_options_description positional;
-  positional.add("words", -1);
-
-  std::ostringstream usage;
-  usage << kUsage << flags;
-  line->settings.usage = usage.str();
-  po::variables_map parsed;
-  try {
-    // No short flags: "-1.5" must stay a positional number.
-    const auto style = po::command_line_style::unix_style ^
-                       po::command_line_style::allow_short ^
-                       po::command_line_style::allow_guessing;
-    po::store(po::command_line_parser(argc, argv)
-                  .options(all)
-                  .positional(positional)
-                  .style(style)
-                  .run(),
-              parsed);
-    po::notify(parsed);
-  } catch (const po::error& error) {
-    return Status::InvalidArgument(error.what());
-  }
-  if (parsed.count("help")) {
+  FlagSet flags(kUsage);
+  AddCliFlags(line, &deadline_ms, &grid, &flags);
+  flags.AllowPositionals(&words);
+  line->settings.usage = flags.Help();
+  if (Status parsed = flags.Parse(argc, argv); !parsed.ok()) return parsed;
+  if (flags.help_requested()) {
     line->help = true;
     return Status::OK();
   }
@@ -265,42 +218,29 @@ Status ParseCliLine(int argc, const char* const* argv, CliLine* line) {
   if (line->command == nullptr) {
     return Status::InvalidArgument("unknown command '" + words.front() + "'");
   }
-  if (Status status = CheckFlagsFitCommand(words.front(), parsed);
+  if (Status status = CheckFlagsFitCommand(words.front(), flags);
       !status.ok()) {
     return status;
   }
-  if (raw.deadline_ms <= 0) {
-    return Status::InvalidArgument("--deadline-ms must be positive");
-  }
-  if (raw.chunk <= 0)
-    return Status::InvalidArgument("--chunk must be positive");
-  if (parsed.count("interpolation")) {
-    if (Status status =
-            ParseInterpolation(raw.interpolation, &line->scope.interpolation);
-        !status.ok()) {
-      return status;
-    }
-  }
   if (line->command == RunProfile) {
-    if (Status status = ParseProfileFlags(raw, parsed, &line->settings);
+    if (Status status = CheckProfileFlags(flags, line->settings);
         !status.ok()) {
       return status;
     }
   }
   if (line->command == RunGrid) {
-    if (parsed.count("a_nodata")) raw.grid.a_nodata = raw.a_nodata;
-    if (parsed.count("nodata")) raw.grid.nodata = raw.nodata;
-    if (Status status = ParseGridFlags(raw.grid, &line->settings.grid);
+    if (flags.Given("a_nodata")) grid.words.a_nodata = grid.a_nodata;
+    if (flags.Given("nodata")) grid.words.nodata = grid.nodata;
+    if (Status status = ParseGridFlags(grid.words, &line->settings.grid);
         !status.ok()) {
       return status;
     }
   }
-  line->settings.chunk = static_cast<size_t>(raw.chunk);
-  line->deadline = std::chrono::milliseconds(raw.deadline_ms);
+  line->deadline = std::chrono::milliseconds(deadline_ms);
   // A reload waits for a whole triangulation to be built; a grid for a
   // whole raster.
   if ((line->command == RunReload || line->command == RunGrid) &&
-      parsed["deadline-ms"].defaulted()) {
+      !flags.Given("deadline-ms")) {
     line->deadline = kLongCallDeadline;
   }
   line->args.assign(words.begin() + 1, words.end());

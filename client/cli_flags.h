@@ -1,7 +1,7 @@
-// The `locator` command line, parsed without running anything: flags (long
-// only, anywhere on the line, so that "locate -0.5 2" keeps its negative
-// coordinate), the command and its arguments, and the checks that need no
-// server.
+// The `locator` command line, parsed without running anything: flags (a
+// FlagSet, common/flags: long only, anywhere on the line, so that "locate
+// -0.5 2" keeps its negative coordinate), the command and its arguments,
+// and the checks that need no server.
 //
 // Thread-safety: stateless functions.
 
@@ -45,13 +45,13 @@ struct CliLine {
 inline constexpr std::chrono::minutes kLongCallDeadline{10};
 
 // Parses `argc`/`argv` into `line` (settings.usage is set even on failure).
-// InvalidArgument with the problem: the flag parser's message, "no command",
-// "unknown command 'X'", "--FLAG is for COMMANDS only" for a flag the
-// command does not take, "--deadline-ms must be positive", "--chunk must be
-// positive", a bad --interpolation; for `profile` a missing or bad --line
-// and --json with --csv; for `grid` a missing --out, --outsize and --tr
-// both or neither, a bad --outsize, --tr, --te or --a_nodata, and a --of or
-// --co that gis::CheckRasterFormat rejects.
+// InvalidArgument with the problem: the flag parser's message (a bad value,
+// e.g. "--deadline-ms '0': must be a whole number >= 1", a bad --line or
+// --interpolation), "no command", "unknown command 'X'", "--FLAG is for
+// COMMANDS only" for a flag the command does not take; for `profile` a
+// missing --line and --json with --csv; for `grid` a missing --out,
+// --outsize and --tr both or neither, a bad --outsize, --tr, --te or
+// --a_nodata, and a --of or --co that gis::CheckRasterFormat rejects.
 Status ParseCliLine(int argc, const char* const* argv, CliLine* line);
 
 }  // namespace locator

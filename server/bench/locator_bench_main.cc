@@ -26,159 +26,135 @@
 // A program that prints figures, never a test: compare strategies within one
 // run (the machine is shared and noisy).
 
-#include <boost/program_options.hpp>
-#include <cstdio>
 #include <iostream>
-#include <sstream>
-#include <stdexcept>
+#include <limits>
 #include <string>
+#include <vector>
 
+#include "common/flags/flag_set.h"
 #include "server/bench/bench_report.h"
 #include "server/bench/suites/build_benchmark.h"
 #include "server/bench/suites/paper_benchmark.h"
 #include "server/bench/suites/scale_benchmark.h"
-#include "server/core/dataset/byte_size.h"
-
-namespace po = boost::program_options;
 
 namespace {
 
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) items.push_back(item);
-  return items;
+constexpr char kProgram[] = "locator-bench";
+
+// What one run does, as its flags say.
+struct BenchRun {
+  bool paper = false;
+  bool scale = false;
+  bool build = false;
+  bool big = false;
+  bool verify = false;
+  bool csv = false;
+  std::vector<size_t> sizes;  // empty: each mode's own
+  locator::bench::PaperOptions paper_options;
+  locator::bench::ScaleOptions scale_options;
+  locator::bench::BuildOptions build_options;
+};
+
+// Declares the flags on `flags`, into `run`.
+void AddBenchFlags(BenchRun* run, locator::FlagSet* flags) {
+  namespace flag = locator::flag;
+  constexpr uint64_t kNoMax = flag::kMaxOf<int>;
+  flags->Add("paper", flag::Switch(&run->paper),
+             "reproduce the paper's Tables 1-4 (+ uniform, mixed, drift)");
+  flags->Add("scale", flag::Switch(&run->scale),
+             "ns per locate at n = 100K and 1M vs CGAL");
+  flags->Add("build", flag::Switch(&run->build),
+             "seconds to a mesh ready to serve: CGAL vs tiled (n = 1M)");
+  flags->Add("threads", flag::Counts(&run->build_options.threads, 1, 1024),
+             "--build: the tiled build's thread counts");
+  flags->Add("big", flag::Switch(&run->big), "with --scale: also n = 4M");
+  flags->Add("format", flag::Choice(&run->csv, {{"md", false}, {"csv", true}}),
+             "the report's format");
+  flags->Add("seeds", flag::Count(&run->paper_options.seeds, 1, kNoMax),
+             "--paper: datasets per n");
+  flags->Add("domain", flag::Parsed([run](std::string_view name) {
+                         locator::bench::DomainKind kind;
+                         locator::Status status =
+                             locator::bench::ParseDomainKind(name, &kind);
+                         if (status.ok()) run->paper_options.domain = kind;
+                         return status;
+                       }).Shape("cdt|mesh|aniso"),
+             "--paper on a non-Delaunay kind");
+  flags->Add("verify", flag::Switch(&run->verify),
+             "--paper: check every answer against CGAL's locate(); --build: "
+             "check the tiled mesh is the CGAL build's and canonical");
+  flags->Add("sizes", flag::Counts(&run->sizes, 1, flag::kMaxOf<uint32_t>),
+             "n values (default: the mode's own)");
+  flags->Add("budget",
+             flag::Bytes(&run->paper_options.tuning.budget_bytes, 0,
+                         flag::kMaxOf<int64_t>),
+             "self-tuning memory budget; 0 = 10% of the triangulation");
+  flags->Add("queries", flag::Count(&run->scale_options.queries, 1, kNoMax),
+             "--scale: timed queries per workload");
+  flags->Add("repeats", flag::Count(&run->scale_options.repeats, 1, kNoMax),
+             "--scale, --build: timing repeats, the median reported (--build: "
+             "3 unless given)");
+  flags->Add("workloads", flag::Texts(&run->scale_options.workloads),
+             "--scale: only these workloads (default: all)");
+  flags->Add("strategies", flag::Texts(&run->scale_options.strategies),
+             "--scale: only these strategies (default: all; CGAL's rows "
+             "always run)");
 }
 
-std::vector<size_t> ParseSizes(const std::string& text) {
-  std::vector<size_t> sizes;
-  for (const std::string& item : SplitList(text)) {
-    sizes.push_back(std::stoul(item));
+int RunBuild(const BenchRun& run, bool repeats_given) {
+  locator::bench::BuildOptions build = run.build_options;
+  if (!run.sizes.empty()) build.sizes = run.sizes;
+  if (repeats_given) build.repeats = run.scale_options.repeats;
+  build.verify = run.verify;
+  build.csv = run.csv;
+  const locator::Status s = locator::bench::RunBuild(build, std::cout);
+  if (!s.ok()) {
+    std::cerr << kProgram << ": " << s.ToString() << "\n";
+    return 1;
   }
-  return sizes;
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  po::options_description desc(
-      "locator-bench: in-process point-location benchmark\nOptions");
-  std::string format = "md", budget, sizes, domain, workloads, strategies,
-              threads = "1,2";
-  locator::bench::PaperOptions paper;
-  locator::bench::ScaleOptions scale;
-  desc.add_options()("help,h", "print this help")(
-      "paper", "reproduce the paper's Tables 1-4 (+ uniform, mixed, drift)")(
-      "scale", "ns per locate at n = 100K and 1M vs CGAL")(
-      "build", "seconds to a mesh ready to serve: CGAL vs tiled (n = 1M)")(
-      "threads", po::value(&threads)->default_value("1,2"),
-      "--build: the tiled build's thread counts, comma-separated")(
-      "big", "with --scale: also n = 4M")(
-      "format", po::value(&format)->default_value("md"), "csv | md")(
-      "seeds", po::value(&paper.seeds)->default_value(5),
-      "--paper: datasets per n")(
-      "domain", po::value(&domain),
-      "--paper on a non-Delaunay kind: cdt | mesh | aniso")(
-      "verify",
-      "--paper: check every answer against CGAL's locate(); --build: check "
-      "the tiled mesh is the CGAL build's and canonical")(
-      "sizes", po::value(&sizes),
-      "comma-separated n values (default: the mode's own)")(
-      "budget", po::value(&budget),
-      "self-tuning memory budget, e.g. 64KiB (default 10% of the "
-      "triangulation)")("queries",
-                        po::value(&scale.queries)->default_value(100000),
-                        "--scale: timed queries per workload")(
-      "repeats", po::value(&scale.repeats)->default_value(5),
-      "--scale, --build: timing repeats (median reported; --build: 3 unless "
-      "given)")(
-      "workloads", po::value(&workloads),
-      "--scale: only these workloads, comma-separated (default: all)")(
-      "strategies", po::value(&strategies),
-      "--scale: only these strategies, comma-separated (default: all; "
-      "CGAL's rows always run)");
-  po::variables_map vm;
-  try {
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    po::notify(vm);
-  } catch (const std::exception& e) {
-    std::cerr << "locator-bench: " << e.what() << "\n" << desc;
-    return 2;
+  BenchRun run;
+  locator::FlagSet flags(
+      "Usage: locator-bench --paper|--scale|--build [flags]\n\n"
+      "In-process point-location benchmark: figures, not tests.");
+  AddBenchFlags(&run, &flags);
+  locator::Status parsed = flags.Parse(argc, argv);
+  if (parsed.ok() && !flags.help_requested() && !run.paper && !run.scale &&
+      !run.build) {
+    parsed =
+        locator::Status::InvalidArgument("give --paper, --scale or --build");
   }
-  if (vm.count("help") ||
-      (!vm.count("paper") && !vm.count("scale") && !vm.count("build")) ||
-      (format != "csv" && format != "md")) {
-    std::cerr << desc;
-    return vm.count("help") ? 0 : 2;
+  if (std::optional<int> exit_code = locator::ExitCodeForFlags(
+          kProgram, parsed, flags.help_requested() ? flags.Help() : "")) {
+    return *exit_code;
   }
-  if (!budget.empty()) {
-    locator::Status s =
-        locator::ParseByteSize(budget, &paper.tuning.budget_bytes);
-    if (!s.ok()) {
-      std::cerr << "locator-bench: " << s.message() << "\n";
-      return 2;
-    }
-    scale.tuning.budget_bytes = paper.tuning.budget_bytes;
-  }
-  if (!domain.empty()) {
-    locator::bench::DomainKind kind;
-    locator::Status s = locator::bench::ParseDomainKind(domain, &kind);
-    if (!s.ok()) {
-      std::cerr << "locator-bench: " << s.message() << "\n";
-      return 2;
-    }
-    paper.domain = kind;
-  }
-  paper.verify = vm.count("verify") > 0;
-  scale.workloads = SplitList(workloads);
-  scale.strategies = SplitList(strategies);
-  if (!sizes.empty()) {
-    try {
-      paper.sizes = scale.sizes = ParseSizes(sizes);
-    } catch (const std::exception&) {
-      std::cerr << "locator-bench: bad --sizes '" << sizes << "'\n";
-      return 2;
-    }
-  } else if (vm.count("big")) {
+  if (run.build) return RunBuild(run, flags.Given("repeats"));
+
+  locator::bench::PaperOptions& paper = run.paper_options;
+  locator::bench::ScaleOptions& scale = run.scale_options;
+  scale.tuning.budget_bytes = paper.tuning.budget_bytes;
+  paper.verify = run.verify;
+  if (!run.sizes.empty()) {
+    paper.sizes = scale.sizes = run.sizes;
+  } else if (run.big) {
     scale.sizes.push_back(4000000);
   }
-
-  if (vm.count("build")) {
-    locator::bench::BuildOptions build;
-    try {
-      if (!sizes.empty()) build.sizes = ParseSizes(sizes);
-      build.threads.clear();
-      for (const size_t t : ParseSizes(threads)) {
-        if (t == 0) throw std::invalid_argument("0 threads");
-        build.threads.push_back(static_cast<unsigned>(t));
-      }
-    } catch (const std::exception&) {
-      std::cerr << "locator-bench: bad --sizes '" << sizes << "' or --threads '"
-                << threads << "'\n";
-      return 2;
-    }
-    if (!vm["repeats"].defaulted()) build.repeats = scale.repeats;
-    build.verify = vm.count("verify") > 0;
-    build.csv = format == "csv";
-    const locator::Status s = locator::bench::RunBuild(build, std::cout);
-    if (!s.ok()) {
-      std::cerr << "locator-bench: " << s.ToString() << "\n";
-      return 1;
-    }
-    return 0;
-  }
-
   locator::bench::BenchReport report;
-  locator::Status run;
-  if (vm.count("paper")) run = locator::bench::RunPaper(paper, &report);
-  if (run.ok() && vm.count("scale")) {
-    run = locator::bench::RunScale(scale, &report);
+  locator::Status result;
+  if (run.paper) result = locator::bench::RunPaper(paper, &report);
+  if (result.ok() && run.scale) {
+    result = locator::bench::RunScale(scale, &report);
   }
-  if (!run.ok()) {
-    std::cerr << "locator-bench: " << run.ToString() << "\n";
+  if (!result.ok()) {
+    std::cerr << kProgram << ": " << result.ToString() << "\n";
     return 1;
   }
-  if (format == "csv") {
+  if (run.csv) {
     report.PrintCsv(std::cout);
   } else {
     report.PrintMarkdown(std::cout);

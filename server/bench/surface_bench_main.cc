@@ -13,101 +13,106 @@
 // A program that prints figures, never a test: every comparison is made
 // within one run (the machine is shared and noisy).
 
-#include <boost/program_options.hpp>
 #include <iostream>
-#include <sstream>
+#include <optional>
 #include <string>
-#include <vector>
 
+#include "common/flags/flag_set.h"
 #include "server/bench/suites/dem_benchmark.h"
 #include "server/bench/suites/grid_benchmark.h"
 #include "server/bench/suites/profile_benchmark.h"
 
-namespace po = boost::program_options;
-
 namespace {
 
-// Parses "a,b,c" into *out; false if an item is not a T.
-template <class T>
-bool ParseList(const std::string& text, std::vector<T>* out) {
-  out->clear();
-  std::istringstream items(text);
-  std::string item;
-  while (std::getline(items, item, ',')) {
-    std::istringstream parse(item);
-    T value;
-    if (!(parse >> value) || !parse.eof()) return false;
-    out->push_back(value);
-  }
-  return !out->empty();
+constexpr char kProgram[] = "locator-surface-bench";
+
+// What one run does, as its flags say.
+struct SurfaceBenchRun {
+  bool grid = false;
+  bool profile = false;
+  bool interpolation = false;
+  bool dem = false;
+  locator::bench::GridBenchOptions grid_options;
+  locator::bench::SurfaceBenchOptions surface_options;
+  locator::bench::DemBenchOptions dem_options;
+};
+
+// Declares the flags on `flags`, into `run`.
+void AddSurfaceBenchFlags(SurfaceBenchRun* run, locator::FlagSet* flags) {
+  namespace flag = locator::flag;
+  constexpr uint64_t kNoMax = flag::kMaxOf<int>;
+  locator::bench::DemBenchOptions& dem = run->dem_options;
+  locator::bench::GridBenchOptions& grid = run->grid_options;
+  flags->Add("grid", flag::Switch(&run->grid),
+             "locator against gdal_grid -a linear, end to end");
+  flags->Add("profile", flag::Switch(&run->profile),
+             "breakpoints per second for lines of 10..10^5 crossings");
+  flags->Add("interpolation", flag::Switch(&run->interpolation),
+             "ns per point: linear, nearest, natural neighbour");
+  flags->Add("dem", flag::Switch(&run->dem),
+             "TIN builds of fractal DEMs, in hmm's shape");
+  flags->Add("dem-sizes", flag::Counts(&dem.sizes, 2, 1u << 16),
+             "--dem: DEM widths (= heights)");
+  flags->Add("dem-errors", flag::Numbers(&dem.errors, 0, /*above=*/true),
+             "--dem: errors as fractions of the height range");
+  flags->Add("dem-repeats", flag::Count(&dem.repeats, 1, kNoMax),
+             "--dem: builds per thread count (the best counts)");
+  flags->Add("dem-reference",
+             flag::Choice(
+                 &dem.reference,
+                 {{"1", true}, {"0", false}, {"true", true}, {"false", false}}),
+             "--dem: run the reference greedy insertion too");
+  flags->Add("points", flag::Count(&run->surface_options.points, 3, kNoMax),
+             "terrain points");
+  flags->Add("size", flag::Count(&grid.size, 1, 1u << 16),
+             "--grid: raster width and height");
+  flags->Add("repeats", flag::Count(&grid.repeats, 1, kNoMax),
+             "--grid: end-to-end runs of each tool");
+  flags->Add("threads", flag::Count(&grid.threads, 1, 1024),
+             "--grid: threads of both tools");
+  flags->Add("work-dir", flag::Text(&grid.work_dir).Shape("DIR"),
+             "--grid: where the inputs and rasters go");
+  flags->Add("queries", flag::Count(&run->surface_options.queries, 1, kNoMax),
+             "--interpolation: points located per method");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  po::options_description desc(
-      "locator-surface-bench: grid, profile and interpolation benchmarks\n"
-      "Options");
-  locator::bench::GridBenchOptions grid;
-  locator::bench::SurfaceBenchOptions surface;
-  locator::bench::DemBenchOptions dem;
-  std::string dem_sizes = "1187,2373,4745,9490";
-  std::string dem_errors = "0.01,0.001,0.0005,0.0001";
-  desc.add_options()("help,h", "print this help")(
-      "grid", "locator against gdal_grid -a linear, end to end")(
-      "profile", "breakpoints per second for lines of 10..10^5 crossings")(
-      "interpolation", "ns per point: linear, nearest, natural neighbour")(
-      "dem", "TIN builds of fractal DEMs, in hmm's shape")(
-      "dem-sizes", po::value(&dem_sizes)->default_value(dem_sizes),
-      "--dem: DEM widths (= heights), comma-separated")(
-      "dem-errors", po::value(&dem_errors)->default_value(dem_errors),
-      "--dem: errors as fractions of the height range")(
-      "dem-repeats", po::value(&dem.repeats)->default_value(1),
-      "--dem: builds per thread count (the best counts)")(
-      "dem-reference", po::value(&dem.reference)->default_value(true),
-      "--dem: run the reference greedy insertion too")(
-      "points", po::value(&surface.points)->default_value(1000000),
-      "terrain points")("size", po::value(&grid.size)->default_value(2048),
-                        "--grid: raster width and height")(
-      "repeats", po::value(&grid.repeats)->default_value(1),
-      "--grid: end-to-end runs of each tool")(
-      "threads", po::value(&grid.threads)->default_value(2),
-      "--grid: threads of both tools")(
-      "work-dir", po::value(&grid.work_dir)->default_value(grid.work_dir),
-      "--grid: where the inputs and rasters go")(
-      "queries", po::value(&surface.queries)->default_value(200000),
-      "--interpolation: points located per method");
-  po::variables_map vm;
-  try {
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    po::notify(vm);
-  } catch (const std::exception& e) {
-    std::cerr << "locator-surface-bench: " << e.what() << "\n" << desc;
-    return 2;
+  SurfaceBenchRun run;
+  locator::FlagSet flags(
+      "Usage: locator-surface-bench --grid|--profile|--interpolation|--dem "
+      "[flags]\n\n"
+      "Grid, profile and interpolation benchmarks: figures, not tests.");
+  AddSurfaceBenchFlags(&run, &flags);
+  locator::Status parsed = flags.Parse(argc, argv);
+  if (parsed.ok() && !flags.help_requested() && !run.grid && !run.profile &&
+      !run.interpolation && !run.dem) {
+    parsed = locator::Status::InvalidArgument(
+        "give --grid, --profile, --interpolation or --dem");
   }
-  const bool any = vm.count("grid") || vm.count("profile") ||
-                   vm.count("interpolation") || vm.count("dem");
-  const bool lists =
-      ParseList(dem_sizes, &dem.sizes) && ParseList(dem_errors, &dem.errors);
-  if (vm.count("help") || !any || grid.repeats < 1 || grid.threads < 1 ||
-      !lists || dem.repeats < 1) {
-    std::cerr << desc;
-    return vm.count("help") ? 0 : 2;
+  if (std::optional<int> exit_code = locator::ExitCodeForFlags(
+          kProgram, parsed, flags.help_requested() ? flags.Help() : "")) {
+    return *exit_code;
   }
-  grid.points = surface.points;
-  locator::Status run;
-  if (vm.count("grid")) run = locator::bench::RunGridBenchmark(grid, std::cout);
-  if (run.ok() && vm.count("profile")) {
-    run = locator::bench::RunProfileBenchmark(surface, std::cout);
+  run.grid_options.points = run.surface_options.points;
+  locator::Status result;
+  if (run.grid) {
+    result = locator::bench::RunGridBenchmark(run.grid_options, std::cout);
   }
-  if (run.ok() && vm.count("interpolation")) {
-    run = locator::bench::RunInterpolationBenchmark(surface, std::cout);
+  if (result.ok() && run.profile) {
+    result =
+        locator::bench::RunProfileBenchmark(run.surface_options, std::cout);
   }
-  if (run.ok() && vm.count("dem")) {
-    run = locator::bench::RunDemBenchmark(dem, std::cout);
+  if (result.ok() && run.interpolation) {
+    result = locator::bench::RunInterpolationBenchmark(run.surface_options,
+                                                       std::cout);
   }
-  if (!run.ok()) {
-    std::cerr << "locator-surface-bench: " << run.ToString() << "\n";
+  if (result.ok() && run.dem) {
+    result = locator::bench::RunDemBenchmark(run.dem_options, std::cout);
+  }
+  if (!result.ok()) {
+    std::cerr << kProgram << ": " << result.ToString() << "\n";
     return 1;
   }
   return 0;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "server/config/flag_parsing.h"
+#include "common/flags/flag_value.h"
 
 namespace locator {
 namespace {

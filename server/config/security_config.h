@@ -12,10 +12,10 @@
 #ifndef LOCATOR_SERVER_SECURITY_CONFIG_H_
 #define LOCATOR_SERVER_SECURITY_CONFIG_H_
 
-#include <boost/program_options/options_description.hpp>
 #include <chrono>
 #include <string>
 
+#include "common/flags/flag_set.h"
 #include "locator/status.h"
 
 namespace locator {
@@ -63,36 +63,34 @@ struct AccessConfig {
   bool redact = false;
 };
 
-// The flags as typed, read by ReadTransportFlags / ReadAccessFlags.
-struct TransportFlags {
+// The files the flags name, read after parsing by ReadTransportFiles /
+// ReadAccessFiles (empty: not given).
+struct TransportFiles {
   std::string tls_cert;
   std::string tls_key;
   std::string tls_client_ca;
-  std::string max_concurrent_streams;
-  std::string keepalive_time_ms;
-  std::string keepalive_timeout_ms;
-  std::string min_ping_interval_ms;
-  std::string max_ping_strikes;
-  std::string default_deadline_ms;
 };
 
-struct AccessFlags {
+struct AccessFiles {
   std::string token_file;
   std::string admin_token_file;
-  bool redact = false;
 };
 
-// Declares the transport flags, with `defaults` as their defaults.
-void AddTransportFlags(const TransportConfig& defaults, TransportFlags* flags,
-                       boost::program_options::options_description* options);
-// Validates the transport flags and reads the PEM files into `config`.
-Status ReadTransportFlags(const TransportFlags& flags, TransportConfig* config);
+// Declares the transport flags on `flags`: the limits go straight into
+// `config` (its values are the defaults), the PEM file names into `files`.
+// Both must outlive the parse.
+void AddTransportFlags(TransportConfig* config, TransportFiles* files,
+                       FlagSet* flags);
+// Reads the PEM files `files` names into `config`; InvalidArgument naming
+// the flag and the file when one cannot be read or does not parse, or when
+// the flags do not go together.
+Status ReadTransportFiles(const TransportFiles& files, TransportConfig* config);
 
-// Declares locatord's access flags.
-void AddAccessFlags(AccessFlags* flags,
-                    boost::program_options::options_description* options);
+// Declares locatord's access flags on `flags` (--redact into `config`, the
+// token file names into `files`).
+void AddAccessFlags(AccessConfig* config, AccessFiles* files, FlagSet* flags);
 // Reads the token files into `config`.
-Status ReadAccessFlags(const AccessFlags& flags, AccessConfig* config);
+Status ReadAccessFiles(const AccessFiles& files, AccessConfig* config);
 
 }  // namespace locator
 

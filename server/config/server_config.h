@@ -1,6 +1,8 @@
-// Command-line configuration of locatord and locator-noop-server, parsed with
-// Boost.Program_options. Every flag value is validated here, so a bad value
-// fails at startup with a message naming the flag (the binaries then exit 2).
+// Command-line configuration of locatord and locator-noop-server, declared
+// once per flag on a FlagSet (common/flags/flag_set.h). Every flag value is
+// validated here, so a bad value fails at startup with a message naming the
+// flag and the accepted form (the binaries then exit 2, through
+// ExitCodeForFlags).
 //
 // Thread-safety: free functions over plain values.
 
@@ -10,7 +12,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -21,6 +22,7 @@
 #include "locator/status.h"
 #include "server/config/dataset_flag.h"
 #include "server/config/security_config.h"
+#include "server/config/server_log.h"
 
 namespace locator {
 
@@ -104,25 +106,23 @@ struct ServerConfig {
   // --http-public-status: /api/stats and /api/edges answer without a
   // token even when tokens are required.
   bool http_public_status = false;
+  // --log-level: the least severe log lines written (error, warning, info,
+  // debug).
+  LogLevel log_level = LogLevel::kInfo;
 
   bool http_enabled() const { return !http_host.empty(); }
 };
 
-// Parses locatord's command line into `config`. With --help, sets `help` to
-// the usage text instead. InvalidArgument naming the flag otherwise.
+// Sets `config` to the defaults, then parses locatord's command line into
+// it, reading the token and PEM files the flags name. With --help, sets
+// `help` to the usage text instead (empty otherwise). InvalidArgument naming
+// the flag otherwise.
 Status ParseServerConfig(int argc, const char* const argv[],
                          ServerConfig* config, std::string* help);
 
 // The same for locator-noop-server, which takes the serving flags only.
 Status ParseNoopServerConfig(int argc, const char* const argv[],
                              ServingConfig* config, std::string* help);
-
-// What main() does with a parse's outcome: prints the error and returns 2,
-// prints the help and returns 0, or returns nullopt when the program should
-// run.
-std::optional<int> ExitCodeForFlags(std::string_view program,
-                                    const Status& parsed,
-                                    const std::string& help);
 
 // Parses "HOST:PORT" (the port after the last ':', 0..65535).
 Status ParseListenAddress(std::string_view text, std::string* host, int* port);

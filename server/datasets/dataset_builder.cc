@@ -28,12 +28,14 @@ void LogTuningState(const Engine& engine, std::string_view tag) {
   const PersistenceSummary p = engine.Stats().tuning.persistence;
   if (p.state_path.empty()) return;
   if (p.restored_from_state) {
-    LogLine(tag) << "restored the tuning state from " << p.state_path;
+    LogLine(LogLevel::kInfo, tag)
+        << "restored the tuning state from " << p.state_path;
   } else if (!p.load_error.empty()) {
-    LogLine(tag) << "warning: ignoring the tuning state " << p.state_path
-                 << ": " << p.load_error;
+    LogLine(LogLevel::kWarning, tag)
+        << "ignoring the tuning state " << p.state_path << ": " << p.load_error;
   } else {
-    LogLine(tag) << "no tuning state at " << p.state_path << " yet";
+    LogLine(LogLevel::kInfo, tag)
+        << "no tuning state at " << p.state_path << " yet";
   }
 }
 
@@ -42,28 +44,31 @@ void LogTuningState(const Engine& engine, std::string_view tag) {
 void LogMeshCache(const MeshCacheOutcome& cache, std::string_view tag) {
   if (cache.path.empty()) return;
   if (cache.mapped) {
-    LogLine(tag) << "mapped the serving mesh from " << cache.path;
+    LogLine(LogLevel::kInfo, tag)
+        << "mapped the serving mesh from " << cache.path;
     return;
   }
   if (!cache.load_error.empty()) {
-    LogLine(tag) << "warning: ignoring the mesh file " << cache.path << ": "
-                 << cache.load_error << "; triangulated instead";
+    LogLine(LogLevel::kWarning, tag)
+        << "ignoring the mesh file " << cache.path << ": " << cache.load_error
+        << "; triangulated instead";
   }
   if (cache.save_error.empty()) {
-    LogLine(tag) << "wrote the serving mesh to " << cache.path;
+    LogLine(LogLevel::kInfo, tag) << "wrote the serving mesh to " << cache.path;
   } else {
-    LogLine(tag) << "warning: cannot write the mesh file " << cache.path << ": "
-                 << cache.save_error;
+    LogLine(LogLevel::kWarning, tag) << "cannot write the mesh file "
+                                     << cache.path << ": " << cache.save_error;
   }
 }
 
 // Says how a new engine's mesh came to be, and where its tuning came from.
 void LogBuilt(const Engine& engine, std::string_view tag) {
   const DatasetInfo& info = engine.dataset_info();
-  LogLine(tag) << (info.mesh_cache.mapped ? "mapped " : "built ")
-               << info.triangles << " triangles over " << info.vertices
-               << " vertices (" << info.duplicates_merged
-               << " duplicates merged) in " << info.build_seconds << " s";
+  LogLine(LogLevel::kInfo, tag)
+      << (info.mesh_cache.mapped ? "mapped " : "built ") << info.triangles
+      << " triangles over " << info.vertices << " vertices ("
+      << info.duplicates_merged << " duplicates merged) in "
+      << info.build_seconds << " s";
   LogMeshCache(info.mesh_cache, tag);
   LogTuningState(engine, tag);
 }
@@ -73,12 +78,12 @@ constexpr std::chrono::seconds kProgressInterval{4};
 
 // Says what a simplification made of its source (the certificate).
 void LogSimplified(const SimplificationStats& s, std::string_view tag) {
-  LogLine(tag) << "simplified " << s.source_samples << " source samples to "
-               << s.vertices << " vertices and " << s.triangles
-               << " triangles in " << s.build_seconds << " s: max error "
-               << s.max_error << " (target " << s.target_error
-               << ", max_points " << s.max_points << ", " << s.unserved_samples
-               << " samples outside the domain)";
+  LogLine(LogLevel::kInfo, tag)
+      << "simplified " << s.source_samples << " source samples to "
+      << s.vertices << " vertices and " << s.triangles << " triangles in "
+      << s.build_seconds << " s: max error " << s.max_error << " (target "
+      << s.target_error << ", max_points " << s.max_points << ", "
+      << s.unserved_samples << " samples outside the domain)";
 }
 
 }  // namespace
@@ -96,8 +101,8 @@ void DatasetBuilder::SaveTuningStateOrWarn(Engine& engine, std::string_view tag,
                                            std::string_view when) {
   const Status status = engine.SaveTuningState();
   if (!status.ok()) {
-    LogLine(tag) << "warning: cannot save the tuning state " << when << ": "
-                 << status.ToString();
+    LogLine(LogLevel::kWarning, tag)
+        << "cannot save the tuning state " << when << ": " << status.ToString();
   }
 }
 
@@ -128,10 +133,10 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
       MapBySourceKey(slot, spec, options, built)) {
     return Status::OK();
   }
-  LogLine(tag) << "loading dataset " << spec;
+  LogLine(LogLevel::kInfo, tag) << "loading dataset " << spec;
   const auto load_start = std::chrono::steady_clock::now();
   BuildHeartbeat heartbeat(
-      [tag](const std::string& line) { LogLine(tag) << line; },
+      [tag](const std::string& line) { LogLine(LogLevel::kInfo, tag) << line; },
       kProgressInterval);
   ServedLoadOptions load;
   load.limits = config_.dataset_limits;
@@ -156,8 +161,9 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
     return Status::ResourceExhausted(status.message() + see);
   }
   if (!status.ok()) return status;
-  LogLine(tag) << "loaded " << served.dataset.points.size() << " points in "
-               << SecondsSince(load_start) << " s; building the serving mesh";
+  LogLine(LogLevel::kInfo, tag)
+      << "loaded " << served.dataset.points.size() << " points in "
+      << SecondsSince(load_start) << " s; building the serving mesh";
   if (served.simplification) LogSimplified(*served.simplification, tag);
   heartbeat.SetPhase("building the serving mesh");
   std::unique_ptr<Engine> created;
@@ -194,13 +200,14 @@ bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
   if (!status.ok()) {
     // The slow path loads the spec and says what is wrong, if anything.
     if (status.code() != Status::Code::kResourceExhausted) {
-      LogLine(tag) << "warning: cannot map the mesh of " << spec << ": "
-                   << status.ToString() << "; loading it instead";
+      LogLine(LogLevel::kWarning, tag)
+          << "cannot map the mesh of " << spec << ": " << status.ToString()
+          << "; loading it instead";
     }
     return false;
   }
   budget_.Commit(slot.index());
-  LogLine(tag) << "found the mesh of " << spec << " " << how;
+  LogLine(LogLevel::kInfo, tag) << "found the mesh of " << spec << " " << how;
   LogBuilt(*created, tag);
   *built = std::move(created);
   return true;
@@ -234,8 +241,8 @@ bool DatasetBuilder::MapBySourceKey(const DatasetSlot& slot,
   if (status.code() == Status::Code::kNotFound) return false;
   if (status.ok()) status = CheckSourceFiles(key);
   if (!status.ok()) {
-    LogLine(Tag(slot)) << "not mapping the cached mesh of " << spec << ": "
-                       << status.message();
+    LogLine(LogLevel::kInfo, Tag(slot)) << "not mapping the cached mesh of "
+                                        << spec << ": " << status.message();
     return false;
   }
   DatasetOrigin origin;
@@ -258,8 +265,8 @@ void DatasetBuilder::RecordGenerated(const std::string& spec,
   const Status status = RecordGeneratedFingerprint(
       options.mesh_cache_dir, generator, cache.fingerprint);
   if (!status.ok()) {
-    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
-                 << status.ToString();
+    LogLine(LogLevel::kWarning, tag)
+        << "cannot record the mesh of " << spec << ": " << status.ToString();
   }
 }
 
@@ -284,8 +291,8 @@ void DatasetBuilder::RecordSourceKey(const std::string& spec,
   key.simplification = info.simplification;
   if (const Status status = WriteSourceKey(options.mesh_cache_dir, spec, key);
       !status.ok()) {
-    LogLine(tag) << "warning: cannot record the mesh of " << spec << ": "
-                 << status.ToString();
+    LogLine(LogLevel::kWarning, tag)
+        << "cannot record the mesh of " << spec << ": " << status.ToString();
   }
 }
 
@@ -296,8 +303,9 @@ Status DatasetBuilder::Build(const DatasetSlot& slot, const std::string& spec,
   }
   const Status status = LoadAndTriangulate(slot, spec, built);
   if (!status.ok() && serving != nullptr) {
-    LogLine(Tag(slot)) << "reload failed, still serving the previous dataset: "
-                       << status.ToString();
+    LogLine(LogLevel::kWarning, Tag(slot))
+        << "reload failed, still serving the previous dataset: "
+        << status.ToString();
   }
   return status;
 }

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/flags/flag_set.h"
 #include "common/grpc_lifetime.h"
 #include "locator/engine.h"
 #include "server/app/locator_app.h"
@@ -43,19 +44,21 @@ void ReloadOnHangup(LocatorApp& app, const DatasetBuilder& builder) {
   for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
     const std::string_view tag = builder.Tag(*slot);
     if (slot->serving().engine == nullptr) {
-      LogLine(tag) << "SIGHUP: still loading, not reloaded";
+      LogLine(LogLevel::kWarning, tag) << "SIGHUP: still loading, not reloaded";
       continue;
     }
-    LogLine(tag) << "SIGHUP: reloading " << slot->spec();
+    LogLine(LogLevel::kInfo, tag) << "SIGHUP: reloading " << slot->spec();
     const Status started = slot->StartReload(
         "", [tag](const Status& status, std::shared_ptr<Engine> engine,
                   uint64_t generation) {
           if (!status.ok()) return;  // DatasetBuilder said why
-          LogLine(tag) << "reloaded: serving "
-                       << engine->dataset_info().triangles
-                       << " triangles as generation " << generation;
+          LogLine(LogLevel::kInfo, tag)
+              << "reloaded: serving " << engine->dataset_info().triangles
+              << " triangles as generation " << generation;
         });
-    if (!started.ok()) LogLine(tag) << "SIGHUP ignored: " << started.message();
+    if (!started.ok())
+      LogLine(LogLevel::kWarning, tag)
+          << "SIGHUP ignored: " << started.message();
   }
 }
 
@@ -74,7 +77,7 @@ void StartPeriodicWork(const ServerConfig& config, LocatorApp& app,
       for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
         StatusOr<v1::GetStatsResponse> stats = app.CurrentStats(slot->name());
         if (!stats.ok()) continue;
-        LogLine(builder.Tag(*slot))
+        LogLine(LogLevel::kInfo, builder.Tag(*slot))
             << "stats: queries=" << stats->queries_served()
             << " mean_cost_recent=" << stats->mean_cost_recent()
             << " snapshot_version=" << stats->tuning().snapshot_version();
@@ -83,10 +86,12 @@ void StartPeriodicWork(const ServerConfig& config, LocatorApp& app,
   }
   if (config.retune_interval_s > 0) {
     // On the loop thread, which has nothing else to do between signals.
-    runner->RunEvery(config.retune_interval_s, [&app] {
+    runner->RunEvery(config.retune_interval_s, [&app, &builder] {
       for (const std::unique_ptr<DatasetSlot>& slot : app.datasets().slots()) {
         if (std::shared_ptr<Engine> engine = slot->serving().engine) {
           engine->Retune();
+          LogLine(LogLevel::kDebug, builder.Tag(*slot))
+              << "re-tuned (--retune-interval-s)";
         }
       }
     });
@@ -133,23 +138,26 @@ class StartupBuilds {
       Fail(slot, status);
       return;
     }
-    LogLine(builder_.Tag(slot))
+    LogLine(LogLevel::kInfo, builder_.Tag(slot))
         << "serving " << engine->dataset_info().triangles << " triangles";
     if (index + 1 < app_.datasets().slots().size()) {
       Start(index + 1);
       return;
     }
     runner_->SetServing(true);
-    if (index > 0) LogLine() << "serving all " << index + 1 << " datasets";
+    if (index > 0) {
+      LogLine(LogLevel::kInfo) << "serving all " << index + 1 << " datasets";
+    }
     StartPeriodicWork(config_, app_, builder_, http_frontend_, runner_);
   }
 
   void Fail(const DatasetSlot& slot, const Status& status) {
     // Parse errors name the file and line themselves; whole-dataset
     // problems (too few points, all collinear) need the spec said.
-    LogLine() << "cannot serve dataset "
-              << (slot.named() ? slot.name() + "=" : std::string()) << "'"
-              << slot.spec() << "': " << status.ToString();
+    LogLine(LogLevel::kError)
+        << "cannot serve dataset "
+        << (slot.named() ? slot.name() + "=" : std::string()) << "'"
+        << slot.spec() << "': " << status.ToString();
     runner_->Stop(1);
   }
 
@@ -167,6 +175,7 @@ int Main(int argc, char** argv) {
   if (std::optional<int> exit_code = ExitCodeForFlags(kProgram, parsed, help)) {
     return *exit_code;
   }
+  SetLogLevel(config.log_level);
 
   DatasetBuilder builder(config);
   LocatorApp app(LocatorAppOptions{

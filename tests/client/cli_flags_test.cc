@@ -35,6 +35,21 @@ TEST(CliFlagsTest, CommandArgumentsAndFlagsAnywhere) {
   EXPECT_FALSE(line.help);
 }
 
+TEST(CliFlagsTest, EqualsFormsAndDoubleDash) {
+  CliLine line;
+  const Status parsed = Parse({"--target=h:2", "--deadline-ms=250", "--json",
+                               "--", "locate", "-1", "--5"},
+                              &line);
+  ASSERT_TRUE(parsed.ok()) << parsed.ToString();
+  EXPECT_EQ(line.channel.target, "h:2");
+  EXPECT_EQ(line.deadline, std::chrono::milliseconds(250));
+  EXPECT_EQ(line.command, &RunLocate);
+  EXPECT_EQ(line.args, (CliArgs{"-1", "--5"}));
+  CliLine help;
+  ASSERT_TRUE(Parse({"stats", "-h"}, &help).ok());
+  EXPECT_TRUE(help.help);
+}
+
 TEST(CliFlagsTest, EveryCommandIsFound) {
   EXPECT_EQ(FindCliCommand("locate"), &RunLocate);
   EXPECT_EQ(FindCliCommand("batch"), &RunBatch);
@@ -202,8 +217,10 @@ TEST(CliFlagsTest, UsageProblemsAreNamed) {
       {{}, "no command"},
       {{"--json"}, "no command"},
       {{"locat", "1", "2"}, "unknown command 'locat'"},
-      {{"stats", "--deadline-ms", "0"}, "--deadline-ms must be positive"},
-      {{"batch", "f", "--chunk", "-3"}, "--chunk must be positive"},
+      {{"stats", "--deadline-ms", "0"},
+       "--deadline-ms '0': must be a whole number >= 1"},
+      {{"batch", "f", "--chunk", "-3"},
+       "--chunk '-3': must be a whole number >= 1"},
       // Flags the command does not take.
       {{"health", "--dataset", "terrain"},
        "--dataset is for locate, batch, stats, retune, reload, profile and "
@@ -236,50 +253,54 @@ TEST(CliFlagsTest, UsageProblemsAreNamed) {
       {{"stats", "--samples", "3"}, "--samples is for profile only"},
       // Interpolation.
       {{"locate", "1", "2", "--interpolation", "cubic"},
-       "--interpolation must be linear, natural-neighbor or nearest, not "
-       "'cubic'"},
+       "--interpolation 'cubic': must be linear, natural-neighbor or "
+       "nearest"},
       // Profile.
       {{"profile"}, "profile needs --line"},
       {{"profile", "--line", "0,0"},
-       "--line: a line needs at least 2 vertices, not 1"},
-      {{"profile", "--line", "0,0 1,x"}, "--line: 'x' is not a number"},
+       "--line '0,0': a line needs at least 2 vertices, not 1"},
+      {{"profile", "--line", "0,0 1,x"},
+       "--line '0,0 1,x': 'x' is not a number"},
       {{"profile", "--line", "0,0 1,1", "--samples", "-1"},
-       "--samples must be from 0 to 4294967295"},
+       "--samples '-1': must be a whole number from 0 to 4294967295"},
       {{"profile", "--line", "0,0 1,1", "--samples", "4294967296"},
-       "--samples must be from 0 to 4294967295"},
+       "--samples '4294967296': must be a whole number from 0 to 4294967295"},
       {{"profile", "--line", "0,0 1,1", "--json", "--csv"},
        "give --json or --csv, not both"},
       // Grid.
       {{"grid", "--outsize", "1", "1"}, "grid needs --out FILE"},
       {grid, "grid needs --outsize WIDTH HEIGHT or --tr XRES YRES"},
-      // --te takes exactly four values, once.
+      // --te takes exactly four values, once; a flag is not one of them.
       {{"grid", "--te", "0", "0", "1", "--out", "x", "--outsize", "1", "1"},
-       "--te takes XMIN YMIN XMAX YMAX: '--out' is not a number"},
+       "--te needs 4 values (XMIN YMIN XMAX YMAX)"},
       {with(grid, {"--outsize", "1", "1", "--outsize", "2", "2"}),
-       "--outsize takes WIDTH HEIGHT, whole numbers from 1: 2 values, once, "
-       "not 4"},
+       "--outsize is given twice"},
       {with(grid, {"--outsize", "2", "2", "--tr", "1", "1"}),
        "give --outsize or --tr, not both"},
       {with(grid, {"--outsize", "0", "2"}),
-       "--outsize takes WIDTH HEIGHT, whole numbers from 1: not '0'"},
+       "--outsize '0': must be a whole number from 1 to 4294967295 (WIDTH "
+       "HEIGHT)"},
       {with(grid, {"--outsize", "2", "2.5"}),
-       "--outsize takes WIDTH HEIGHT, whole numbers from 1: not '2.5'"},
+       "--outsize '2.5': must be a whole number from 1 to 4294967295 (WIDTH "
+       "HEIGHT)"},
       {with(grid, {"--outsize", "4294967296", "2"}),
-       "--outsize takes WIDTH HEIGHT, whole numbers from 1: not "
-       "'4294967296'"},
+       "--outsize '4294967296': must be a whole number from 1 to 4294967295 "
+       "(WIDTH HEIGHT)"},
       {with(grid, {"--outsize", "w", "2"}),
-       "--outsize takes WIDTH HEIGHT, whole numbers from 1: 'w' is not a "
-       "number"},
+       "--outsize 'w': must be a whole number from 1 to 4294967295 (WIDTH "
+       "HEIGHT)"},
       {with(grid, {"--tr", "1", "2"}),
-       "--tr: the Grid RPC renders square cells; give XRES equal to YRES"},
+       "--tr '1 2': the Grid RPC renders square cells: XRES must equal YRES"},
       {with(grid, {"--tr", "-1", "-1"}),
-       "--tr takes XRES YRES, positive numbers: not '-1'"},
+       "--tr '-1': must be a positive number (XRES YRES)"},
       {with(grid, {"--tr", "inf", "inf"}),
-       "--tr takes XRES YRES, positive numbers: not 'inf'"},
+       "--tr 'inf': must be a positive number (XRES YRES)"},
       {with(grid, {"--tr", "1", "1", "--te", "0", "0", "1", "top"}),
-       "--te takes XMIN YMIN XMAX YMAX: 'top' is not a number"},
+       "--te 'top': must be a number (XMIN YMIN XMAX YMAX)"},
       {with(grid, {"--tr", "1", "1", "--a_nodata", "none"}),
-       "--a_nodata takes a number, not 'none'"},
+       "--a_nodata 'none': must be a number or nan"},
+      {with(grid, {"--tr", "1", "1", "--nodata", "none"}),
+       "--nodata 'none': must be a number or nan"},
       {with(grid, {"--tr", "1", "1", "--a_nodata", "0", "--nodata", "0"}),
        "give --a_nodata or --nodata, not both"},
       {with(grid, {"--tr", "1", "1", "--of", "PNG"}),

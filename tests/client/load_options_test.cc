@@ -182,6 +182,24 @@ TEST(LoadOptionsTest, RejectsConflictingFlags) {
             "calls the bench service, which has neither");
 }
 
+TEST(LoadOptionsTest, ErrorsNameTheFlagAndTheForm) {
+  EXPECT_EQ(ErrorOf({"--concurrency", "0"}),
+            "--concurrency '0': must be a whole number >= 1");
+  EXPECT_EQ(ErrorOf({"--mode=bogus"}),
+            "--mode 'bogus': must be unary, batch, stream or nested-batch");
+  EXPECT_EQ(ErrorOf({"--timeline-s", "0.01"}),
+            "--timeline-s '0.01': must be a number of seconds >= 0.1");
+  EXPECT_EQ(ErrorOf({"--concurrency", "2", "--concurrency", "3"}),
+            "--concurrency is given twice");
+  LoadOptions options;
+  ASSERT_TRUE(ParseLoadOptions(
+                  {"--mode=stream", "--window=4", "--duration=2.5"}, &options)
+                  .ok());
+  EXPECT_EQ(options.mode, LoadMode::kStream);
+  EXPECT_EQ(options.window, 4u);
+  EXPECT_EQ(options.length.measured_seconds, 2.5);
+}
+
 TEST(LoadOptionsTest, RejectsUnknownFlagsAndPositionals) {
   EXPECT_FALSE(ErrorOf({"--bogus"}).empty());
   EXPECT_FALSE(ErrorOf({"--conc", "4"}).empty());  // no prefix guessing

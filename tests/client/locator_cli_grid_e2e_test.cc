@@ -327,7 +327,8 @@ TEST_F(LocatorCliGridTest, ProfileErrorsPrintClearly) {
   result = Locator({"profile", "--line", "0,0"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_THAT(result.err,
-              StartsWith("error: --line: a line needs at least 2 vertices"));
+              StartsWith("error: --line '0,0': a line needs at least 2 "
+                         "vertices"));
 }
 
 }  // namespace

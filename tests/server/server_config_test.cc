@@ -149,7 +149,7 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
         "--state-dir", "--http-max-body-bytes", "--http-cors-origin",
         "--http-max-grid-cells", "--http-max-connections-per-address",
         "--http-max-waiting-calls", "--http-public-status",
-        "--max-profile-samples"}) {
+        "--max-profile-samples", "--log-level error|warning|info|debug"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
 }
@@ -217,6 +217,47 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << args[0];
     EXPECT_THAT(status.message(), HasSubstr(args[0]));
   }
+}
+
+TEST(ServerConfigTest, LogLevelIsInfoUnlessTold) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({}, &config).ok());
+  EXPECT_EQ(config.log_level, LogLevel::kInfo);
+  const std::vector<std::pair<std::string, LogLevel>> levels = {
+      {"error", LogLevel::kError},
+      {"warning", LogLevel::kWarning},
+      {"info", LogLevel::kInfo},
+      {"debug", LogLevel::kDebug}};
+  for (const auto& [word, level] : levels) {
+    ASSERT_TRUE(Parse({"--log-level", word}, &config).ok()) << word;
+    EXPECT_EQ(config.log_level, level) << word;
+  }
+  const Status bad = Parse({"--log-level=verbose"}, &config);
+  EXPECT_EQ(bad.code(), Status::Code::kInvalidArgument);
+  EXPECT_EQ(bad.message(),
+            "--log-level 'verbose': must be error, warning, info or debug");
+}
+
+TEST(ServerConfigTest, FlagsTakeEqualsOrTheNextWordAndOnlyDatasetRepeats) {
+  // The spellings of deploy/k8s/deployment.yaml and deploy/systemd.
+  ServerConfig config;
+  const Status status =
+      Parse({"--listen=0.0.0.0:50051", "--dataset=uniform:1000:1",
+             "--dataset=b=uniform:10:2", "--budget=64KiB", "--threads", "2",
+             "--redact", "--http-listen=0.0.0.0:9090"},
+            &config);
+  ASSERT_TRUE(status.ok()) << status.ToString();
+  EXPECT_EQ(config.serving.ListenAddress(), "0.0.0.0:50051");
+  EXPECT_EQ(config.datasets.size(), 2u);
+  EXPECT_EQ(config.engine.tuning.budget_bytes, 64u << 10);
+  EXPECT_EQ(config.serving.threads, 2u);
+  EXPECT_TRUE(config.access.redact);
+  EXPECT_EQ(config.http_port, 9090);
+  EXPECT_EQ(Parse({"--listen", "a:1", "--listen=b:2"}, &config).message(),
+            "--listen is given twice");
+  // Names are matched whole: no prefix of a flag stands for it.
+  EXPECT_EQ(Parse({"--thread", "2"}, &config).message(),
+            "unknown flag --thread");
 }
 
 TEST(ServerConfigTest, RepeatedDatasetFlagsNameDatasetsFirstIsTheDefault) {

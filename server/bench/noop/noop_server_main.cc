@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "common/flags/flag_set.h"
 #include "server/bench/noop/noop_services.h"
 #include "server/config/server_config.h"
 #include "server/main/server_runner.h"

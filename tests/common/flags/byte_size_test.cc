@@ -1,4 +1,4 @@
-#include "server/core/dataset/byte_size.h"
+#include "common/flags/byte_size.h"
 
 #include <gtest/gtest.h>
 
