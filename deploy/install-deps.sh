@@ -9,7 +9,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libcgal-dev libgmp-dev libmpfr-dev libxxhash-dev
-  libboost-dev libboost-program-options-dev
+  libboost-dev
   libprotobuf-dev protobuf-compiler
   libgrpc++-dev libgrpc-dev protobuf-compiler-grpc
   libgtest-dev libgmock-dev
