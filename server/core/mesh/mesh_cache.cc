@@ -12,18 +12,15 @@
 #include "server/core/cgal/triangulation.h"
 #include "server/core/dataset/dataset_fingerprint.h"
 #include "server/core/dataset/file_io.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/tiling/tiled_build.h"
-
-#define XXH_INLINE_ALL
-#include <xxhash.h>
 
 namespace locator {
 namespace {
 
 std::string GeneratedKeyPath(const std::string& dir,
                              const GeneratorSpec& spec) {
-  const std::string key = spec.CanonicalKey();
-  return DigestNamedPath(dir, "generated-", XXH3_64bits(key.data(), key.size()),
+  return DigestNamedPath(dir, "generated-", Xxh3Of(spec.CanonicalKey()),
                          ".key");
 }
 

@@ -51,7 +51,9 @@ namespace locator {
 
 // 2: corners rotated to the smallest id first, the hull ring from the edge
 // ending at the smallest id, ties in the triangle order by rotated ids.
-inline constexpr uint32_t kMeshFileVersion = 2;
+// 3: the dataset digest in the header is XXH3 (Triangulation::VertexDigest;
+// it was FNV-1a).
+inline constexpr uint32_t kMeshFileVersion = 3;
 inline constexpr size_t kMeshFileHeaderBytes = 256;
 
 // What the engine keeps of a triangulation besides its serving mesh.

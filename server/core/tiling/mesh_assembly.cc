@@ -6,7 +6,7 @@
 #include <tuple>
 #include <utility>
 
-#include "server/core/geometry/fnv_hash.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/parallel.h"
 #include "server/core/tiling/cells/radix_sort.h"
@@ -293,7 +293,7 @@ uint64_t VertexDigestOf(std::span<const Point2> input,
                         std::span<const uint32_t> ids) {
   std::vector<bool> distinct(input.size(), false);
   for (const uint32_t id : ids) distinct[id] = true;
-  Fnv1a64 hash;
+  Xxh3Digest hash;
   for (size_t id = 0; id < input.size(); ++id) {
     if (!distinct[id]) continue;
     hash.AddU64(id);
