@@ -4,8 +4,8 @@
 #include <cctype>
 #include <string>
 
-#include "client/points_reader.h"
 #include "common/str_cat.h"
+#include "common/text_fields.h"
 
 namespace locator {
 namespace {
