@@ -2,8 +2,8 @@
 
 #include "common/grpc_code_name.h"
 #include "common/input_text.h"
+#include "common/json_writer.h"
 #include "server/grpc/status_mapping.h"
-#include "server/http/json/json_writer.h"
 
 namespace locator {
 

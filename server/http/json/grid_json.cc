@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/json_writer.h"
 #include "common/proto_json.h"
 #include "locator/v1/locator.pb.h"
 #include "server/grpc/grid_stream.h"
 #include "server/grpc/status_mapping.h"
 #include "server/grpc/surface_convert.h"
-#include "server/http/json/json_writer.h"
 
 namespace locator {
 namespace {
