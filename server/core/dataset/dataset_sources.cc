@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/dataset/dataset_text.h"
 #include "server/core/dataset/file_io.h"
 
@@ -180,9 +181,7 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
     if (ds.points.size() == limits.max_points) {
       return TooManyPoints(where.Prefix(), limits.max_points);
     }
-    if (Status s = ParsePoint(f, 0, columns == 3, where, &ds); !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(ParsePoint(f, 0, columns == 3, where, &ds));
   }
   if (ds.points.empty()) return EmptyDataset(filename);
   *out = std::move(ds);
@@ -285,7 +284,7 @@ Status ParseNodeSection(TextFieldReader* reader, std::string_view filename,
               ")"));
     }
     // Further attributes and the marker are not used, so not validated.
-    if (Status s = ParsePoint(f, 1, with_value, where, &ds); !s.ok()) return s;
+    RETURN_IF_ERROR(ParsePoint(f, 1, with_value, where, &ds));
   }
   *out = std::move(ds);
   return Status::OK();

@@ -5,6 +5,7 @@
 #include <span>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "server/core/dataset/file_io.h"
 #include "server/core/geometry/xxh3_digest.h"
 #include "server/core/mesh/mesh_check.h"
@@ -213,7 +214,7 @@ Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
 Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
                       ServingMesh::Arrays* arrays, MeshFacts* facts) {
   Header h;
-  if (Status s = CheckHeader(bytes, fingerprint, &h); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckHeader(bytes, fingerprint, &h));
   const std::string_view payload = bytes.substr(kMeshFileHeaderBytes);
   if (Xxh3Of(payload) != h.payload_checksum) {
     return Unusable("checksum mismatch (corrupt contents)");
@@ -268,22 +269,17 @@ class MappedStorage : public ServingMesh::Storage {
 
 }  // namespace
 
-Status MapMeshFile(const std::string& path, uint64_t fingerprint,
-                   BuiltMesh* out) {
+StatusOr<BuiltMesh> MapMeshFile(const std::string& path, uint64_t fingerprint) {
   MappedFile file;
-  if (Status s = MappedFile::Open(path, "mesh file", &file); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(MappedFile::Open(path, "mesh file", &file));
   ServingMesh::Arrays arrays;
   MeshFacts facts;
-  if (Status s = DecodeMeshFile(file.bytes(), fingerprint, &arrays, &facts);
-      !s.ok()) {
-    return s;
-  }
-  out->mesh = std::make_shared<const ServingMesh>(
+  RETURN_IF_ERROR(DecodeMeshFile(file.bytes(), fingerprint, &arrays, &facts));
+  BuiltMesh built;
+  built.mesh = std::make_shared<const ServingMesh>(
       std::make_unique<MappedStorage>(std::move(file)), arrays);
-  out->facts = std::move(facts);
-  return Status::OK();
+  built.facts = std::move(facts);
+  return built;
 }
 
 }  // namespace locator

@@ -44,6 +44,7 @@
 
 #include "locator/geometry.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "server/core/cgal/domain_outline.h"
 #include "server/core/mesh/serving_mesh.h"
 
@@ -87,8 +88,7 @@ Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
 // Maps the mesh file at `path` (shared with every process mapping it) and
 // decodes it; the mesh keeps the mapping. NotFound if there is no file;
 // IOError if it cannot be mapped; InvalidArgument as DecodeMeshFile.
-Status MapMeshFile(const std::string& path, uint64_t fingerprint,
-                   BuiltMesh* out);
+StatusOr<BuiltMesh> MapMeshFile(const std::string& path, uint64_t fingerprint);
 
 }  // namespace locator
 

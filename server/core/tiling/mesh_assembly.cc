@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "server/core/geometry/xxh3_digest.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/parallel.h"
@@ -265,13 +266,13 @@ Status AssembleServingMesh(SortedPoints* sorted,
                            std::shared_ptr<const ServingMesh>* out) {
   size_t faces = 0;
   for (const TileTriangles& tile : *tiles) faces += tile.triangles.size();
-  if (Status s = CheckMeshSize(sorted->size(), faces); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckMeshSize(sorted->size(), faces));
   auto storage = std::make_unique<MeshVectors>();
   Assembly assembly(*sorted, tiles, threads);
   assembly.Prepare();
-  if (Status s = assembly.MatchOpenEdges(); !s.ok()) return s;
+  RETURN_IF_ERROR(assembly.MatchOpenEdges());
   assembly.Order(storage.get());
-  if (Status s = assembly.LinkHull(storage.get()); !s.ok()) return s;
+  RETURN_IF_ERROR(assembly.LinkHull(storage.get()));
   if (!values.empty()) {
     storage->values.resize(sorted->size());
     for (size_t v = 0; v < sorted->size(); ++v) {

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 
+#include "common/status_macros.h"
 #include "server/core/geometry/xxh3_digest.h"
 
 namespace locator {
@@ -284,13 +285,13 @@ Status DecodeTuningState(std::string_view bytes,
     return Status::InvalidArgument("tuning state checksum mismatch");
   }
   TuningFingerprint saved;
-  if (Status s = ReadFingerprint(&r, &saved); !s.ok()) return s;
+  RETURN_IF_ERROR(ReadFingerprint(&r, &saved));
   if (const std::string why = FingerprintMismatch(saved, expected);
       !why.empty()) {
     return Status::FailedPrecondition("tuning state " + why);
   }
   TuningState state;
-  if (Status s = ReadPayload(&r, saved, &state); !s.ok()) return s;
+  RETURN_IF_ERROR(ReadPayload(&r, saved, &state));
   *out = std::move(state);
   return Status::OK();
 }
