@@ -4,7 +4,7 @@
 
 #include "client/cli_format.h"
 #include "client/health_check.h"
-#include "client/points_reader.h"
+#include "common/text_fields.h"
 
 namespace locator {
 namespace {

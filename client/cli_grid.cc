@@ -13,6 +13,7 @@
 #include "client/cli_commands.h"
 #include "client/cli_format.h"
 #include "client/grid_stream_check.h"
+#include "common/status_macros.h"
 #include "common/str_cat.h"
 
 namespace locator {
@@ -46,7 +47,7 @@ class GridFile {
   // After a stream that ended OK: every row has come and the file is
   // complete.
   Status Finish() {
-    if (Status status = check_.CheckComplete(); !status.ok()) return status;
+    RETURN_IF_ERROR(check_.CheckComplete());
     return writer_->Close();
   }
 

@@ -2,13 +2,14 @@
 // file of any size goes through in bounded memory.
 //
 // Format: the dataset text format of locator/dataset_sources.h, read as
-// queries. One point per line. A line with a comma is comma-separated (spaces
-// around fields allowed); otherwise fields are separated by whitespace. The
-// first two fields are x and y; further fields are ignored, so a dataset file
-// or the CSV that `locator batch` writes replays as it is. '#' starts a
-// comment; blank lines are skipped. The first non-comment line is a header, and
-// is skipped, when its first field is not a number. Every error is
-// InvalidArgument "file:line: what" (not a number, not finite, one field).
+// queries, line by line as the core reads a dataset (common/text_fields.h:
+// fields separated by whitespace and/or one comma, '#' comments, blank
+// lines skipped). The first two fields are x and y and must not be empty;
+// further fields are ignored (empty ones too), so a dataset file or the CSV
+// that `locator batch` writes replays as it is. The first non-comment line
+// is a header, and is skipped, when its first field is not a number. Every
+// error is InvalidArgument "file:line: what" (not a number, not finite, one
+// field).
 //
 // Owns the open file. Thread-safety: not thread-safe; one reader per thread.
 
@@ -23,14 +24,12 @@
 #include <string_view>
 #include <vector>
 
+// ParseDouble, which the flag readers take from here.
+#include "common/text_fields.h"
 #include "locator/geometry.h"
 #include "locator/status.h"
 
 namespace locator {
-
-// Parses all of `text` as a double ("1e3", "-0.5", "nan", "inf"); false if
-// any of it is not part of the number.
-bool ParseDouble(std::string_view text, double* value);
 
 class PointsReader {
  public:

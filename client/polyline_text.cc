@@ -4,8 +4,9 @@
 #include <cctype>
 #include <string>
 
-#include "client/points_reader.h"
+#include "common/status_macros.h"
 #include "common/str_cat.h"
+#include "common/text_fields.h"
 
 namespace locator {
 namespace {
@@ -65,13 +66,8 @@ Status ParsePairs(std::string_view text, std::vector<Point2>* vertices) {
           StrCat({"'", pair, "' is not an x,y pair"}));
     }
     Point2 vertex;
-    if (Status s = ParseCoordinate(pair.substr(0, comma), &vertex.x); !s.ok()) {
-      return s;
-    }
-    if (Status s = ParseCoordinate(pair.substr(comma + 1), &vertex.y);
-        !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(ParseCoordinate(pair.substr(0, comma), &vertex.x));
+    RETURN_IF_ERROR(ParseCoordinate(pair.substr(comma + 1), &vertex.y));
     vertices->push_back(vertex);
   }
   return Status::OK();
@@ -95,13 +91,11 @@ Status ParseWktLineString(std::string_view text,
                   std::to_string(coordinates)}));
     }
     Point2 vertex;
-    if (Status s = ParseCoordinate(numbers[0], &vertex.x); !s.ok()) return s;
-    if (Status s = ParseCoordinate(numbers[1], &vertex.y); !s.ok()) return s;
+    RETURN_IF_ERROR(ParseCoordinate(numbers[0], &vertex.x));
+    RETURN_IF_ERROR(ParseCoordinate(numbers[1], &vertex.y));
     if (coordinates == 3) {
       double ignored_z;
-      if (Status s = ParseCoordinate(numbers[2], &ignored_z); !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(ParseCoordinate(numbers[2], &ignored_z));
     }
     vertices->push_back(vertex);
   }

@@ -1,20 +1,16 @@
 #include "client/load/load_report.h"
 
-#include <google/protobuf/struct.pb.h>
-#include <google/protobuf/util/json_util.h>
-
 #include <cstdio>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "common/json_writer.h"
 #include "common/str_cat.h"
 
 namespace locator {
 namespace {
-
-using google::protobuf::Struct;
 
 struct NamedPercentile {
   std::string_view name;
@@ -50,31 +46,16 @@ std::string RunShape(const LoadOptions& options) {
   return StrCat({shape, " in flight"});
 }
 
-void Set(Struct& object, std::string_view key, double number) {
-  (*object.mutable_fields())[std::string(key)].set_number_value(number);
-}
-
-void Set(Struct& object, std::string_view key, std::string text) {
-  (*object.mutable_fields())[std::string(key)].set_string_value(
-      std::move(text));
-}
-
-Struct& SetObject(Struct& object, std::string_view key) {
-  return *(*object.mutable_fields())[std::string(key)].mutable_struct_value();
-}
-
-google::protobuf::ListValue& SetList(Struct& object, std::string_view key) {
-  return *(*object.mutable_fields())[std::string(key)].mutable_list_value();
-}
-
-// {count, mean, p50, p90, p99, p99_9, max} in microseconds.
-void SetLatency(Struct& latency, const LatencyHistogram& histogram) {
-  Set(latency, "count", histogram.count());
-  Set(latency, "mean", histogram.mean());
+// The object {count, mean, p50, p90, p99, p99_9, max} in microseconds.
+void WriteLatency(const LatencyHistogram& histogram, JsonWriter* json) {
+  json->BeginObject();
+  json->Key("count").Integer(histogram.count());
+  json->Key("mean").Number(histogram.mean());
   for (const NamedPercentile& p : kPercentiles) {
-    Set(latency, p.name, histogram.Percentile(p.percent));
+    json->Key(p.name).Integer(histogram.Percentile(p.percent));
   }
-  Set(latency, "max", histogram.max());
+  json->Key("max").Integer(histogram.max());
+  json->EndObject();
 }
 
 // One line per phase, when the run was split into phases.
@@ -174,62 +155,67 @@ std::string FormatReportText(const LoadOptions& options,
 std::string FormatReportJson(const LoadOptions& options,
                              const LoadReport& report) {
   const RunTotals& totals = report.totals;
-  Struct summary;
-  Set(summary, "mode", std::string(LoadModeName(options.mode)));
-  Set(summary, "workload", options.workload);
-  Set(summary, "dataset", options.scope.dataset);
-  Set(summary, "crs", options.scope.crs);
-  Set(summary, "target", options.channel.target);
-  Set(summary, "channels", options.channels);
-  Set(summary, "concurrency", options.concurrency);
-  Set(summary, "rate", options.rate);
-  Set(summary, "batch_size", options.points_per_call());
-  Set(summary, "window", options.window);
-  Set(summary, "measured_seconds", report.measured_seconds);
-  Set(summary, "calls", totals.calls);
-  Set(summary, "points", totals.points);
-  Set(summary, "warmup_calls", totals.warmup_calls);
-  Set(summary, "failed_calls", report.failed_calls());
-  Set(summary, "calls_per_second", report.calls_per_second());
-  Set(summary, "points_per_second", report.points_per_second());
+  JsonWriter json;
+  json.BeginObject();
+  json.Key("mode").String(LoadModeName(options.mode));
+  json.Key("workload").String(options.workload);
+  json.Key("dataset").String(options.scope.dataset);
+  json.Key("crs").String(options.scope.crs);
+  json.Key("target").String(options.channel.target);
+  json.Key("channels").Integer(options.channels);
+  json.Key("concurrency").Integer(options.concurrency);
+  json.Key("rate").Number(options.rate);
+  json.Key("batch_size").Integer(options.points_per_call());
+  json.Key("window").Integer(options.window);
+  json.Key("measured_seconds").Number(report.measured_seconds);
+  json.Key("calls").Integer(totals.calls);
+  json.Key("points").Integer(totals.points);
+  json.Key("warmup_calls").Integer(totals.warmup_calls);
+  json.Key("failed_calls").Integer(report.failed_calls());
+  json.Key("calls_per_second").Number(report.calls_per_second());
+  json.Key("points_per_second").Number(report.points_per_second());
+  json.Key("latency_us");
+  WriteLatency(totals.latency, &json);
 
-  SetLatency(SetObject(summary, "latency_us"), totals.latency);
-
-  Struct& errors = SetObject(summary, "errors");
-  for (const auto& [code, count] : totals.errors) Set(errors, code, count);
-
-  Set(summary, "cost_window", totals.cost_window);
-  google::protobuf::ListValue& means = SetList(summary, "cost_window_means");
-  for (double mean : totals.cost_means) {
-    means.add_values()->set_number_value(mean);
+  json.Key("errors").BeginObject();
+  for (const auto& [code, count] : totals.errors) {
+    json.Key(code).Integer(count);
   }
+  json.EndObject();
 
-  google::protobuf::ListValue& phases = SetList(summary, "phases");
+  json.Key("cost_window").Integer(totals.cost_window);
+  json.Key("cost_window_means").BeginArray();
+  for (const double mean : totals.cost_means) json.Number(mean);
+  json.EndArray();
+
+  json.Key("phases").BeginArray();
   for (const PhaseTotals& phase : totals.phases) {
-    Struct& entry = *phases.add_values()->mutable_struct_value();
-    Set(entry, "start_seconds", phase.start_seconds);
-    Set(entry, "calls", phase.latency.count());
-    Set(entry, "failed_calls", phase.failed_calls);
-    SetLatency(SetObject(entry, "latency_us"), phase.latency);
+    json.BeginObject();
+    json.Key("start_seconds").Number(phase.start_seconds);
+    json.Key("calls").Integer(phase.latency.count());
+    json.Key("failed_calls").Integer(phase.failed_calls);
+    json.Key("latency_us");
+    WriteLatency(phase.latency, &json);
+    json.EndObject();
   }
+  json.EndArray();
 
-  Set(summary, "timeline_seconds", totals.timeline_seconds);
-  google::protobuf::ListValue& timeline = SetList(summary, "timeline");
+  json.Key("timeline_seconds").Number(totals.timeline_seconds);
+  json.Key("timeline").BeginArray();
   for (const TimelineSlice& slice : totals.timeline) {
-    Struct& entry = *timeline.add_values()->mutable_struct_value();
-    Set(entry, "start_seconds", slice.start_seconds);
-    Set(entry, "calls", slice.calls);
-    Set(entry, "failed_calls", slice.failed_calls);
-    Set(entry, "p50_us", slice.p50_us);
-    Set(entry, "p99_us", slice.p99_us);
-    Set(entry, "queries", slice.queries);
-    Set(entry, "mean_cost", slice.mean_cost);
+    json.BeginObject();
+    json.Key("start_seconds").Number(slice.start_seconds);
+    json.Key("calls").Integer(slice.calls);
+    json.Key("failed_calls").Integer(slice.failed_calls);
+    json.Key("p50_us").Integer(slice.p50_us);
+    json.Key("p99_us").Integer(slice.p99_us);
+    json.Key("queries").Integer(slice.queries);
+    json.Key("mean_cost").Number(slice.mean_cost);
+    json.EndObject();
   }
-
-  std::string json;
-  // Printing a Struct of numbers and strings cannot fail.
-  (void)google::protobuf::util::MessageToJsonString(summary, &json);
-  return json + "\n";
+  json.EndArray();
+  json.EndObject();
+  return json.TakeText() + "\n";
 }
 
 }  // namespace locator

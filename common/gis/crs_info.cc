@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/gis/proj_objects.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -54,9 +55,7 @@ int EpsgCode(const PJ* crs) {
 Status DescribeCrs(std::string_view crs, CrsInfo* info) {
   GuardedProjContext& guarded = ThreadProjContext();
   PjPtr created;
-  if (Status status = CreateCrs(guarded, crs, &created); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(CreateCrs(guarded, crs, &created));
   PJ_CONTEXT* ctx = guarded.get();
   *info = CrsInfo();
   const char* name = proj_get_name(created.get());

@@ -7,6 +7,7 @@
 #include "common/gis/crs_verdicts.h"
 #include "common/gis/request_crs_policy.h"
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -80,21 +81,14 @@ Status CrsTransformer::Create(const std::string& request_crs,
   AdmitGridsOf(dataset_crs);
   GuardedProjContext& guarded = ThreadRequestProjContext();
   PjPtr request, dataset;
-  if (Status status = CreateRequestCrs(request_crs, &request); !status.ok()) {
-    return status;
-  }
-  if (Status status = CreateCrs(guarded, dataset_crs, &dataset); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(CreateRequestCrs(request_crs, &request));
+  RETURN_IF_ERROR(CreateCrs(guarded, dataset_crs, &dataset));
   std::unique_ptr<CrsTransformer> created(new CrsTransformer);
   created->context_ = guarded.get();
   created->request_crs_ = request_crs;
   created->dataset_crs_ = dataset_crs;
-  if (Status status = CreateTransformation(request.get(), dataset.get(),
-                                           &created->request_to_dataset_);
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(CreateTransformation(request.get(), dataset.get(),
+                                       &created->request_to_dataset_));
   PJ_CONTEXT* ctx = guarded.get();
   PjPtr geodetic(proj_crs_get_geodetic_crs(ctx, request.get()));
   const PJ_TYPE geodetic_type =
@@ -104,16 +98,11 @@ Status CrsTransformer::Create(const std::string& request_crs,
     return Status::InvalidArgument("CRS " + QuotedCrs(request_crs) +
                                    " has no geographic base CRS");
   }
-  if (Status status = CreateTransformation(request.get(), geodetic.get(),
-                                           &created->request_to_lon_lat_);
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(CreateTransformation(request.get(), geodetic.get(),
+                                       &created->request_to_lon_lat_));
   // A grid either CRS names that the transformations needed and could not
   // open: PROJ would have picked another transformation without it.
-  if (Status refused = RefusedFileError(guarded, request_crs); !refused.ok()) {
-    return refused;
-  }
+  RETURN_IF_ERROR(RefusedFileError(guarded, request_crs));
   for (const PJ* crs : {request.get(), dataset.get()}) {
     AreaOfUse area;
     if (proj_get_area_of_use(ctx, crs, &area.west, &area.south, &area.east,
@@ -149,17 +138,12 @@ Status CrsTransformer::ForThread(const std::string& request_crs,
     return Status::OK();
   }
   // Refused before it is used as a key.
-  if (Status status = CheckRequestCrsLength(request_crs); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(CheckRequestCrsLength(request_crs));
   static CrsVerdicts* const verdicts = new CrsVerdicts();
   std::unique_ptr<CrsTransformer> created;
-  if (Status status = verdicts->Decide(
-          PairKey(request_crs, dataset_crs),
-          [&] { return Create(request_crs, dataset_crs, &created); });
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(verdicts->Decide(PairKey(request_crs, dataset_crs), [&] {
+    return Create(request_crs, dataset_crs, &created);
+  }));
   if (cache.size() == kCacheCapacity) cache.pop_back();
   cache.insert(cache.begin(),
                Entry{request_crs, dataset_crs, std::move(created)});

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -158,9 +159,7 @@ Status SpecOptionInteger(std::string_view spec, const SpecOption& option,
 Status TakeSimplifyOptions(std::string_view spec, SimplifySpec* simplify,
                            std::string* rest) {
   std::vector<SpecOption> options;
-  if (Status status = ParseSpecOptions(spec, &options); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(ParseSpecOptions(spec, &options));
   SimplifySpec parsed;
   bool have_error = false;
   bool have_points = false;

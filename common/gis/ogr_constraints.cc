@@ -3,6 +3,8 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
+
 namespace locator::gis {
 namespace {
 
@@ -10,9 +12,7 @@ namespace {
 Status AppendCurve(const FeatureLocation& where, GIntBig fid,
                    const OGRSimpleCurve& curve, bool keep_z, Polyline* line) {
   for (const OGRPoint& point : curve) {
-    if (Status status = CheckFinite(where, fid, point); !status.ok()) {
-      return status;
-    }
+    RETURN_IF_ERROR(CheckFinite(where, fid, point));
     line->points.push_back(Point2{point.getX(), point.getY()});
     if (keep_z) line->values.push_back(point.getZ());
   }
@@ -26,11 +26,8 @@ Status ReadBreakline(const FeatureLocation& where, GIntBig fid,
   switch (wkbFlatten(g.getGeometryType())) {
     case wkbLineString: {
       Polyline line;
-      if (Status status = AppendCurve(where, fid, *g.toLineString(),
-                                      keep_z && g.Is3D(), &line);
-          !status.ok()) {
-        return status;
-      }
+      RETURN_IF_ERROR(AppendCurve(where, fid, *g.toLineString(),
+                                  keep_z && g.Is3D(), &line));
       if (line.points.size() < 2) {
         return where.Bad(fid, "a breakline with fewer than 2 points");
       }
@@ -40,10 +37,7 @@ Status ReadBreakline(const FeatureLocation& where, GIntBig fid,
     }
     case wkbMultiLineString:
       for (const OGRLineString* part : *g.toMultiLineString()) {
-        if (Status status = ReadBreakline(where, fid, *part, keep_z, out);
-            !status.ok()) {
-          return status;
-        }
+        RETURN_IF_ERROR(ReadBreakline(where, fid, *part, keep_z, out));
       }
       return Status::OK();
     default:
@@ -66,10 +60,7 @@ Status ReadDomain(const FeatureLocation& where, GIntBig fid,
             (index == 0 ? ", exterior ring"
                         : ", interior ring " + std::to_string(index));
         ++index;
-        if (Status status = AppendCurve(where, fid, *ring, false, &polyline);
-            !status.ok()) {
-          return status;
-        }
+        RETURN_IF_ERROR(AppendCurve(where, fid, *ring, false, &polyline));
         const auto& p = polyline.points;
         if (p.size() > 1 && p.front().x == p.back().x &&
             p.front().y == p.back().y) {
@@ -84,9 +75,7 @@ Status ReadDomain(const FeatureLocation& where, GIntBig fid,
     }
     case wkbMultiPolygon:
       for (const OGRPolygon* part : *g.toMultiPolygon()) {
-        if (Status status = ReadDomain(where, fid, *part, out); !status.ok()) {
-          return status;
-        }
+        RETURN_IF_ERROR(ReadDomain(where, fid, *part, out));
       }
       return Status::OK();
     default:
@@ -101,21 +90,16 @@ Status ReadDomain(const FeatureLocation& where, GIntBig fid,
 Status ReadConstraintLayer(const FeatureLocation& where, OGRLayer& layer,
                            bool domain, bool keep_z, DatasetConstraints* out) {
   size_t features = 0;
-  if (Status status = ForEachFeature(
-          where, layer,
-          [&](const OGRFeature& feature) {
-            ++features;
-            const OGRGeometry* geometry = feature.GetGeometryRef();
-            const GIntBig fid = feature.GetFID();
-            if (geometry == nullptr) return where.Bad(fid, "no geometry");
-            if (geometry->IsEmpty()) return where.Bad(fid, "empty geometry");
-            return domain ? ReadDomain(where, fid, *geometry, &out->rings)
-                          : ReadBreakline(where, fid, *geometry, keep_z,
-                                          &out->breaklines);
-          });
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(ForEachFeature(where, layer, [&](const OGRFeature& feature) {
+    ++features;
+    const OGRGeometry* geometry = feature.GetGeometryRef();
+    const GIntBig fid = feature.GetFID();
+    if (geometry == nullptr) return where.Bad(fid, "no geometry");
+    if (geometry->IsEmpty()) return where.Bad(fid, "empty geometry");
+    return domain
+               ? ReadDomain(where, fid, *geometry, &out->rings)
+               : ReadBreakline(where, fid, *geometry, keep_z, &out->breaklines);
+  }));
   if (features == 0) {
     return Status::InvalidArgument(where.Prefix() + " has no features");
   }

@@ -15,6 +15,7 @@
 #include "common/gis/ogr_constraints.h"
 #include "common/gis/ogr_features.h"
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -122,12 +123,9 @@ class PointReader {
       }
     }
     geometry_z_ = z_index_ < 0 && OGR_GT_HasZ(layer.GetGeomType());
-    if (Status status = ForEachFeature(
-            where_, layer,
-            [this](const OGRFeature& feature) { return AddFeature(feature); });
-        !status.ok()) {
-      return status;
-    }
+    RETURN_IF_ERROR(ForEachFeature(
+        where_, layer,
+        [this](const OGRFeature& feature) { return AddFeature(feature); }));
     if (out_->points.empty()) {
       return Status::InvalidArgument(
           where_.Prefix() + " has no features" +
@@ -146,20 +144,14 @@ class PointReader {
     if (geometry->IsEmpty()) return where_.Bad(fid, "empty geometry");
     double field_value = 0;
     if (z_index_ >= 0) {
-      if (Status status = FieldValue(where_, feature, z_index_, &field_value);
-          !status.ok()) {
-        return status;
-      }
+      RETURN_IF_ERROR(FieldValue(where_, feature, z_index_, &field_value));
     }
     switch (wkbFlatten(geometry->getGeometryType())) {
       case wkbPoint:
         return AddPoint(fid, *geometry->toPoint(), field_value);
       case wkbMultiPoint:
         for (const OGRPoint* point : *geometry->toMultiPoint()) {
-          if (Status status = AddPoint(fid, *point, field_value);
-              !status.ok()) {
-            return status;
-          }
+          RETURN_IF_ERROR(AddPoint(fid, *point, field_value));
         }
         return Status::OK();
       default:
@@ -171,9 +163,7 @@ class PointReader {
 
   Status AddPoint(GIntBig fid, const OGRPoint& point, double field_value) {
     if (point.IsEmpty()) return where_.Bad(fid, "empty point");
-    if (Status status = CheckFinite(where_, fid, point); !status.ok()) {
-      return status;
-    }
+    RETURN_IF_ERROR(CheckFinite(where_, fid, point));
     if (geometry_z_ && !point.Is3D()) {
       return where_.Bad(fid, "a point without Z in a layer with Z");
     }
@@ -235,49 +225,32 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
 Status LoadOgrDataset(const std::string& spec_text, Dataset* out,
                       const DatasetLimits& limits) {
   OgrDatasetSpec spec;
-  if (Status status = ParseOgrDatasetSpec(spec_text, &spec); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(ParseOgrDatasetSpec(spec_text, &spec));
   // GDAL reports through its error state, not stderr.
   CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
   GDALDatasetUniquePtr source;
-  if (Status status = OpenSource(spec, &source); !status.ok()) return status;
+  RETURN_IF_ERROR(OpenSource(spec, &source));
 
   Dataset dataset;
   dataset.source = spec_text;
   OGRLayer* points = nullptr;
-  if (Status status = FindLayer(*source, spec.source, spec.layer, &points);
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(FindLayer(*source, spec.source, spec.layer, &points));
   std::vector<OGRLayer*> layers = {points};
-  if (Status status =
-          PointReader(FeatureLocation{spec.source, points->GetName()}, limits,
-                      &dataset)
-              .Read(*points, spec);
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(PointReader(FeatureLocation{spec.source, points->GetName()},
+                              limits, &dataset)
+                      .Read(*points, spec));
   for (const bool domain : {false, true}) {
     const std::string& name =
         domain ? spec.domain_layer : spec.breaklines_layer;
     if (name.empty()) continue;
     OGRLayer* layer = nullptr;
-    if (Status status = FindLayer(*source, spec.source, name, &layer);
-        !status.ok()) {
-      return status;
-    }
+    RETURN_IF_ERROR(FindLayer(*source, spec.source, name, &layer));
     layers.push_back(layer);
-    if (Status status = ReadConstraintLayer(
-            FeatureLocation{spec.source, name}, *layer, domain,
-            dataset.has_values(), &dataset.constraints);
-        !status.ok()) {
-      return status;
-    }
+    RETURN_IF_ERROR(ReadConstraintLayer(FeatureLocation{spec.source, name},
+                                        *layer, domain, dataset.has_values(),
+                                        &dataset.constraints));
   }
-  if (Status status = ResolveCrs(spec, layers, &dataset.crs); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(ResolveCrs(spec, layers, &dataset.crs));
   *out = std::move(dataset);
   return Status::OK();
 }

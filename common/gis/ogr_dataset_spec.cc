@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -35,9 +36,7 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
   if (parts.options.empty()) return Status::OK();
 
   std::vector<SpecOption> options;
-  if (Status status = ParseSpecOptions(spec, &options); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(ParseSpecOptions(spec, &options));
   for (SpecOption& option : options) {
     const std::string& name = option.name;
     std::string& value = option.value;

@@ -1,10 +1,10 @@
 #include "common/gis/ogr_features.h"
 
-#include "common/input_text.h"
-
 #include <cmath>
 
 #include "common/gis/gdal_support.h"
+#include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 
@@ -38,7 +38,7 @@ Status ForEachFeature(const FeatureLocation& where, OGRLayer& layer,
     }
     if (feature == nullptr) return Status::OK();
     previous_fid = feature->GetFID();
-    if (Status status = add(*feature); !status.ok()) return status;
+    RETURN_IF_ERROR(add(*feature));
   }
 }
 

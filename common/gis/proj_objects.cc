@@ -1,6 +1,7 @@
 #include "common/gis/proj_objects.h"
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -76,9 +77,7 @@ Status CreateCrs(GuardedProjContext& ctx, std::string_view crs, PjPtr* out) {
   }
   ctx.TakeRefusal();  // only this creation's refusals count
   PjPtr created(text.empty() ? nullptr : proj_create(ctx.get(), text.c_str()));
-  if (Status refused = RefusedFileError(ctx, crs); !refused.ok()) {
-    return refused;
-  }
+  RETURN_IF_ERROR(RefusedFileError(ctx, crs));
   if (created == nullptr) {
     return Status::InvalidArgument(
         "unknown CRS " + QuotedCrs(crs) + ": " +

@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "common/status_macros.h"
+
 namespace locator::gis {
 namespace {
 
@@ -30,18 +32,15 @@ Status ParseRasterDatasetSpec(std::string_view spec, RasterDatasetSpec* out) {
   if (parsed.source.empty())
     return SpecError(spec, "no source before the options");
   std::vector<SpecOption> options;
-  if (Status s = ParseSpecOptions(spec, &options); !s.ok()) return s;
+  RETURN_IF_ERROR(ParseSpecOptions(spec, &options));
   bool have_band = false;
   for (const SpecOption& option : options) {
     if (option.name == "band") {
       if (have_band) return SpecError(spec, "option 'band' given twice");
       have_band = true;
       uint64_t band = 0;
-      if (Status s = SpecOptionInteger(spec, option, 1,
-                                       std::numeric_limits<int>::max(), &band);
-          !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(SpecOptionInteger(
+          spec, option, 1, std::numeric_limits<int>::max(), &band));
       parsed.band = static_cast<int>(band);
     } else if (option.name == "a_srs" || option.name == "driver") {
       std::string& field =

@@ -13,6 +13,7 @@
 
 #include "common/gis/gdal_support.h"
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -59,17 +60,11 @@ class BandReader {
     *valid = 0;
     for (uint32_t row = 0; row < height; row += strip_rows) {
       const uint32_t rows = std::min(strip_rows, height - row);
-      if (Status s =
-              ReadRows(band_, row, width, rows, GDT_Float64, values.data());
-          !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(
+          ReadRows(band_, row, width, rows, GDT_Float64, values.data()));
       if (mask != nullptr) {
-        if (Status s =
-                ReadRows(*mask, row, width, rows, GDT_Byte, valid_mask.data());
-            !s.ok()) {
-          return s;
-        }
+        RETURN_IF_ERROR(
+            ReadRows(*mask, row, width, rows, GDT_Byte, valid_mask.data()));
       }
       for (size_t i = 0; i < size_t{width} * rows; ++i) {
         float* out = &grid->values[size_t{row} * width + i];
@@ -190,9 +185,9 @@ Status OpenRaster(const RasterDatasetSpec& spec,
 Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
                          ElevationGrid* out, std::vector<std::string>* files) {
   RasterDatasetSpec parsed;
-  if (Status s = ParseRasterDatasetSpec(spec, &parsed); !s.ok()) return s;
+  RETURN_IF_ERROR(ParseRasterDatasetSpec(spec, &parsed));
   std::unique_ptr<GDALDataset, GdalCloser> dataset;
-  if (Status s = OpenRaster(parsed, &dataset); !s.ok()) return s;
+  RETURN_IF_ERROR(OpenRaster(parsed, &dataset));
   const std::string& source = parsed.source;
   const int bands = dataset->GetRasterCount();
   if (parsed.band > bands) {
@@ -212,7 +207,7 @@ Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
   double gt[6];
   // Without one GDAL gives (0, 1, 0, 0, 0, 1): pixel/line coordinates.
   dataset->GetGeoTransform(gt);
-  if (Status s = CheckGeoTransform(source, gt); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckGeoTransform(source, gt));
 
   ElevationGrid grid;
   grid.width = static_cast<uint32_t>(dataset->GetRasterXSize());
@@ -238,7 +233,7 @@ Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
   grid.values.resize(grid.samples());
   uint64_t valid = 0;
   BandReader reader(source, parsed.band, band);
-  if (Status s = reader.Read(&grid, &valid); !s.ok()) return s;
+  RETURN_IF_ERROR(reader.Read(&grid, &valid));
   if (valid == 0) {
     return Status::InvalidArgument(source + ": band " +
                                    std::to_string(parsed.band) +

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "common/gis/gdal_support.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 namespace {
@@ -101,15 +102,10 @@ CPLStringList TiledOptions() {
 Status ResolveFormat(const RasterFormat& format, GDALDriver** driver,
                      CPLStringList* options) {
   RegisterGdalDrivers();
-  if (Status status = FindDriver(format.driver, driver); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(FindDriver(format.driver, driver));
   const CPLStringList defaults =
       format.driver == kGTiff ? TiledOptions() : CPLStringList();
-  if (Status status = MergeOptions(format.creation_options, defaults, options);
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(MergeOptions(format.creation_options, defaults, options));
   return ValidateOptions(*driver, format.driver, *options);
 }
 
@@ -170,13 +166,10 @@ Status RasterWriter::Open(const std::string& path, const RasterShape& shape,
                           const RasterFormat& format,
                           std::unique_ptr<RasterWriter>* writer) {
   CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
-  if (Status status = CheckShape(path, shape); !status.ok()) return status;
+  RETURN_IF_ERROR(CheckShape(path, shape));
   GDALDriver* driver = nullptr;
   CPLStringList output_options;
-  if (Status status = ResolveFormat(format, &driver, &output_options);
-      !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(ResolveFormat(format, &driver, &output_options));
 
   std::unique_ptr<RasterWriter> opened(
       new RasterWriter(path, shape.width, shape.height));

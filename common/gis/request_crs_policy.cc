@@ -1,6 +1,7 @@
 #include "common/gis/request_crs_policy.h"
 
 #include "common/gis/crs_verdicts.h"
+#include "common/status_macros.h"
 
 namespace locator::gis {
 
@@ -13,26 +14,22 @@ Status CheckRequestCrsLength(std::string_view crs) {
 }
 
 Status CreateRequestCrs(std::string_view crs, PjPtr* out) {
-  if (Status status = CheckRequestCrsLength(crs); !status.ok()) return status;
+  RETURN_IF_ERROR(CheckRequestCrsLength(crs));
   GuardedProjContext& ctx = ThreadRequestProjContext();
   PjPtr created;
-  if (Status status = CreateCrs(ctx, crs, &created); !status.ok()) {
-    return status;
-  }
+  RETURN_IF_ERROR(CreateCrs(ctx, crs, &created));
   // Checked by name: PROJ remembers a grid it could not open and does not
   // ask for it again.
   for (const GridUse& grid : GridsOf(ctx, created.get())) {
     ctx.Permits(grid.name);
   }
-  if (Status refused = RefusedFileError(ctx, crs); !refused.ok()) {
-    return refused;
-  }
+  RETURN_IF_ERROR(RefusedFileError(ctx, crs));
   *out = std::move(created);
   return Status::OK();
 }
 
 Status CheckRequestCrs(const std::string& crs) {
-  if (Status status = CheckRequestCrsLength(crs); !status.ok()) return status;
+  RETURN_IF_ERROR(CheckRequestCrsLength(crs));
   static CrsVerdicts* const verdicts = new CrsVerdicts();
   return verdicts->Decide(crs, [&crs] {
     PjPtr created;

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "common/input_text.h"
-#include "server/http/json/json_writer.h"
+#include "common/json_writer.h"
 
 namespace locator {
 namespace {

@@ -111,6 +111,32 @@ TEST(PointsReaderTest, RejectsNonFiniteCoordinates) {
   EXPECT_FALSE(ReadAllOf("inf", "1 inf\n").ok());
 }
 
+TEST(PointsReaderTest, AnOverflowingCoordinateIsNotFinite) {
+  // As a dataset reads it (common/text_fields.h), not "not a number".
+  EXPECT_NE(ReadAllOf("overflow", "1e400 0\n")
+                .message()
+                .find(":1: '1e400' is not a finite number"),
+            std::string::npos);
+}
+
+TEST(PointsReaderTest, AnEmptyCoordinateIsNotANumber) {
+  const Status status = ReadAllOf("empty_field", "1,2\n1,,2\n");
+  EXPECT_NE(status.message().find(":2: '' is not a number"), std::string::npos)
+      << status.message();
+}
+
+TEST(PointsReaderTest, ReplaysTheCsvThatBatchWrites) {
+  // Empty cells after x and y (no value, no barycentric coordinates).
+  const std::string path =
+      WriteFile("batch",
+                "x,y,type,triangle_id,v0,v1,v2,b0,b1,b2,value,cost\n"
+                "5,6,OUTSIDE_CONVEX_HULL,0,0,0,0,,,,,3\n");
+  std::vector<double> xs, ys;
+  ChunkSizes(path, 100, &xs, &ys);
+  EXPECT_EQ(xs, (std::vector<double>{5}));
+  EXPECT_EQ(ys, (std::vector<double>{6}));
+}
+
 TEST(PointsReaderTest, OnlyTheFirstRowMayBeAHeader) {
   const Status status = ReadAllOf("header_late", "1,2\nx,y\n");
   EXPECT_NE(status.message().find(":2: 'x' is not a number"), std::string::npos)

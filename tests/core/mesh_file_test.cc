@@ -231,10 +231,10 @@ const BadFile kBadFiles[] = {
      "another byte order"},
     {"other_version",
      [](std::string* b, uint64_t f) {
-       (*b)[8] = 3;
+       (*b)[8] = 4;
        fuzz::ResealMeshFile(b, f);
      },
-     "format version 3, this build reads version 2"},
+     "format version 4, this build reads version 3"},
     {"corrupt_header", [](std::string* b, uint64_t) { (*b)[40] ^= 1; },
      "header checksum mismatch"},
     {"corrupt_contents", [](std::string* b, uint64_t) { b->back() ^= 1; },
@@ -323,6 +323,29 @@ TEST(MeshFileSeedsTest, CommittedFuzzSeedsAreCurrentFiles) {
     }
     EXPECT_EQ(ReadMeshBytes(corpus + "/" + name), bytes) << name;
   }
+}
+
+// format2.mesh is plain.mesh as version 2 wrote it (an FNV-1a dataset
+// digest): a cache holding it maps nothing, says why, and is rewritten.
+TEST(MeshFileSeedsTest, AFileOfTheFormerFormatIsRebuilt) {
+  const Dataset dataset = GenerateUniform(12, 3);
+  test::ScratchDir dir;
+  const std::string path =
+      MeshFilePath(dir.path(), DatasetFingerprint(dataset));
+  WriteMeshBytes(path, ReadMeshBytes(std::string(LOCATOR_MESH_FILE_CORPUS) +
+                                     "/format2.mesh"));
+  BuiltMesh built;
+  MeshCacheOutcome outcome;
+  ASSERT_TRUE(BuildOrMapMesh(dataset, dir.path(), &built, &outcome).ok());
+  EXPECT_FALSE(outcome.mapped);
+  EXPECT_THAT(outcome.load_error,
+              HasSubstr("format version 2, this build reads version 3"));
+  EXPECT_TRUE(outcome.save_error.empty()) << outcome.save_error;
+  BuiltMesh mapped;
+  MeshCacheOutcome again;
+  ASSERT_TRUE(BuildOrMapMesh(dataset, dir.path(), &mapped, &again).ok());
+  EXPECT_TRUE(again.mapped) << again.load_error;
+  ExpectSameMesh(built, mapped);
 }
 
 TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {

@@ -262,5 +262,18 @@ TEST(TuningStateTest, CommittedFuzzSeedsDecodeAndRestore) {
   }
 }
 
+// format2.state is the clustered seed as version 2 wrote it (FNV-1a
+// checksum and dataset digest): refused by its version, not misread.
+TEST(TuningStateTest, AStateOfTheFormerFormatIsRefused) {
+  std::string bytes;
+  ASSERT_TRUE(
+      ReadWholeFile(std::string(LOCATOR_TUNING_STATE_CORPUS) + "/format2.state",
+                    "seed", &bytes)
+          .ok());
+  EXPECT_THAT(Decode(bytes).message(),
+              HasSubstr("unsupported tuning state format version 2 (this "
+                        "build reads 3)"));
+}
+
 }  // namespace
 }  // namespace locator

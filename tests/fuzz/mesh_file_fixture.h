@@ -17,10 +17,8 @@
 
 #include "locator/dataset_sources.h"
 #include "server/core/dataset/dataset_fingerprint.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/mesh/mesh_file.h"
-
-#define XXH_INLINE_ALL
-#include <xxhash.h>
 
 namespace locator::fuzz {
 
@@ -68,11 +66,11 @@ inline void ResealMeshFile(std::string* bytes, uint64_t fingerprint) {
   if (bytes->size() < kMeshFileHeaderBytes) return;
   PutU64(bytes, kMeshFingerprintAt, fingerprint);
   PutU64(bytes, kMeshFileBytesAt, bytes->size());
+  const std::string_view file(*bytes);
   PutU64(bytes, kMeshPayloadChecksumAt,
-         XXH3_64bits(bytes->data() + kMeshFileHeaderBytes,
-                     bytes->size() - kMeshFileHeaderBytes));
+         Xxh3Of(file.substr(kMeshFileHeaderBytes)));
   PutU64(bytes, kMeshHeaderChecksumAt,
-         XXH3_64bits(bytes->data(), kMeshHeaderChecksumAt));
+         Xxh3Of(file.substr(0, kMeshHeaderChecksumAt)));
 }
 
 }  // namespace locator::fuzz

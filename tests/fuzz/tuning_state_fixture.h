@@ -18,7 +18,7 @@
 #include "locator/dataset_sources.h"
 #include "locator/tuning_options.h"
 #include "server/core/cgal/triangulation.h"
-#include "server/core/geometry/fnv_hash.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/strategies/self_tuning_locator.h"
 #include "server/core/tuning/hot_region_tuner.h"
 #include "server/core/tuning/tuning_state.h"
@@ -70,11 +70,10 @@ inline void ResealTuningState(std::string* bytes) {
   for (size_t i = 0; i < 8; ++i) {
     (*bytes)[kLengthAt + i] = static_cast<char>(bytes->size() >> (8 * i));
   }
-  Fnv1a64 hash;
-  hash.Add(std::string_view(*bytes).substr(0, bytes->size() - 8));
+  const uint64_t checksum =
+      Xxh3Of(std::string_view(*bytes).substr(0, bytes->size() - 8));
   for (size_t i = 0; i < 8; ++i) {
-    (*bytes)[bytes->size() - 8 + i] =
-        static_cast<char>(hash.digest() >> (8 * i));
+    (*bytes)[bytes->size() - 8 + i] = static_cast<char>(checksum >> (8 * i));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/gis/proj_objects.h"
+#include "common/status_macros.h"
 
 namespace locator::gis::las {
 namespace {
@@ -30,21 +31,23 @@ Status Bad(const LasInput& input, std::string_view record,
                                  ": " + what);
 }
 
-Status ReadPayload(LasInput& input, const LasVlr& vlr, std::string_view what,
-                   std::vector<unsigned char>* out) {
+StatusOr<std::vector<unsigned char>> ReadPayload(LasInput& input,
+                                                 const LasVlr& vlr,
+                                                 std::string_view what) {
   if (vlr.payload_length > kMaxCrsRecordBytes) {
     return Bad(input, what,
                std::to_string(vlr.payload_length) + " bytes, more than the " +
                    std::to_string(kMaxCrsRecordBytes) +
                    " a CRS record may have");
   }
-  out->resize(vlr.payload_length);
-  return input.ReadAt(vlr.payload_offset, out->size(), out->data());
+  std::vector<unsigned char> bytes(vlr.payload_length);
+  RETURN_IF_ERROR(input.ReadAt(vlr.payload_offset, bytes.size(), bytes.data()));
+  return bytes;
 }
 
 // `crs` (anything PROJ reads) as WKT2.
-Status ToWkt2(const LasInput& input, std::string_view record,
-              const std::string& crs, std::string* wkt) {
+StatusOr<std::string> ToWkt2(const LasInput& input, std::string_view record,
+                             const std::string& crs) {
   // The file's CRS is the operator's dataset's, as an OGR layer's is.
   GuardedProjContext& ctx = ThreadProjContext();
   PjPtr created;
@@ -57,8 +60,7 @@ Status ToWkt2(const LasInput& input, std::string_view record,
     return Bad(input, record,
                "PROJ cannot write the CRS as WKT: " + LastProjError(ctx.get()));
   }
-  *wkt = text;
-  return Status::OK();
+  return std::string(text);
 }
 
 struct GtifDeleter {
@@ -112,35 +114,24 @@ Status CheckKeyDirectory(const LasInput& input,
 
 // The CRS the GeoTIFF keys define, in a form PROJ reads ("EPSG:32633" or
 // a PROJ string).
-Status GeoKeysCrs(LasInput& input, const LasHeader& header,
-                  const LasVlr& key_vlr, std::string* crs) {
-  std::vector<unsigned char> bytes;
-  if (Status s = ReadPayload(input, key_vlr, "GeoTIFF key directory", &bytes);
-      !s.ok()) {
-    return s;
-  }
+StatusOr<std::string> GeoKeysCrs(LasInput& input, const LasHeader& header,
+                                 const LasVlr& key_vlr) {
+  ASSIGN_OR_RETURN(std::vector<unsigned char> bytes,
+                   ReadPayload(input, key_vlr, "GeoTIFF key directory"));
   std::vector<uint16_t> keys(bytes.size() / 2);
   std::memcpy(keys.data(), bytes.data(), keys.size() * 2);
   std::vector<double> doubles;
   std::vector<char> ascii;
   if (const LasVlr* vlr = header.FindVlr(kProjectionUserId, kGeoDoubleRecord)) {
-    if (Status s = ReadPayload(input, *vlr, "GeoTIFF doubles", &bytes);
-        !s.ok()) {
-      return s;
-    }
+    ASSIGN_OR_RETURN(bytes, ReadPayload(input, *vlr, "GeoTIFF doubles"));
     doubles.resize(bytes.size() / sizeof(double));
     std::memcpy(doubles.data(), bytes.data(), doubles.size() * sizeof(double));
   }
   if (const LasVlr* vlr = header.FindVlr(kProjectionUserId, kGeoAsciiRecord)) {
-    if (Status s = ReadPayload(input, *vlr, "GeoTIFF ASCII", &bytes); !s.ok()) {
-      return s;
-    }
+    ASSIGN_OR_RETURN(bytes, ReadPayload(input, *vlr, "GeoTIFF ASCII"));
     ascii.assign(bytes.begin(), bytes.end());
   }
-  if (Status s = CheckKeyDirectory(input, keys, doubles.size(), ascii.size());
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(CheckKeyDirectory(input, keys, doubles.size(), ascii.size()));
   // libgeotiff reads the ASCII parameters as one C string.
   ascii.push_back('\0');
 
@@ -165,42 +156,38 @@ Status GeoKeysCrs(LasInput& input, const LasHeader& header,
     return Bad(input, kWhat, "a geocentric CRS has no horizontal plane");
   }
   if (defn.Model == ModelTypeProjected && defn.PCS != KvUserDefined) {
-    *crs = "EPSG:" + std::to_string(static_cast<uint16_t>(defn.PCS));
-    return Status::OK();
+    return "EPSG:" + std::to_string(static_cast<uint16_t>(defn.PCS));
   }
   if (defn.Model == ModelTypeGeographic && defn.GCS != KvUserDefined) {
-    *crs = "EPSG:" + std::to_string(static_cast<uint16_t>(defn.GCS));
-    return Status::OK();
+    return "EPSG:" + std::to_string(static_cast<uint16_t>(defn.GCS));
   }
   char* proj_string = GTIFGetProj4Defn(&defn);
-  *crs = proj_string == nullptr ? "" : proj_string;
+  std::string crs = proj_string == nullptr ? "" : proj_string;
   GTIFFreeMemory(proj_string);
-  if (crs->empty()) {
+  if (crs.empty()) {
     return Bad(input, kWhat, "libgeotiff cannot express their CRS for PROJ");
   }
-  return Status::OK();
+  return crs;
 }
 
 }  // namespace
 
-Status ReadLasCrs(const LasHeader& header, LasInput& input, std::string* wkt) {
-  wkt->clear();
+StatusOr<std::string> ReadLasCrs(const LasHeader& header, LasInput& input) {
   if (const LasVlr* vlr = header.FindVlr(kProjectionUserId, kWktRecord)) {
     constexpr std::string_view kWhat = "OGC WKT record (2112)";
-    std::vector<unsigned char> bytes;
-    if (Status s = ReadPayload(input, *vlr, kWhat, &bytes); !s.ok()) return s;
+    ASSIGN_OR_RETURN(const std::vector<unsigned char> bytes,
+                     ReadPayload(input, *vlr, kWhat));
     // The WKT is NUL-terminated, possibly padded.
     std::string text(bytes.begin(), bytes.end());
     text.resize(std::strlen(text.c_str()));
     if (text.empty()) return Bad(input, kWhat, "empty");
-    return ToWkt2(input, kWhat, text, wkt);
+    return ToWkt2(input, kWhat, text);
   }
   if (const LasVlr* vlr = header.FindVlr(kProjectionUserId, kGeoKeyRecord)) {
-    std::string crs;
-    if (Status s = GeoKeysCrs(input, header, *vlr, &crs); !s.ok()) return s;
-    return ToWkt2(input, "GeoTIFF keys", crs, wkt);
+    ASSIGN_OR_RETURN(const std::string crs, GeoKeysCrs(input, header, *vlr));
+    return ToWkt2(input, "GeoTIFF keys", crs);
   }
-  return Status::OK();
+  return std::string();
 }
 
 }  // namespace locator::gis::las

@@ -24,11 +24,12 @@
 #include "common/gis/las/las_header.h"
 #include "common/gis/las/las_input.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis::las {
 
 // The CRS of the file `header` was read from (see above), or "".
-Status ReadLasCrs(const LasHeader& header, LasInput& input, std::string* wkt);
+StatusOr<std::string> ReadLasCrs(const LasHeader& header, LasInput& input);
 
 }  // namespace locator::gis::las
 

@@ -8,6 +8,7 @@
 #include "common/gis/las/las_crs.h"
 #include "common/gis/las/las_header.h"
 #include "common/gis/las/las_input.h"
+#include "common/status_macros.h"
 
 namespace locator::gis::las {
 namespace {
@@ -32,15 +33,11 @@ std::string ClassesPresent(const LasPointCounts& counts) {
 
 Status Load(LasInput& input, const LasFilter& filter,
             const DatasetLimits& limits, Dataset* out, LasPointCounts* counts) {
-  LasHeader header;
-  if (Status s = ParseLasHeader(input, &header); !s.ok()) return s;
+  ASSIGN_OR_RETURN(const LasHeader header, ParseLasHeader(input));
   Dataset dataset;
-  if (Status s = ReadLasCrs(header, input, &dataset.crs); !s.ok()) return s;
-  if (Status s = ReadLasPoints(header, input, filter, limits.max_points,
-                               &dataset, counts);
-      !s.ok()) {
-    return s;
-  }
+  ASSIGN_OR_RETURN(dataset.crs, ReadLasCrs(header, input));
+  RETURN_IF_ERROR(ReadLasPoints(header, input, filter, limits.max_points,
+                                &dataset, counts));
   if (counts->records == 0) {
     return Status::InvalidArgument(input.name() + ": no point records");
   }
@@ -59,19 +56,16 @@ Status Load(LasInput& input, const LasFilter& filter,
 Status LoadLasDataset(const std::string& spec, Dataset* out,
                       const DatasetLimits& limits, LasPointCounts* counts) {
   LasDatasetSpec parsed;
-  if (Status s = ParseLasDatasetSpec(spec, &parsed); !s.ok()) return s;
+  RETURN_IF_ERROR(ParseLasDatasetSpec(spec, &parsed));
   if (SourceHasExtension(parsed.path, kLazExtension)) {
     return Status::FailedPrecondition(LazMessage(parsed.path));
   }
-  std::unique_ptr<LasInput> input;
-  if (Status s = OpenLasFile(parsed.path, &input); !s.ok()) return s;
+  ASSIGN_OR_RETURN(const std::unique_ptr<LasInput> input,
+                   OpenLasFile(parsed.path));
   LasPointCounts local;
   Dataset dataset;
-  if (Status s = Load(*input, parsed.filter, limits, &dataset,
-                      counts != nullptr ? counts : &local);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(Load(*input, parsed.filter, limits, &dataset,
+                       counts != nullptr ? counts : &local));
   dataset.source = spec;
   *out = std::move(dataset);
   return Status::OK();

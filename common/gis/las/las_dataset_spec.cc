@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include "common/status_macros.h"
+
 namespace locator::gis::las {
 namespace {
 
@@ -66,7 +68,7 @@ Status ParseLasDatasetSpec(std::string_view spec, LasDatasetSpec* out) {
     return SpecError(spec, "no path before the options");
   }
   std::vector<SpecOption> options;
-  if (Status s = ParseSpecOptions(spec, &options); !s.ok()) return s;
+  RETURN_IF_ERROR(ParseSpecOptions(spec, &options));
   bool have_classes = false;
   bool have_returns = false;
   for (const SpecOption& option : options) {

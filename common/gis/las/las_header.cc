@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 
 namespace locator::gis::las {
 namespace {
@@ -122,7 +123,7 @@ Status ReadVlrs(LasInput& input, const Checker& check, uint32_t count,
                        " runs past the point data offset " +
                        Num(h->point_data_offset));
     }
-    if (Status s = input.ReadAt(at, sizeof(bytes), bytes); !s.ok()) return s;
+    RETURN_IF_ERROR(input.ReadAt(at, sizeof(bytes), bytes));
     LasVlr vlr;
     vlr.user_id = UserId(bytes);
     vlr.record_id = Get<uint16_t>(bytes, kVlrRecordIdAt);
@@ -161,7 +162,7 @@ Status ReadEvlrs(LasInput& input, const Checker& check, uint64_t start,
       return check.Bad("EVLR " + Num(i) + " at offset " + Num(at) +
                        " runs past the end of the file");
     }
-    if (Status s = input.ReadAt(at, sizeof(bytes), bytes); !s.ok()) return s;
+    RETURN_IF_ERROR(input.ReadAt(at, sizeof(bytes), bytes));
     LasVlr vlr;
     vlr.extended = true;
     vlr.user_id = UserId(bytes);
@@ -201,7 +202,7 @@ std::string LazMessage(const std::string& name) {
          " out.las`, and serve out.las";
 }
 
-Status ParseLasHeader(LasInput& input, LasHeader* out) {
+StatusOr<LasHeader> ParseLasHeader(LasInput& input) {
   const Checker check(input.name());
   const uint64_t size = input.size();
   unsigned char b[kHeaderSize14] = {};
@@ -210,7 +211,7 @@ Status ParseLasHeader(LasInput& input, LasHeader* out) {
                      " bytes, a LAS header at least " + Num(kHeaderSize12));
   }
   const size_t head = size < sizeof(b) ? static_cast<size_t>(size) : sizeof(b);
-  if (Status s = input.ReadAt(0, head, b); !s.ok()) return s;
+  RETURN_IF_ERROR(input.ReadAt(0, head, b));
   if (std::memcmp(b, "LASF", 4) != 0) {
     return check.Bad("not a LAS file (it does not start with \"LASF\")");
   }
@@ -269,10 +270,7 @@ Status ParseLasHeader(LasInput& input, LasHeader* out) {
                      " lies past the end of the file (" + Num(size) +
                      " bytes)");
   }
-  if (Status s = ReadVlrs(input, check, Get<uint32_t>(b, kVlrCountAt), &h);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(ReadVlrs(input, check, Get<uint32_t>(b, kVlrCountAt), &h));
   if (h.FindVlr(kLaszipUserId, kLaszipRecordId) != nullptr) {
     return Status::FailedPrecondition(LazMessage(input.name()));
   }
@@ -304,19 +302,15 @@ Status ParseLasHeader(LasInput& input, LasHeader* out) {
   if (evlr_count > 0) {
     const uint64_t points_end =
         h.point_data_offset + h.point_count * h.point_record_length;
-    if (Status s =
-            ReadEvlrs(input, check, evlr_start, evlr_count, points_end, &h);
-        !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(
+        ReadEvlrs(input, check, evlr_start, evlr_count, points_end, &h));
   }
   for (int axis = 0; axis < 3; ++axis) {
     h.scale[axis] = Get<double>(b, kScaleAt + 8 * axis);
     h.offset[axis] = Get<double>(b, kOffsetAt + 8 * axis);
   }
-  if (Status s = CheckScaleAndOffset(check, h); !s.ok()) return s;
-  *out = std::move(h);
-  return Status::OK();
+  RETURN_IF_ERROR(CheckScaleAndOffset(check, h));
+  return h;
 }
 
 }  // namespace locator::gis::las

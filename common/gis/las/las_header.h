@@ -36,6 +36,7 @@
 
 #include "common/gis/las/las_input.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis::las {
 
@@ -76,7 +77,7 @@ size_t MinPointRecordLength(uint8_t format);
 std::string LazMessage(const std::string& name);
 
 // Reads and checks the header and (E)VLR directory of `input` (see above).
-Status ParseLasHeader(LasInput& input, LasHeader* out);
+StatusOr<LasHeader> ParseLasHeader(LasInput& input);
 
 }  // namespace locator::gis::las
 

@@ -84,7 +84,7 @@ class MemoryInput final : public LasInput {
 
 }  // namespace
 
-Status OpenLasFile(const std::string& path, std::unique_ptr<LasInput>* out) {
+StatusOr<std::unique_ptr<LasInput>> OpenLasFile(const std::string& path) {
   // O_NONBLOCK: opening a FIFO must not wait for a writer; it has no effect
   // on the regular file this must be.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
@@ -99,9 +99,8 @@ Status OpenLasFile(const std::string& path, std::unique_ptr<LasInput>* out) {
     ::close(fd);
     return Status::IOError("cannot open " + path + ": not a regular file");
   }
-  *out = std::make_unique<FileInput>(fd, static_cast<uint64_t>(info.st_size),
+  return std::make_unique<FileInput>(fd, static_cast<uint64_t>(info.st_size),
                                      path);
-  return Status::OK();
 }
 
 std::unique_ptr<LasInput> LasMemoryInput(std::string_view bytes,

@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis::las {
 
@@ -32,7 +33,7 @@ class LasInput {
 
 // The regular file at `path`, opened for reading. NotFound if it does not
 // exist; IOError if it cannot be opened or is not a regular file.
-Status OpenLasFile(const std::string& path, std::unique_ptr<LasInput>* out);
+StatusOr<std::unique_ptr<LasInput>> OpenLasFile(const std::string& path);
 
 // `bytes` (which must outlive the input) named `name`.
 std::unique_ptr<LasInput> LasMemoryInput(std::string_view bytes,

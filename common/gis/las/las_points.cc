@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/status_macros.h"
+
 namespace locator::gis::las {
 namespace {
 
@@ -88,11 +90,8 @@ Status ReadLasPoints(const LasHeader& header, LasInput& input,
   for (uint64_t done = 0; done < header.point_count;) {
     const size_t records = static_cast<size_t>(
         std::min<uint64_t>(per_chunk, header.point_count - done));
-    if (Status s = input.ReadAt(header.point_data_offset + done * length,
-                                records * length, chunk.data());
-        !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(input.ReadAt(header.point_data_offset + done * length,
+                                 records * length, chunk.data()));
     for (size_t i = 0; i < records; ++i) {
       const Record r = Decode(chunk.data() + i * length, header.point_format);
       ++counts->per_class[r.classification];

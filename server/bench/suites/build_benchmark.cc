@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
 #include "server/bench/stopwatch.h"
@@ -84,7 +85,7 @@ Status BuildWithCgal(const Dataset& dataset, Sample* sample) {
   const double cpu = CpuSeconds();
   const Stopwatch watch;
   std::unique_ptr<Triangulation> t;
-  if (Status s = Triangulation::Build(dataset, &t); !s.ok()) return s;
+  RETURN_IF_ERROR(Triangulation::Build(dataset, &t));
   sample->mesh = t->shared_mesh();
   t.reset();  // as the engine does: it serves from the mesh alone
   sample->wall_s = watch.Seconds();
@@ -101,17 +102,14 @@ Status BuildInTiles(const Dataset& dataset, unsigned threads, Sample* sample) {
   TiledBuildOptions options;
   options.threads = threads;
   BuiltMesh built;
-  if (Status s = BuildTiledMesh(dataset.points, dataset.values, options, &built,
-                                &sample->phases);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(BuildTiledMesh(dataset.points, dataset.values, options,
+                                 &built, &sample->phases));
   sample->wall_s = watch.Seconds();
   sample->cpu_s = CpuSeconds() - cpu;
   sample->peak_bytes_per_point =
       double(StatusBytes("VmHWM:") - before) / double(dataset.points.size());
   sample->mesh = built.mesh;
-  if (Status s = SetUpStrategy(*sample->mesh, sample); !s.ok()) return s;
+  RETURN_IF_ERROR(SetUpStrategy(*sample->mesh, sample));
   // The published path: what locatord does with these points.
   Dataset copy = dataset;
   EngineOptions engine_options;
@@ -236,11 +234,8 @@ Status RunBuild(const BuildOptions& options, std::ostream& out) {
       }
       if (options.verify) {
         for (size_t b = 1; b < builders.size(); ++b) {
-          if (Status s = CompareMeshArrays(round[b].mesh->arrays(),
-                                           round[0].mesh->arrays());
-              !s.ok()) {
-            return s;
-          }
+          RETURN_IF_ERROR(CompareMeshArrays(round[b].mesh->arrays(),
+                                            round[0].mesh->arrays()));
           const Stopwatch watch;
           const size_t bad = CountNonCanonicalEdges(*round[b].mesh);
           round[b].check_s = watch.Seconds();

@@ -17,6 +17,7 @@
 
 #include "common/gis/gdal_support.h"
 #include "common/gis/raster_writer.h"
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
 #include "server/bench/datasets/surface_terrain.h"
@@ -96,12 +97,9 @@ Status WriteGeoTiff(const RasterSpec& spec, const std::vector<double>& cells,
                                .cell_height = spec.cell_height(),
                                .nodata = spec.nodata,
                                .crs_wkt = ""};
-  if (Status s =
-          gis::RasterWriter::Open(path, shape, {.driver = "GTiff"}, &writer);
-      !s.ok()) {
-    return s;
-  }
-  if (Status s = writer->WriteRows(0, spec.height, cells); !s.ok()) return s;
+  RETURN_IF_ERROR(
+      gis::RasterWriter::Open(path, shape, {.driver = "GTiff"}, &writer));
+  RETURN_IF_ERROR(writer->WriteRows(0, spec.height, cells));
   return writer->Close();
 }
 
@@ -110,19 +108,14 @@ Status LocatorEndToEnd(const GridBenchOptions& options, const std::string& csv,
                        const std::string& tif, std::unique_ptr<Engine>* engine,
                        std::vector<double>* cells) {
   Dataset dataset;
-  if (Status s = LoadDataset(csv, &dataset); !s.ok()) return s;
+  RETURN_IF_ERROR(LoadDataset(csv, &dataset));
   // A one-shot job needs no learned start table: Jump&Walk starts each
   // block's first walk, scanline coherence every other.
   EngineOptions engine_options;
   engine_options.strategy = "jump-and-walk";
-  if (Status s = Engine::Create(std::move(dataset), engine_options, engine);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(Engine::Create(std::move(dataset), engine_options, engine));
   const RasterSpec spec = SpecFor(options);
-  if (Status s = RenderAll(**engine, spec, options.threads, cells); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(RenderAll(**engine, spec, options.threads, cells));
   return WriteGeoTiff(spec, *cells, tif);
 }
 
@@ -196,7 +189,7 @@ Status RunGridBenchmark(const GridBenchOptions& options, std::ostream& out) {
   const std::string csv = dir + "points.csv", vrt = dir + "points.vrt";
   const std::string ours = dir + "locator.tif", theirs = dir + "gdal_grid.tif";
   double z_range = 0;
-  if (Status s = WriteInputs(options, csv, vrt, &z_range); !s.ok()) return s;
+  RETURN_IF_ERROR(WriteInputs(options, csv, vrt, &z_range));
   out << "grid benchmark: " << options.points << " points, " << options.size
       << " x " << options.size << " cells, " << options.threads
       << " threads, inputs in " << options.work_dir << "\n"
@@ -207,13 +200,10 @@ Status RunGridBenchmark(const GridBenchOptions& options, std::ostream& out) {
   for (int i = 0; i < options.repeats; ++i) {
     Stopwatch watch;
     engine.reset();
-    if (Status s = LocatorEndToEnd(options, csv, ours, &engine, &cells);
-        !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(LocatorEndToEnd(options, csv, ours, &engine, &cells));
     locator_s.push_back(watch.Seconds());
     watch.Restart();
-    if (Status s = RunGdalGrid(options, vrt, theirs); !s.ok()) return s;
+    RETURN_IF_ERROR(RunGdalGrid(options, vrt, theirs));
     gdal_s.push_back(watch.Seconds());
     out << "run " << i + 1 << ": locator end to end " << locator_s.back()
         << " s (build " << engine->dataset_info().build_seconds
@@ -223,14 +213,12 @@ Status RunGridBenchmark(const GridBenchOptions& options, std::ostream& out) {
   const RasterSpec spec = SpecFor(options);
   std::vector<double> again;
   const Stopwatch render_watch;
-  if (Status s = RenderAll(*engine, spec, options.threads, &again); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(RenderAll(*engine, spec, options.threads, &again));
   const double render_s = render_watch.Seconds();
   out << "locator render only (engine built): " << render_s << " s, "
       << spec.cells() / render_s / 1e6 << " M cells/s\n";
   Comparison c;
-  if (Status s = Compare(spec, cells, theirs, &c); !s.ok()) return s;
+  RETURN_IF_ERROR(Compare(spec, cells, theirs, &c));
   out << std::scientific << std::setprecision(3) << "rasters: " << c.both
       << " cells valued in both; max |difference| " << c.max_abs_difference
       << " (" << c.max_abs_difference / z_range << " of the z range " << z_range

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "common/workload.h"
 #include "locator/dataset_sources.h"
 #include "server/bench/bench_runner.h"
@@ -79,10 +80,7 @@ Status RunStream(const PaperOptions& o, const Triangulation& t,
                  const std::string& strategy, const Stream& stream,
                  SizeResults* out, Disagreements* disagreements) {
   std::unique_ptr<PointLocator> locator;
-  if (Status s = MakePointLocator(strategy, t.mesh(), o.tuning, &locator);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(MakePointLocator(strategy, t.mesh(), o.tuning, &locator));
   const size_t total = stream.queries.size();
   LocateRange(*locator, t, strategy, stream, 0, o.warmup, nullptr,
               disagreements);
@@ -187,11 +185,8 @@ Status RunPaper(const PaperOptions& o, BenchReport* report) {
           }
         }
         for (const std::string& strategy : StrategyNames()) {
-          if (Status s =
-                  RunStream(o, *t, strategy, stream, &results, &disagreements);
-              !s.ok()) {
-            return s;
-          }
+          RETURN_IF_ERROR(
+              RunStream(o, *t, strategy, stream, &results, &disagreements));
         }
       }
     }

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "locator/engine.h"
 #include "server/bench/datasets/surface_terrain.h"
 #include "server/bench/stopwatch.h"
@@ -51,7 +52,7 @@ std::vector<Point2> RandomLine(double length, std::mt19937_64& random) {
 Status RunProfileBenchmark(const SurfaceBenchOptions& options,
                            std::ostream& out) {
   std::unique_ptr<Engine> engine;
-  if (Status s = BuildTerrain(options, &engine); !s.ok()) return s;
+  RETURN_IF_ERROR(BuildTerrain(options, &engine));
   // Mean triangle edges crossed per metre of line, for uniform points.
   const double per_metre =
       1.4 * std::sqrt(static_cast<double>(options.points)) / 10000;
@@ -71,10 +72,7 @@ Status RunProfileBenchmark(const SurfaceBenchOptions& options,
     Profile profile;
     const Stopwatch watch;
     for (const std::vector<Point2>& line : polylines) {
-      if (Status s = engine->TraceProfile(line, profile_options, &profile);
-          !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(engine->TraceProfile(line, profile_options, &profile));
       breakpoints += profile.breakpoints.size();
       crossings += profile.crossings;
     }
@@ -91,7 +89,7 @@ Status RunProfileBenchmark(const SurfaceBenchOptions& options,
 Status RunInterpolationBenchmark(const SurfaceBenchOptions& options,
                                  std::ostream& out) {
   std::unique_ptr<Engine> engine;
-  if (Status s = BuildTerrain(options, &engine); !s.ok()) return s;
+  RETURN_IF_ERROR(BuildTerrain(options, &engine));
   // Uniform points in random order: the locate costs what a map's random
   // clicks cost; the raster below shows the interpolation almost alone.
   const std::vector<Point2> queries = TerrainPoints(options.queries, 9);
@@ -111,19 +109,13 @@ Status RunInterpolationBenchmark(const SurfaceBenchOptions& options,
     double point_ns = 0;
     for (int pass = 0; pass < 2; ++pass) {
       const Stopwatch watch;
-      if (Status s = engine->LocateBatch(queries, &results, nullptr, how);
-          !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(engine->LocateBatch(queries, &results, nullptr, how));
       point_ns = watch.Seconds() * 1e9 / queries.size();
     }
     RasterSpec spec = raster;
     spec.interpolation = how;
     const Stopwatch watch;
-    if (Status s = engine->RenderRows(spec, 0, spec.height, cells.data());
-        !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(engine->RenderRows(spec, 0, spec.height, cells.data()));
     const double cell_ns = watch.Seconds() * 1e9 / spec.cells();
     if (how == Interpolation::kLinear) {
       linear_point_ns = point_ns;

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "common/random.h"
+#include "common/status_macros.h"
 #include "common/workload.h"
 #include "locator/dataset_sources.h"
 #include "server/bench/bench_runner.h"
@@ -251,11 +252,8 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
   for (const ScaleData data : kAll) {
     for (std::string& name : WorkloadNames(data)) known.push_back(name);
   }
-  if (Status s = CheckNames(o.workloads, known, "workload"); !s.ok()) return s;
-  if (Status s = CheckNames(o.strategies, StrategyNames(), "strategy");
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(CheckNames(o.workloads, known, "workload"));
+  RETURN_IF_ERROR(CheckNames(o.strategies, StrategyNames(), "strategy"));
   size_t mismatches = 0;
   const size_t count = o.warmup + o.queries;
   for (size_t n : o.sizes) {

@@ -13,8 +13,8 @@
 
 #include "server/core/cgal/domain_outline.h"
 #include "server/core/cgal/given_mesh_builder.h"
-#include "server/core/geometry/fnv_hash.h"
 #include "server/core/geometry/hilbert.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/mesh/serving_mesh.h"
 
 namespace locator {
@@ -161,7 +161,7 @@ Status GivenMeshBuilder::Serve(BuiltMesh* out) {
   // Triangulation::VertexDigest over the same triangulation: the distinct
   // points by id, then the constrained edges (all the mesh's) and the
   // in-domain triangles, by sorted ids.
-  Fnv1a64 hash;
+  Xxh3Digest hash;
   for (uint32_t id = 0; id < pts.size(); ++id) {
     if (first_[id] != id) continue;
     hash.AddU64(id);

@@ -10,8 +10,8 @@
 #include <utility>
 
 #include "server/core/geometry/barycentric.h"
-#include "server/core/geometry/fnv_hash.h"
 #include "server/core/geometry/segment_distance.h"
+#include "server/core/geometry/xxh3_digest.h"
 
 namespace locator {
 
@@ -49,7 +49,7 @@ Triangulation::Face_handle Triangulation::DefaultStart() const {
 }
 
 uint64_t Triangulation::VertexDigest() const {
-  Fnv1a64 hash;
+  Xxh3Digest hash;
   for (size_t id = 0; id < by_input_.size(); ++id) {
     const Vertex_handle v = by_input_[id];
     if (static_cast<size_t>(v->info().id) != id) continue;  // merged

@@ -136,8 +136,8 @@ class Triangulation {
   Face_handle FiniteFaceAt(Vertex_handle v) const;
   // Where CGAL's locate() starts without a hint: a finite hull face.
   Face_handle DefaultStart() const;
-  // Fnv1a64 over every distinct vertex's (id, x, y) in id order, then (for
-  // constrained datasets) the constrained edges and in-domain triangles by
+  // XXH3 (Xxh3Digest) over every distinct vertex's (id, x, y) in id order, then
+  // (for constrained datasets) the constrained edges and in-domain triangles by
   // sorted ids: equal for triangulations of the same points and domain,
   // whatever file they came from.
   uint64_t VertexDigest() const;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/cgal/triangulation_builder.h"
 #include "server/core/geometry/wide_math.h"
@@ -23,9 +24,7 @@ namespace locator {
 Status Triangulation::Builder::InsertPoints() {
   const std::vector<Point2>& pts = dataset_.points;
   const size_t n = pts.size();
-  if (Status s = CheckPointCoordinates(pts, dataset_.values.size()); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(CheckPointCoordinates(pts, dataset_.values.size()));
 
   // Merge repeated points before CGAL sees them: CGAL's range insert would
   // keep the info of whichever copy its spatial sort visits last, and we
@@ -58,9 +57,7 @@ Status Triangulation::Builder::InsertPoints() {
         return CGAL::orientation(distinct[0].first, distinct[1].first,
                                  p.first) == CGAL::COLLINEAR;
       });
-  if (Status s = CheckTriangulable(distinct.size(), all_collinear); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(CheckTriangulable(distinct.size(), all_collinear));
 
   t_.has_values_ = !dataset_.values.empty();
   t_.input_points_ = n;

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/cgal/triangulation_builder.h"
 #include "server/core/geometry/hilbert.h"
@@ -21,7 +22,7 @@ namespace locator {
 Status Triangulation::Builder::BuildServingMesh() {
   const size_t vertex_count = dt_.number_of_vertices();
   const size_t face_count = dt_.number_of_faces();
-  if (Status s = CheckMeshSize(vertex_count, face_count); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckMeshSize(vertex_count, face_count));
   const BoundingBox& box = t_.box_;
   auto storage = std::make_unique<MeshVectors>();
 

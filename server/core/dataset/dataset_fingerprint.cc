@@ -1,11 +1,9 @@
 #include "server/core/dataset/dataset_fingerprint.h"
 
-#include <memory>
 #include <span>
 #include <vector>
 
-#define XXH_INLINE_ALL
-#include <xxhash.h>
+#include "server/core/geometry/xxh3_digest.h"
 
 namespace locator {
 namespace {
@@ -14,12 +12,10 @@ namespace {
 // element from one list to the next changes the digest.
 class Digest {
  public:
-  Digest() : state_(XXH3_createState()) { XXH3_64bits_reset(state_.get()); }
-
   template <class T>
   void Add(std::span<const T> values) {
     AddCount(values.size());
-    XXH3_64bits_update(state_.get(), values.data(), values.size_bytes());
+    digest_.Add(values.data(), values.size_bytes());
   }
   void Add(const std::vector<Polyline>& lines) {
     AddCount(lines.size());
@@ -28,17 +24,12 @@ class Digest {
       Add(std::span<const double>(line.values));
     }
   }
-  uint64_t value() const { return XXH3_64bits_digest(state_.get()); }
+  uint64_t value() const { return digest_.digest(); }
 
  private:
-  void AddCount(uint64_t count) {
-    XXH3_64bits_update(state_.get(), &count, sizeof(count));
-  }
+  void AddCount(uint64_t count) { digest_.Add(&count, sizeof(count)); }
 
-  struct Free {
-    void operator()(XXH3_state_t* state) const { XXH3_freeState(state); }
-  };
-  std::unique_ptr<XXH3_state_t, Free> state_;
+  Xxh3Digest digest_;
 };
 
 }  // namespace

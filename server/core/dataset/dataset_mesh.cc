@@ -15,8 +15,6 @@ namespace locator {
 
 using dataset_text::Cat;
 using dataset_text::EmptyDataset;
-using dataset_text::FieldReader;
-using dataset_text::Fields;
 using dataset_text::NodeSection;
 using dataset_text::ParseInteger;
 using dataset_text::ParsePoint;
@@ -37,7 +35,7 @@ struct CornerRange {
 
 // Reads three corner indices from fields [first, first + 3) of `f` into
 // *corners, as 0-based point indices.
-Status ReadCorners(const Fields& f, size_t first, const CornerRange& range,
+Status ReadCorners(const TextFields& f, size_t first, const CornerRange& range,
                    std::string_view triangle, const Where& where,
                    std::array<uint32_t, 3>* corners) {
   for (size_t c = 0; c < 3; ++c) {
@@ -56,9 +54,9 @@ Status ReadCorners(const Fields& f, size_t first, const CornerRange& range,
   return Status::OK();
 }
 
-Status NoMoreLines(FieldReader* reader, std::string_view filename,
+Status NoMoreLines(TextFieldReader* reader, std::string_view filename,
                    std::string_view after) {
-  Fields f;
+  TextFields f;
   if (!reader->Next(&f)) return Status::OK();
   return Where{filename, reader->line_number()}.Error(
       Cat("unexpected line after ", after));
@@ -66,12 +64,12 @@ Status NoMoreLines(FieldReader* reader, std::string_view filename,
 
 // Reads OFF's header: "OFF" alone or followed by the counts, then the counts
 // "<#vertices> <#faces> <#edges>" if they were not on the same line.
-Status ReadOffHeader(FieldReader* reader, std::string_view filename,
+Status ReadOffHeader(TextFieldReader* reader, std::string_view filename,
                      size_t* vertices, size_t* faces) {
-  Fields f;
+  TextFields f;
   if (!reader->Next(&f)) return EmptyDataset(filename);
   Where where{filename, reader->line_number()};
-  if (f.has_empty || f.field[0] != "OFF") {
+  if (f.has_empty() || f.field[0] != "OFF") {
     return where.Error("expected the header 'OFF'");
   }
   size_t first = 1;
@@ -80,7 +78,7 @@ Status ReadOffHeader(FieldReader* reader, std::string_view filename,
     where = Where{filename, reader->line_number()};
     first = 0;
   }
-  if (f.has_empty || f.count - first != 3 ||
+  if (f.has_empty() || f.count - first != 3 ||
       !ParseInteger(f.field[first], vertices) ||
       !ParseInteger(f.field[first + 1], faces)) {
     return where.Error("expected counts '<#vertices> <#faces> <#edges>'");
@@ -92,7 +90,7 @@ Status ReadOffHeader(FieldReader* reader, std::string_view filename,
 
 Status ParseOffText(std::string_view text, std::string_view filename,
                     Dataset* out, const DatasetLimits& limits) {
-  FieldReader reader(text);
+  TextFieldReader reader(text);
   size_t vertices = 0;
   size_t faces = 0;
   Status s = ReadOffHeader(&reader, filename, &vertices, &faces);
@@ -103,7 +101,7 @@ Status ParseOffText(std::string_view text, std::string_view filename,
                          limits.max_points);
   }
   Dataset ds;
-  Fields f;
+  TextFields f;
   Where where;
   for (size_t v = 0; v < vertices; ++v) {
     s = ReadRow(&reader, filename, 3, Cat("vertex ", v, " 'x y z'"), &f,
@@ -151,7 +149,7 @@ Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
                     Dataset* out, const DatasetLimits& limits) {
   Dataset ds;
   NodeSection nodes;
-  FieldReader node_reader(node_text);
+  TextFieldReader node_reader(node_text);
   Status s = dataset_text::ParseNodeSection(&node_reader, node_filename, limits,
                                             &ds, &nodes);
   if (!s.ok()) return s;
@@ -164,8 +162,8 @@ Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
                           Cat("the ", n, " nodes numbered from ",
                               nodes.first_index, " in ", node_filename)};
 
-  FieldReader reader(ele_text);
-  Fields f;
+  TextFieldReader reader(ele_text);
+  TextFields f;
   if (!reader.Next(&f)) {
     return Status::InvalidArgument(Cat(ele_filename, ": no triangles"));
   }
@@ -173,7 +171,7 @@ Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
   size_t triangles = 0;
   size_t per_triangle = 0;
   size_t attributes = 0;
-  if (f.has_empty || f.count != 3 || !ParseInteger(f.field[0], &triangles) ||
+  if (f.has_empty() || f.count != 3 || !ParseInteger(f.field[0], &triangles) ||
       !ParseInteger(f.field[1], &per_triangle) ||
       !ParseInteger(f.field[2], &attributes)) {
     return header.Error(

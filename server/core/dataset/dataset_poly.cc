@@ -10,8 +10,6 @@
 namespace locator {
 
 using dataset_text::Cat;
-using dataset_text::FieldReader;
-using dataset_text::Fields;
 using dataset_text::NodeSection;
 using dataset_text::ParseFinite;
 using dataset_text::ParseInteger;
@@ -22,7 +20,7 @@ using dataset_text::Where;
 
 Status ParsePolyText(std::string_view text, std::string_view filename,
                      Dataset* out, const DatasetLimits& limits) {
-  FieldReader reader(text);
+  TextFieldReader reader(text);
   Dataset ds;
   NodeSection nodes;
   Status s =
@@ -34,7 +32,7 @@ Status ParsePolyText(std::string_view text, std::string_view filename,
   s = ReadCount(&reader, filename, 2, "segment header '<#segments> <#markers>'",
                 &segments);
   if (!s.ok()) return s;
-  Fields f;
+  TextFields f;
   Where where;
   for (size_t k = 0; k < segments; ++k) {
     s = ReadRow(&reader, filename, 3, Cat("segment ", k), &f, &where);
@@ -74,11 +72,11 @@ Status ParsePolyText(std::string_view text, std::string_view filename,
   }
 
   // Optional: regional attributes "<index> x y attribute [max area]".
-  Fields rest;
+  TextFields rest;
   if (reader.Next(&rest)) {
     const Where header{filename, reader.line_number()};
     size_t regions = 0;
-    if (rest.has_empty || rest.count != 1 ||
+    if (rest.has_empty() || rest.count != 1 ||
         !ParseInteger(rest.field[0], &regions)) {
       return header.Error("expected regional attribute header '<#regions>'");
     }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/dataset/dataset_text.h"
 #include "server/core/dataset/file_io.h"
 
@@ -153,17 +154,17 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
   const size_t estimate = ReserveEstimate(text, limits.max_points);
   Dataset ds;
   ds.points.reserve(estimate);
-  FieldReader reader(text);
-  Fields f;
+  TextFieldReader reader(text);
+  TextFields f;
   size_t columns = 0;
   size_t columns_line = 0;
   bool first_line = true;
   while (reader.Next(&f)) {
     const Where where{filename, reader.line_number()};
-    if (f.has_empty) return where.Error("empty field");
+    if (f.has_empty()) return where.Error("empty field");
     double unused;
     if (std::exchange(first_line, false) &&
-        ParseDouble(f.field[0], &unused) == NumberKind::kNotANumber) {
+        ParseNumber(f.field[0], &unused) == NumberKind::kNotANumber) {
       continue;  // a header such as "x,y,z"
     }
     if (f.count != 2 && f.count != 3) {
@@ -180,9 +181,7 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
     if (ds.points.size() == limits.max_points) {
       return TooManyPoints(where.Prefix(), limits.max_points);
     }
-    if (Status s = ParsePoint(f, 0, columns == 3, where, &ds); !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(ParsePoint(f, 0, columns == 3, where, &ds));
   }
   if (ds.points.empty()) return EmptyDataset(filename);
   *out = std::move(ds);
@@ -191,27 +190,28 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
 
 namespace dataset_text {
 
-Status ReadCount(FieldReader* reader, std::string_view filename,
+Status ReadCount(TextFieldReader* reader, std::string_view filename,
                  size_t max_fields, std::string_view what, size_t* count) {
-  Fields f;
+  TextFields f;
   if (!reader->Next(&f)) {
     return Status::InvalidArgument(
         Cat(filename, ":", reader->line_number(), ": missing ", what));
   }
   const Where where{filename, reader->line_number()};
-  if (f.has_empty || f.count > max_fields || !ParseInteger(f.field[0], count)) {
+  if (f.has_empty() || f.count > max_fields ||
+      !ParseInteger(f.field[0], count)) {
     return where.Error(Cat("expected ", what));
   }
   return Status::OK();
 }
 
-Status ReadRow(FieldReader* reader, std::string_view filename,
-               size_t min_fields, std::string_view what, Fields* f,
+Status ReadRow(TextFieldReader* reader, std::string_view filename,
+               size_t min_fields, std::string_view what, TextFields* f,
                Where* where) {
   const bool more = reader->Next(f);
   *where = Where{filename, reader->line_number()};
   if (!more) return where->Error(Cat("missing ", what));
-  if (f->has_empty) return where->Error("empty field");
+  if (f->has_empty()) return where->Error("empty field");
   if (f->count < min_fields) {
     return where->Error(
         Cat("expected ", min_fields, " fields for ", what, ", got ", f->count));
@@ -219,14 +219,14 @@ Status ReadRow(FieldReader* reader, std::string_view filename,
   return Status::OK();
 }
 
-Status ParseNodeSection(FieldReader* reader, std::string_view filename,
+Status ParseNodeSection(TextFieldReader* reader, std::string_view filename,
                         const DatasetLimits& limits, Dataset* out,
                         NodeSection* section) {
-  Fields f;
+  TextFields f;
   if (!reader->Next(&f)) return EmptyDataset(filename);
   const Where header{filename, reader->line_number()};
   section->header_line = header.line;
-  if (f.has_empty || f.count != 4) {
+  if (f.has_empty() || f.count != 4) {
     return header.Error(
         "expected header '<#points> <dim> <#attributes> <#markers>'");
   }
@@ -260,7 +260,7 @@ Status ParseNodeSection(FieldReader* reader, std::string_view filename,
       return where.Error(
           Cat("found only ", ds.points.size(), " of ", declared));
     }
-    if (f.has_empty) return where.Error("empty field");
+    if (f.has_empty()) return where.Error("empty field");
     // Written as a subtraction so that a huge declared attribute count
     // cannot overflow into a match.
     if (f.count < 3 + num_markers ||
@@ -284,7 +284,7 @@ Status ParseNodeSection(FieldReader* reader, std::string_view filename,
               ")"));
     }
     // Further attributes and the marker are not used, so not validated.
-    if (Status s = ParsePoint(f, 1, with_value, where, &ds); !s.ok()) return s;
+    RETURN_IF_ERROR(ParsePoint(f, 1, with_value, where, &ds));
   }
   *out = std::move(ds);
   return Status::OK();
@@ -294,12 +294,12 @@ Status ParseNodeSection(FieldReader* reader, std::string_view filename,
 
 Status ParseNodeText(std::string_view text, std::string_view filename,
                      Dataset* out, const DatasetLimits& limits) {
-  FieldReader reader(text);
+  TextFieldReader reader(text);
   Dataset ds;
   NodeSection section;
   Status s = ParseNodeSection(&reader, filename, limits, &ds, &section);
   if (!s.ok()) return s;
-  Fields f;
+  TextFields f;
   if (reader.Next(&f)) {
     return Where{filename, reader.line_number()}.Error(
         Cat("more than the ", ds.points.size(), " points declared on line ",

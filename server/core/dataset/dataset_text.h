@@ -1,6 +1,6 @@
-// Helpers shared by the dataset text parsers (CSV/XYZ, .node, .poly): a
-// line and field reader that keeps line numbers, number parsing with
-// "file:line: what" errors. Internal to server/core's dataset loading.
+// Helpers shared by the dataset text parsers (CSV/XYZ, .node, .poly):
+// "file:line: what" errors over the line and number reading of
+// common/text_fields.h. Internal to server/core's dataset loading.
 //
 // Thread-safety: plain functions and a reader owned by one parse.
 
@@ -10,13 +10,12 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cmath>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <type_traits>
 
+#include "common/text_fields.h"
 #include "locator/dataset_sources.h"
 #include "locator/status.h"
 
@@ -60,96 +59,10 @@ inline Status TooManyPoints(std::string_view where, size_t limit) {
       Cat(where, ": more than ", limit, " points (max_points limit)"));
 }
 
-inline bool IsSpace(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-// The fields of one content line. Fields are separated by whitespace and/or
-// one comma; two commas in a row (or a leading/trailing comma) make an empty
-// field, which is an error rather than a silent shift of the columns.
-struct Fields {
-  // Enough for "index x y value" of a .node line; later ones are only counted.
-  static constexpr size_t kStored = 4;
-  std::array<std::string_view, kStored> field;
-  size_t count = 0;
-  bool has_empty = false;
-};
-
-// Iterates over the lines of a text that carry content: '#' comments (whole
-// line or trailing), the CR of CRLF and blanks are dropped, and lines left
-// empty are skipped. Line numbers count every line, so errors point at the
-// line the user sees in an editor.
-class FieldReader {
- public:
-  explicit FieldReader(std::string_view text) : text_(text) {}
-
-  // Splits the next content line into *f; false at end of text.
-  bool Next(Fields* f) {
-    while (pos_ < text_.size()) {
-      size_t end = text_.find('\n', pos_);
-      if (end == std::string_view::npos) end = text_.size();
-      std::string_view line = text_.substr(pos_, end - pos_);
-      pos_ = end + 1;
-      ++line_number_;
-      line = line.substr(0, line.find('#'));
-      size_t i = 0;
-      while (i < line.size() && IsSpace(line[i])) ++i;
-      if (i == line.size()) continue;
-      f->count = 0;
-      f->has_empty = false;
-      while (i < line.size()) {
-        const size_t start = i;
-        while (i < line.size() && !IsSpace(line[i]) && line[i] != ',') ++i;
-        if (f->count < Fields::kStored) {
-          f->field[f->count] = line.substr(start, i - start);
-        }
-        ++f->count;
-        const bool empty = i == start;
-        int commas = 0;
-        while (i < line.size() && (IsSpace(line[i]) || line[i] == ',')) {
-          commas += line[i++] == ',';
-        }
-        if (empty || commas > 1 || (commas == 1 && i == line.size())) {
-          f->has_empty = true;
-        }
-      }
-      return true;
-    }
-    return false;
-  }
-
-  // 1-based number of the line last returned (after the end: the last line).
-  size_t line_number() const { return line_number_; }
-
- private:
-  std::string_view text_;
-  size_t pos_ = 0;
-  size_t line_number_ = 0;
-};
-
-enum class NumberKind { kFinite, kNonFinite, kNotANumber };
-
-inline NumberKind ParseDouble(std::string_view s, double* value) {
-  // from_chars rejects a leading '+', which other tools do write.
-  if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
-  const char* end = s.data() + s.size();
-  auto [ptr, ec] = std::from_chars(s.data(), end, *value);
-  if (ptr != end || ec == std::errc::invalid_argument) {
-    return NumberKind::kNotANumber;
-  }
-  if (ec == std::errc::result_out_of_range) {
-    // from_chars reports overflow and underflow alike and leaves *value
-    // untouched; strtod tells them apart (an underflow is a fine ~0). This is
-    // the rare path, so the copy does not matter.
-    *value = std::strtod(std::string(s).c_str(), nullptr);
-  }
-  return std::isfinite(*value) ? NumberKind::kFinite : NumberKind::kNonFinite;
-}
-
 // Parses a finite double; `noun` names the field in the error message.
 inline Status ParseFinite(std::string_view s, std::string_view noun,
                           const Where& where, double* value) {
-  const NumberKind kind = ParseDouble(s, value);
+  const NumberKind kind = ParseNumber(s, value);
   if (kind == NumberKind::kFinite) return Status::OK();
   return where.Error(kind == NumberKind::kNonFinite
                          ? Cat("non-finite ", noun, " ", Quoted(s))
@@ -165,7 +78,7 @@ inline bool ParseInteger(std::string_view s, Int* value) {
 
 // Appends the point in fields [first, first + 1] of `f` and, if
 // `with_value`, the value in field first + 2.
-inline Status ParsePoint(const Fields& f, size_t first, bool with_value,
+inline Status ParsePoint(const TextFields& f, size_t first, bool with_value,
                          const Where& where, Dataset* ds) {
   std::array<double, 3> v;
   const size_t n = with_value ? 3 : 2;
@@ -194,19 +107,19 @@ struct NodeSection {
 
 // Reads a section header "<count> [more fields...]" of at most `max_fields`
 // fields; `what` names the expected header in the error.
-Status ReadCount(FieldReader* reader, std::string_view filename,
+Status ReadCount(TextFieldReader* reader, std::string_view filename,
                  size_t max_fields, std::string_view what, size_t* count);
 
 // Reads the next content line of a section into *f, with at least
 // `min_fields` fields; `what` names the row in errors. *where is its line.
-Status ReadRow(FieldReader* reader, std::string_view filename,
-               size_t min_fields, std::string_view what, Fields* f,
+Status ReadRow(TextFieldReader* reader, std::string_view filename,
+               size_t min_fields, std::string_view what, TextFields* f,
                Where* where);
 
 // Reads Triangle's node section, a header "<#points> <dim> <#attributes>
 // <#markers>" and its points (indices consecutive), into `ds`; the first
 // attribute, if any, is the value.
-Status ParseNodeSection(FieldReader* reader, std::string_view filename,
+Status ParseNodeSection(TextFieldReader* reader, std::string_view filename,
                         const DatasetLimits& limits, Dataset* ds,
                         NodeSection* section);
 

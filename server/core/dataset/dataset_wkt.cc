@@ -18,8 +18,6 @@
 namespace locator {
 
 using dataset_text::Cat;
-using dataset_text::NumberKind;
-using dataset_text::ParseDouble;
 using dataset_text::Quoted;
 using dataset_text::Where;
 
@@ -218,7 +216,7 @@ class WktReader {
       while (tokens_.Peek().kind == TokenKind::kNumber) {
         const Token t = tokens_.Take();
         if (count == 3) return Error(t, "more than 3 coordinates in a point");
-        const NumberKind kind = ParseDouble(t.text, &v[count++]);
+        const NumberKind kind = ParseNumber(t.text, &v[count++]);
         if (kind != NumberKind::kFinite) {
           return Error(t, kind == NumberKind::kNonFinite
                               ? Cat("non-finite coordinate ", Quoted(t.text))

@@ -12,6 +12,8 @@
 #include <system_error>
 #include <utility>
 
+#include "common/status_macros.h"
+
 namespace locator {
 namespace {
 
@@ -118,7 +120,7 @@ Status OpenRegularFile(const std::string& path, std::string_view what,
 Status ReadWholeFile(const std::string& path, std::string_view what,
                      std::string* contents, size_t max_bytes) {
   OpenedFile file;
-  if (Status s = OpenRegularFile(path, what, &file); !s.ok()) return s;
+  RETURN_IF_ERROR(OpenRegularFile(path, what, &file));
   const std::string& name = file.name;
   const int fd = file.closer.fd;
   const uint64_t file_size = file.size;
@@ -206,7 +208,7 @@ MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
 Status MappedFile::Open(const std::string& path, std::string_view what,
                         MappedFile* out) {
   OpenedFile file;
-  if (Status s = OpenRegularFile(path, what, &file); !s.ok()) return s;
+  RETURN_IF_ERROR(OpenRegularFile(path, what, &file));
   const std::string& name = file.name;
   const int fd = file.closer.fd;
   const uint64_t file_size = file.size;

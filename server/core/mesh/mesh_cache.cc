@@ -8,22 +8,20 @@
 #include <utility>
 
 #include "common/freed_memory.h"
+#include "common/status_macros.h"
 #include "server/core/cgal/given_mesh.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/dataset/dataset_fingerprint.h"
 #include "server/core/dataset/file_io.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/tiling/tiled_build.h"
-
-#define XXH_INLINE_ALL
-#include <xxhash.h>
 
 namespace locator {
 namespace {
 
 std::string GeneratedKeyPath(const std::string& dir,
                              const GeneratorSpec& spec) {
-  const std::string key = spec.CanonicalKey();
-  return DigestNamedPath(dir, "generated-", XXH3_64bits(key.data(), key.size()),
+  return DigestNamedPath(dir, "generated-", Xxh3Of(spec.CanonicalKey()),
                          ".key");
 }
 
@@ -33,33 +31,37 @@ std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
   return DigestNamedPath(dir, "mesh-", fingerprint, ".mesh");
 }
 
-Status TriangulateMesh(const Dataset& dataset, unsigned threads,
-                       BuiltMesh* out) {
+StatusOr<BuiltMesh> TriangulateMesh(const Dataset& dataset, unsigned threads) {
+  BuiltMesh built;
   // A mesh served as given needs no constraint hierarchy.
-  if (IsGivenMesh(dataset)) return BuildGivenMesh(dataset, out);
+  if (IsGivenMesh(dataset)) {
+    RETURN_IF_ERROR(BuildGivenMesh(dataset, &built));
+    return built;
+  }
   if (dataset.constraints.empty()) {
     TiledBuildOptions options;
     options.threads = threads;
     const Status s =
-        BuildTiledMesh(dataset.points, dataset.values, options, out);
+        BuildTiledMesh(dataset.points, dataset.values, options, &built);
     // The tiles' CGAL triangulations were many small blocks, now freed.
     ReturnFreedMemory();
-    return s;
+    RETURN_IF_ERROR(s);
+    return built;
   }
   std::unique_ptr<Triangulation> t;
-  if (Status s = Triangulation::Build(dataset, &t); !s.ok()) return s;
-  out->mesh = t->shared_mesh();
-  out->facts.constraints = t->num_constraints();
-  out->facts.holes = t->num_holes();
-  out->facts.duplicates_merged = t->duplicates_merged();
-  out->facts.outline = OutlineOf(*t, kOutlineSize);
-  out->facts.edge_sample = out->mesh->SampleEdges(kEdgeSampleSize);
+  RETURN_IF_ERROR(Triangulation::Build(dataset, &t));
+  built.mesh = t->shared_mesh();
+  built.facts.constraints = t->num_constraints();
+  built.facts.holes = t->num_holes();
+  built.facts.duplicates_merged = t->duplicates_merged();
+  built.facts.outline = OutlineOf(*t, kOutlineSize);
+  built.facts.edge_sample = built.mesh->SampleEdges(kEdgeSampleSize);
   // The engine serves from the mesh alone. CGAL's faces and vertices are
   // many small blocks that malloc keeps after they are freed; trimming
   // returns their pages, so the process shrinks to about the mesh.
   t.reset();
   ReturnFreedMemory();
-  return Status::OK();
+  return built;
 }
 
 Status MapCachedMesh(const std::string& cache_dir, uint64_t fingerprint,
@@ -67,25 +69,31 @@ Status MapCachedMesh(const std::string& cache_dir, uint64_t fingerprint,
   *outcome = MeshCacheOutcome();
   outcome->fingerprint = fingerprint;
   outcome->path = MeshFilePath(cache_dir, fingerprint);
-  const Status status = MapMeshFile(outcome->path, fingerprint, out);
-  outcome->mapped = status.ok();
-  if (!status.ok() && status.code() != Status::Code::kNotFound) {
-    outcome->load_error = status.message();
+  StatusOr<BuiltMesh> mapped = MapMeshFile(outcome->path, fingerprint);
+  outcome->mapped = mapped.ok();
+  if (!mapped.ok()) {
+    if (mapped.status().code() != Status::Code::kNotFound) {
+      outcome->load_error = mapped.status().message();
+    }
+    return std::move(mapped).status();
   }
-  return status;
+  *out = std::move(mapped).value();
+  return Status::OK();
 }
 
 Status BuildOrMapMesh(const Dataset& dataset, const std::string& cache_dir,
                       BuiltMesh* out, MeshCacheOutcome* outcome,
                       unsigned build_threads) {
   *outcome = MeshCacheOutcome();
-  if (cache_dir.empty()) return TriangulateMesh(dataset, build_threads, out);
-  const uint64_t fingerprint = DatasetFingerprint(dataset);
-  Status status = MapCachedMesh(cache_dir, fingerprint, out, outcome);
-  if (status.ok()) return status;
-  if (status = TriangulateMesh(dataset, build_threads, out); !status.ok()) {
-    return status;
+  if (cache_dir.empty()) {
+    ASSIGN_OR_RETURN(*out, TriangulateMesh(dataset, build_threads));
+    return Status::OK();
   }
+  const uint64_t fingerprint = DatasetFingerprint(dataset);
+  if (MapCachedMesh(cache_dir, fingerprint, out, outcome).ok()) {
+    return Status::OK();
+  }
+  ASSIGN_OR_RETURN(*out, TriangulateMesh(dataset, build_threads));
   if (const Status saved = WriteMeshFile(outcome->path, fingerprint, *out);
       !saved.ok()) {
     outcome->save_error = saved.message();
@@ -98,10 +106,7 @@ Status FindGeneratedFingerprint(const std::string& cache_dir,
                                 uint64_t* fingerprint) {
   const std::string path = GeneratedKeyPath(cache_dir, spec);
   std::string text;
-  if (Status s = ReadWholeFile(path, "generated dataset key", &text, 64);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(ReadWholeFile(path, "generated dataset key", &text, 64));
   char* end = nullptr;
   errno = 0;
   const uint64_t value = std::strtoull(text.c_str(), &end, 16);

@@ -18,6 +18,7 @@
 #include "locator/dataset_sources.h"
 #include "locator/engine_info.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "server/core/mesh/mesh_file.h"
 
 namespace locator {
@@ -32,8 +33,7 @@ std::string MeshFilePath(const std::string& dir, uint64_t fingerprint);
 // (tiling/tiled_build.h), a constrained one with CGAL, whose triangulation
 // is freed. The same points give the same mesh either way. InvalidArgument
 // as Triangulation::Build.
-Status TriangulateMesh(const Dataset& dataset, unsigned threads,
-                       BuiltMesh* out);
+StatusOr<BuiltMesh> TriangulateMesh(const Dataset& dataset, unsigned threads);
 
 // With an empty `cache_dir`, TriangulateMesh. Otherwise maps the dataset's
 // file in `cache_dir` if it is sound; if there is none, or it is unusable

@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/cgal/orientation.h"
 
 namespace locator {
@@ -159,11 +160,11 @@ Status CompareMeshArrays(const ServingMesh::Arrays& got,
 }
 
 Status CheckMeshArrays(const ServingMesh::Arrays& a) {
-  if (Status s = CheckVertices(a); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckVertices(a));
   if (a.in_domain == 0 || a.in_domain > a.triangles.size()) {
     return Violation("no in-domain triangle, or more than triangles");
   }
-  if (Status s = CheckAllFaces(a); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckAllFaces(a));
   return CheckHull(a);
 }
 

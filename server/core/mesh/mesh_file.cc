@@ -5,11 +5,10 @@
 #include <span>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "server/core/dataset/file_io.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/mesh/mesh_check.h"
-
-#define XXH_INLINE_ALL
-#include <xxhash.h>
 
 namespace locator {
 namespace {
@@ -81,7 +80,8 @@ Layout LayoutOf(const Header& h) {
 }
 
 uint64_t HeaderChecksum(const Header& h) {
-  return XXH3_64bits(&h, offsetof(Header, header_checksum));
+  return Xxh3Of(std::string_view(reinterpret_cast<const char*>(&h),
+                                 offsetof(Header, header_checksum)));
 }
 
 template <class T>
@@ -195,19 +195,17 @@ Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
   };
   static constexpr char kZeros[kSectionAlignment] = {};
   std::vector<std::string_view> pieces = {{}};  // the header, set below
-  XXH3_state_t* state = XXH3_createState();
-  XXH3_64bits_reset(state);
+  Xxh3Digest payload_digest;
   uint64_t at = kMeshFileHeaderBytes;
   for (const auto& [offset, bytes] : sections) {
     const std::string_view padding(kZeros, offset - at);
     pieces.push_back(padding);
     pieces.push_back(bytes);
-    XXH3_64bits_update(state, padding.data(), padding.size());
-    XXH3_64bits_update(state, bytes.data(), bytes.size());
+    payload_digest.Add(padding);
+    payload_digest.Add(bytes);
     at = offset + bytes.size();
   }
-  h.payload_checksum = XXH3_64bits_digest(state);
-  XXH3_freeState(state);
+  h.payload_checksum = payload_digest.digest();
   h.header_checksum = HeaderChecksum(h);
   pieces[0] = std::string_view(reinterpret_cast<const char*>(&h), sizeof(h));
   return WriteFileAtomically(path, pieces);
@@ -216,9 +214,9 @@ Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
 Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
                       ServingMesh::Arrays* arrays, MeshFacts* facts) {
   Header h;
-  if (Status s = CheckHeader(bytes, fingerprint, &h); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckHeader(bytes, fingerprint, &h));
   const std::string_view payload = bytes.substr(kMeshFileHeaderBytes);
-  if (XXH3_64bits(payload.data(), payload.size()) != h.payload_checksum) {
+  if (Xxh3Of(payload) != h.payload_checksum) {
     return Unusable("checksum mismatch (corrupt contents)");
   }
   const Layout l = LayoutOf(h);
@@ -271,22 +269,17 @@ class MappedStorage : public ServingMesh::Storage {
 
 }  // namespace
 
-Status MapMeshFile(const std::string& path, uint64_t fingerprint,
-                   BuiltMesh* out) {
+StatusOr<BuiltMesh> MapMeshFile(const std::string& path, uint64_t fingerprint) {
   MappedFile file;
-  if (Status s = MappedFile::Open(path, "mesh file", &file); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(MappedFile::Open(path, "mesh file", &file));
   ServingMesh::Arrays arrays;
   MeshFacts facts;
-  if (Status s = DecodeMeshFile(file.bytes(), fingerprint, &arrays, &facts);
-      !s.ok()) {
-    return s;
-  }
-  out->mesh = std::make_shared<const ServingMesh>(
+  RETURN_IF_ERROR(DecodeMeshFile(file.bytes(), fingerprint, &arrays, &facts));
+  BuiltMesh built;
+  built.mesh = std::make_shared<const ServingMesh>(
       std::make_unique<MappedStorage>(std::move(file)), arrays);
-  out->facts = std::move(facts);
-  return Status::OK();
+  built.facts = std::move(facts);
+  return built;
 }
 
 }  // namespace locator

@@ -44,6 +44,7 @@
 
 #include "locator/geometry.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "server/core/cgal/domain_outline.h"
 #include "server/core/mesh/serving_mesh.h"
 
@@ -51,7 +52,9 @@ namespace locator {
 
 // 2: corners rotated to the smallest id first, the hull ring from the edge
 // ending at the smallest id, ties in the triangle order by rotated ids.
-inline constexpr uint32_t kMeshFileVersion = 2;
+// 3: the dataset digest in the header is XXH3 (Triangulation::VertexDigest;
+// it was FNV-1a).
+inline constexpr uint32_t kMeshFileVersion = 3;
 inline constexpr size_t kMeshFileHeaderBytes = 256;
 
 // What the engine keeps of a triangulation besides its serving mesh.
@@ -85,8 +88,7 @@ Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
 // Maps the mesh file at `path` (shared with every process mapping it) and
 // decodes it; the mesh keeps the mapping. NotFound if there is no file;
 // IOError if it cannot be mapped; InvalidArgument as DecodeMeshFile.
-Status MapMeshFile(const std::string& path, uint64_t fingerprint,
-                   BuiltMesh* out);
+StatusOr<BuiltMesh> MapMeshFile(const std::string& path, uint64_t fingerprint);
 
 }  // namespace locator
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "server/core/geometry/wide_math.h"
 #include "server/core/mesh/mesh_walk.h"
 #include "server/core/surface/surface_value.h"
@@ -38,7 +39,7 @@ Point2 RasterSpec::CellCentre(uint32_t col, uint32_t row) const {
 
 Status CheckRasterSpec(const RasterSpec& spec) {
   const BoundingBox& b = spec.box;
-  if (Status s = CheckRasterBox(b); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckRasterBox(b));
   if (spec.width == 0 || spec.height == 0) {
     return Status::InvalidArgument("the raster needs width and height >= 1");
   }

@@ -6,7 +6,8 @@
 #include <tuple>
 #include <utility>
 
-#include "server/core/geometry/fnv_hash.h"
+#include "common/status_macros.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/parallel.h"
 #include "server/core/tiling/cells/radix_sort.h"
@@ -265,13 +266,13 @@ Status AssembleServingMesh(SortedPoints* sorted,
                            std::shared_ptr<const ServingMesh>* out) {
   size_t faces = 0;
   for (const TileTriangles& tile : *tiles) faces += tile.triangles.size();
-  if (Status s = CheckMeshSize(sorted->size(), faces); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckMeshSize(sorted->size(), faces));
   auto storage = std::make_unique<MeshVectors>();
   Assembly assembly(*sorted, tiles, threads);
   assembly.Prepare();
-  if (Status s = assembly.MatchOpenEdges(); !s.ok()) return s;
+  RETURN_IF_ERROR(assembly.MatchOpenEdges());
   assembly.Order(storage.get());
-  if (Status s = assembly.LinkHull(storage.get()); !s.ok()) return s;
+  RETURN_IF_ERROR(assembly.LinkHull(storage.get()));
   if (!values.empty()) {
     storage->values.resize(sorted->size());
     for (size_t v = 0; v < sorted->size(); ++v) {
@@ -293,7 +294,7 @@ uint64_t VertexDigestOf(std::span<const Point2> input,
                         std::span<const uint32_t> ids) {
   std::vector<bool> distinct(input.size(), false);
   for (const uint32_t id : ids) distinct[id] = true;
-  Fnv1a64 hash;
+  Xxh3Digest hash;
   for (size_t id = 0; id < input.size(); ++id) {
     if (!distinct[id]) continue;
     hash.AddU64(id);

@@ -47,7 +47,7 @@ Status AssembleServingMesh(SortedPoints* sorted,
                            unsigned threads,
                            std::shared_ptr<const ServingMesh>* out);
 
-// Triangulation::VertexDigest() of a plain point set: Fnv1a64 over the
+// Triangulation::VertexDigest() of a plain point set: XXH3 over the
 // (id, x, y) of each distinct point, in id order; `ids` are the distinct
 // points' ids (any order) among the input's indices.
 uint64_t VertexDigestOf(std::span<const Point2> input,

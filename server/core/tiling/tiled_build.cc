@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/halo_cells.h"
@@ -74,9 +75,7 @@ Status BuildTiledMesh(std::span<const Point2> points,
   if (stats == nullptr) stats = &local;
   const unsigned threads = std::max(options.threads, 1u);
   auto start = std::chrono::steady_clock::now();
-  if (Status s = CheckPointCoordinates(points, values.size()); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(CheckPointCoordinates(points, values.size()));
   if (points.size() > ServingMesh::kMaxElements) {
     return Status::InvalidArgument("dataset has " +
                                    std::to_string(points.size()) +
@@ -86,10 +85,8 @@ Status BuildTiledMesh(std::span<const Point2> points,
   SortedPoints sorted;
   SortPoints(points, std::max<size_t>(options.cell_points, 1), threads,
              &sorted);
-  if (Status s = CheckTriangulable(sorted.size(), AllCollinear(sorted.points));
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(
+      CheckTriangulable(sorted.size(), AllCollinear(sorted.points)));
   const HullEdges hull = HullEdges::Compute(sorted.points, threads);
   stats->sort_seconds = SecondsSince(start);
 
@@ -121,11 +118,8 @@ Status BuildTiledMesh(std::span<const Point2> points,
   start = std::chrono::steady_clock::now();
   BuiltMesh built;
   built.facts.duplicates_merged = sorted.duplicates();
-  if (Status s = AssembleServingMesh(&sorted, &results, values, digest, threads,
-                                     &built.mesh);
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(AssembleServingMesh(&sorted, &results, values, digest,
+                                      threads, &built.mesh));
   built.facts.edge_sample = built.mesh->SampleEdges(kEdgeSampleSize);
   *out = std::move(built);
   stats->assembly_seconds = SecondsSince(start);

@@ -3,7 +3,8 @@
 #include <bit>
 #include <cmath>
 
-#include "server/core/geometry/fnv_hash.h"
+#include "common/status_macros.h"
+#include "server/core/geometry/xxh3_digest.h"
 
 namespace locator {
 namespace {
@@ -74,12 +75,6 @@ class ByteReader {
 
 Status Corrupt(const std::string& what) {
   return Status::InvalidArgument("corrupt tuning state: " + what);
-}
-
-uint64_t Checksum(std::string_view bytes) {
-  Fnv1a64 hash;
-  hash.Add(bytes);
-  return hash.digest();
 }
 
 void WriteFingerprint(const TuningFingerprint& fp, ByteWriter* w) {
@@ -203,7 +198,7 @@ Status ReadPayload(ByteReader* r, const TuningFingerprint& fp,
 uint64_t TuningFingerprint::Digest() const {
   ByteWriter w;
   WriteFingerprint(*this, &w);
-  return Checksum(w.bytes());
+  return Xxh3Of(w.bytes());
 }
 
 std::string FingerprintMismatch(const TuningFingerprint& saved,
@@ -257,7 +252,7 @@ std::string EncodeTuningState(const TuningFingerprint& fingerprint,
     bytes[kTuningStateMagic.size() + 4 + i] =
         static_cast<char>(length >> (8 * i));
   }
-  w.U64(Checksum(bytes));
+  w.U64(Xxh3Of(bytes));
   return std::move(bytes);
 }
 
@@ -286,18 +281,17 @@ Status DecodeTuningState(std::string_view bytes,
         " bytes, the header says " + std::to_string(length));
   }
   ByteReader trailer(bytes.substr(bytes.size() - kChecksumBytes));
-  if (trailer.U64() !=
-      Checksum(bytes.substr(0, bytes.size() - kChecksumBytes))) {
+  if (trailer.U64() != Xxh3Of(bytes.substr(0, bytes.size() - kChecksumBytes))) {
     return Status::InvalidArgument("tuning state checksum mismatch");
   }
   TuningFingerprint saved;
-  if (Status s = ReadFingerprint(&r, &saved); !s.ok()) return s;
+  RETURN_IF_ERROR(ReadFingerprint(&r, &saved));
   if (const std::string why = FingerprintMismatch(saved, expected);
       !why.empty()) {
     return Status::FailedPrecondition("tuning state " + why);
   }
   TuningState state;
-  if (Status s = ReadPayload(&r, saved, &state); !s.ok()) return s;
+  RETURN_IF_ERROR(ReadPayload(&r, saved, &state));
   *out = std::move(state);
   return Status::OK();
 }

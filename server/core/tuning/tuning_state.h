@@ -15,7 +15,7 @@
 //   payload: u64 snapshot version | u64 re-tunes | u8 seen traffic |
 //     u32 cells | cells x f64 histogram | cells x f64 planned share |
 //     cells x u32 sub-grid level | u64 starts | starts x 3 x u32 corner ids
-//   u64 checksum: Fnv1a64 of every byte before it
+//   u64 checksum: XXH3-64 of every byte before it
 //
 // Decoding validates every length, count and id before using it: any byte
 // string is rejected with a Status naming the reason or yields a state whose
@@ -40,8 +40,9 @@ namespace locator {
 
 inline constexpr std::string_view kTuningStateMagic = "LOCTUNE\n";
 // Version 2: a cell's stored level r buys about r * r starts shaped by the
-// cell's triangles (version 1 stored square r x r sub-grids).
-inline constexpr uint32_t kTuningStateFormatVersion = 2;
+// cell's triangles (version 1 stored square r x r sub-grids). Version 3: the
+// checksum and the dataset digest are XXH3 (version 2's were FNV-1a).
+inline constexpr uint32_t kTuningStateFormatVersion = 3;
 // Sub-grid levels above this are rejected (r * r must fit in 32 bits).
 inline constexpr uint32_t kMaxStoredLevel = 65535;
 // The most starts a cell at level r holds: its sub-grid has about r * r
@@ -54,7 +55,8 @@ inline constexpr uint64_t MaxStartsAtLevel(uint32_t r) {
 
 // Everything that changes what a stored state means.
 struct TuningFingerprint {
-  // Fnv1a64 over the distinct vertices (id, x, y), in id order.
+  // ServingMesh::digest(): XXH3 over the distinct vertices (id, x, y), in
+  // id order, and the domain (Triangulation::VertexDigest).
   uint64_t dataset_digest = 0;
   // ServingMesh::id_bound(): every vertex id is below it (the points read
   // from the dataset, plus the constraint points that are not among them).

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/json_writer.h"
 #include "common/proto_json.h"
 #include "common/status_macros.h"
 #include "locator/v1/locator.pb.h"
 #include "server/app/surface_convert.h"
-#include "server/http/json/json_writer.h"
 
 namespace locator {
 namespace {

@@ -2,10 +2,10 @@
 
 #include <utility>
 
+#include "common/json_writer.h"
 #include "common/proto_json.h"
 #include "server/http/api_error.h"
 #include "server/http/embedded_files.h"
-#include "server/http/json/json_writer.h"
 
 namespace locator {
 namespace {

@@ -1,5 +1,6 @@
 #include "server/core/terrain/grid/grid_certificate.h"
 
+#include "common/status_macros.h"
 #include "server/core/terrain/grid/grid_refiner.h"
 
 namespace locator {
@@ -14,9 +15,7 @@ Status CertifyGridTin(const ElevationGrid& grid, const TinOptions& options,
   refiner.ScanAll(threads);
   // The samples left beyond the target differ from the build's measure by
   // rounding only: usually none, a few at most.
-  if (Status s = refiner.Refine(options.max_points, progress, 0); !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(refiner.Refine(options.max_points, progress, 0));
   *certified = refiner.MaxError();
   return Status::OK();
 }

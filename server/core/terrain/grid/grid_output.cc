@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/cgal/orientation.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/terrain/grid/grid_error.h"
@@ -97,10 +98,7 @@ void SortRowMajor(const ElevationGrid& grid, TinMesh* mesh) {
 
 Status WriteGridTin(const ElevationGrid& grid, const TinMesh& mesh,
                     Dataset* out) {
-  if (Status s = CheckSize(mesh.num_vertices(), mesh.num_triangles());
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(CheckSize(mesh.num_vertices(), mesh.num_triangles()));
   StartOutput(grid, out);
   out->points.reserve(mesh.num_vertices());
   out->values.reserve(mesh.num_vertices());
@@ -114,11 +112,8 @@ Status WriteGridTin(const ElevationGrid& grid, const TinMesh& mesh,
   const bool mirrors = OutputMirrors(grid);
   out->constraints.triangles.reserve(mesh.num_triangles());
   for (uint32_t t = 0; t < mesh.num_triangles(); ++t) {
-    if (Status s = AddTriangle(grid, mirrors, mesh.Corner(t, 0),
-                               mesh.Corner(t, 1), mesh.Corner(t, 2), out);
-        !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(AddTriangle(grid, mirrors, mesh.Corner(t, 0),
+                                mesh.Corner(t, 1), mesh.Corner(t, 2), out));
   }
   return Status::OK();
 }
@@ -149,11 +144,8 @@ Status WriteGridCells(const ElevationGrid& grid, const CellMask& mask,
       if (!mask.Valid(col, row - int64_t{1})) continue;
       const uint32_t a = above[col], b = above[col + 1];
       const uint32_t c = row_ids[col], d = row_ids[col + 1];
-      if (Status s = CheckSize(out->points.size(),
-                               out->constraints.triangles.size() + 2);
-          !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(
+          CheckSize(out->points.size(), out->constraints.triangles.size() + 2));
       Status s = AddTriangle(grid, mirrors, a, b, d, out);
       if (s.ok()) s = AddTriangle(grid, mirrors, a, d, c, out);
       if (!s.ok()) return s;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/status_macros.h"
 #include "server/core/cgal/orientation.h"
 #include "server/core/geometry/barycentric.h"
 
@@ -165,7 +166,7 @@ Status PointRefiner::Refine(uint64_t max_vertices,
     head_.resize(mesh_->num_triangles(), kNone);
     candidate_.resize(mesh_->num_triangles(), kNone);
     error_.resize(mesh_->num_triangles(), 0);
-    if (Status s = Rebucket(i); !s.ok()) return s;
+    RETURN_IF_ERROR(Rebucket(i));
     for (const uint32_t u : mesh_->touched()) {
       if (mesh_->tag(u) == 1) Rescan(u);
     }

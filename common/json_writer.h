@@ -1,13 +1,17 @@
 // JsonWriter: builds one JSON text in a string, with commas placed for the
-// caller. Strings are escaped (control characters, quotes, backslashes, and
-// '<', '>', '&' so the text is inert if embedded in HTML); bytes that are
-// not valid UTF-8 become U+FFFD. Non-finite numbers are written as null.
+// caller. The project's one writer of JSON that is not a proto message (the
+// HTTP side's errors, grids and status pages, locator-load's report); proto
+// messages go through protobuf's JSON mapping (common/proto_json.h).
+//
+// Strings are escaped (control characters, quotes, backslashes, and '<',
+// '>', '&' so the text is inert if embedded in HTML); bytes that are not
+// valid UTF-8 become U+FFFD. Non-finite numbers are written as null.
 //
 // Owns the text. Invariant: the caller nests Begin/End calls properly and
 // writes a Key() before each value inside an object. Thread-safety: none.
 
-#ifndef LOCATOR_SERVER_HTTP_JSON_WRITER_H_
-#define LOCATOR_SERVER_HTTP_JSON_WRITER_H_
+#ifndef LOCATOR_COMMON_JSON_WRITER_H_
+#define LOCATOR_COMMON_JSON_WRITER_H_
 
 #include <cstdint>
 #include <string>
@@ -67,4 +71,4 @@ class JsonWriter {
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_JSON_WRITER_H_
+#endif  // LOCATOR_COMMON_JSON_WRITER_H_
