@@ -43,10 +43,8 @@ struct BatchLocator::Call {
   }
 };
 
-BatchLocator::BatchLocator(size_t threads, size_t max_batch_points,
-                           std::chrono::milliseconds default_deadline)
+BatchLocator::BatchLocator(size_t threads, size_t max_batch_points)
     : max_batch_points_(max_batch_points),
-      default_deadline_(default_deadline),
       pool_(threads > 1 ? threads - 1 : 0) {}
 
 Status BatchLocator::Validate(const v1::LocateBatchRequest& request) const {

@@ -14,7 +14,6 @@
 #ifndef LOCATOR_SERVER_BATCH_LOCATOR_H_
 #define LOCATOR_SERVER_BATCH_LOCATOR_H_
 
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -55,11 +54,9 @@ class BatchLocator {
   };
 
   // Splits large batches across `threads` threads (the caller plus
-  // threads - 1 pool workers), rejects batches above `max_batch_points` and
-  // stops a batch whose client set no deadline after `default_deadline`
-  // (zero: never).
-  BatchLocator(size_t threads, size_t max_batch_points,
-               std::chrono::milliseconds default_deadline);
+  // threads - 1 pool workers) and rejects batches above `max_batch_points`;
+  // each call stops at its CallControl's deadline.
+  BatchLocator(size_t threads, size_t max_batch_points);
 
   BatchLocator(const BatchLocator&) = delete;
   BatchLocator& operator=(const BatchLocator&) = delete;
@@ -72,12 +69,6 @@ class BatchLocator {
   // `request` and `response` must live until then.
   void Run(const v1::LocateBatchRequest& request, LocateBatchFn locate_batch,
            CallControl control, v1::LocateBatchResponse* response);
-
-  // The deadline of a call that carries none (HTTP): the server's default
-  // from now.
-  CallDeadline DefaultDeadline() const {
-    return CallDeadline::ServerDefault(default_deadline_);
-  }
 
   // The checks Run() makes before locating anything: xs and ys of equal
   // length (InvalidArgument), at most max_batch_points points
@@ -94,7 +85,6 @@ class BatchLocator {
   static void Complete(Call* call);
 
   const size_t max_batch_points_;
-  const std::chrono::milliseconds default_deadline_;
   WorkerPool pool_;
 };
 

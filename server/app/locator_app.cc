@@ -39,8 +39,7 @@ LocatorApp::LocatorApp(const LocatorAppOptions& options)
       max_grid_cells_(options.max_grid_cells),
       redact_(options.access.redact),
       access_(options.access.data_token, options.access.admin_token),
-      batch_locator_(options.batch_threads, options.max_batch_points,
-                     options.default_deadline),
+      batch_locator_(options.batch_threads, options.max_batch_points),
       surface_pool_(std::max<size_t>(1, options.batch_threads)),
       registry_(options.datasets, options.reload_dir, options.build_engine) {}
 

@@ -73,7 +73,7 @@ struct Fixture {
   std::unique_ptr<Triangulation> reference;
   std::vector<std::unique_ptr<Engine>> engines;  // one per kStrategies entry
   std::vector<std::pair<Point2, Point2>> edges;  // every finite edge
-  BatchLocator service{1, kMaxBatchPoints, std::chrono::milliseconds(0)};
+  BatchLocator service{1, kMaxBatchPoints};
 };
 
 void Fail(const std::string& what) {

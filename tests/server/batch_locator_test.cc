@@ -47,7 +47,7 @@ class FakeBatchService final : public v1::Locator::CallbackService {
   FakeBatchService(size_t threads, size_t max_points,
                    std::chrono::milliseconds default_deadline)
       : default_deadline_(default_deadline),
-        batch_locator_(threads, max_points, default_deadline) {}
+        batch_locator_(threads, max_points) {}
 
   grpc::ServerUnaryReactor* LocateBatch(
       grpc::CallbackServerContext* context,

@@ -34,8 +34,7 @@ LocateResult CannedAnswer(const Point2& q) {
 
 NoopLocatorService::NoopLocatorService(const ServingConfig& config)
     : default_deadline_(config.transport.default_deadline),
-      batch_locator_(config.threads, config.max_batch_points,
-                     config.transport.default_deadline) {}
+      batch_locator_(config.threads, config.max_batch_points) {}
 
 grpc::ServerUnaryReactor* NoopLocatorService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
