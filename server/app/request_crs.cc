@@ -45,14 +45,15 @@ Status PointsInDatasetCrs(const Engine& engine, const std::string& crs,
 
 Status LocateInRequestCrs(const Engine& engine, Point2 point,
                           const QueryOptions& options, LocateResult* result) {
-  RETURN_IF_ERROR(
-      PointsInDatasetCrs(engine, options.crs, std::span<Point2>(&point, 1)));
-  RETURN_IF_ERROR(engine.Locate(point, result, options.interpolation));
-  if (options.crs.empty() || !options.vertices_in_request_crs) {
-    return Status::OK();
+  if (options.crs.empty()) {
+    return engine.Locate(point, result, options.interpolation);
   }
+  // One transformer for both ways.
   gis::CrsTransformer* transformer = nullptr;
   RETURN_IF_ERROR(TransformerFor(engine, options.crs, &transformer));
+  RETURN_IF_ERROR(transformer->ToDataset(std::span<Point2>(&point, 1)));
+  RETURN_IF_ERROR(engine.Locate(point, result, options.interpolation));
+  if (!options.vertices_in_request_crs) return Status::OK();
   return transformer->ToRequest(result->vertices);
 }
 
