@@ -158,11 +158,12 @@ void JsonApi::ServeListDatasets(const HttpRequest& request, HttpReply reply) {
     reply(MethodNotAllowed(request, "GET"));
     return;
   }
-  if (StatusOr<LocatorApp::Admission> refused =
-          app_->Admit(request.Header("authorization"),
-                      AccessPolicy::Scope::kData, std::nullopt);
-      !refused.ok()) {
-    reply(ApiError(refused.status()));
+  // Held until the answer is made: the call counts as in flight for a drain.
+  const StatusOr<LocatorApp::Admission> call =
+      app_->Admit(request.Header("authorization"), AccessPolicy::Scope::kData,
+                  std::nullopt);
+  if (!call.ok()) {
+    reply(ApiError(call.status()));
     return;
   }
   v1::ListDatasetsResponse response;
