@@ -6,6 +6,7 @@
 #include "client/points_reader.h"
 #include "common/flags/flag_value.h"
 #include "common/str_cat.h"
+#include "common/text_fields.h"
 
 namespace locator {
 

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "common/text_fields.h"
+
 namespace locator {
 
 Status PointsReader::Open(const std::string& path,

@@ -24,8 +24,6 @@
 #include <string_view>
 #include <vector>
 
-// ParseDouble, which the flag readers take from here.
-#include "common/text_fields.h"
 #include "locator/geometry.h"
 #include "locator/status.h"
 

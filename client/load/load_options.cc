@@ -5,6 +5,7 @@
 #include "client/load/query_source.h"
 #include "client/points_reader.h"
 #include "common/flags/flag_set.h"
+#include "common/text_fields.h"
 
 namespace locator {
 namespace {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "common/text_fields.h"
+
 namespace locator {
 namespace {
 
