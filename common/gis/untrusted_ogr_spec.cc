@@ -12,13 +12,14 @@
 namespace locator::gis {
 namespace {
 
-constexpr std::array<const char*, 8> kDrivers = {"GPKG",       "ESRI Shapefile",
-                                                 "GeoJSON",    "GeoJSONSeq",
-                                                 "FlatGeobuf", "CSV",
-                                                 "KML",        "GPX"};
+constexpr std::array<const char*, 8> kVectorDrivers = {
+    "GPKG",       "ESRI Shapefile",
+    "GeoJSON",    "GeoJSONSeq",
+    "FlatGeobuf", "CSV",
+    "KML",        "GPX"};
 
-// The open options (GDAL 3.6) of kDrivers that a request may set. Left out:
-// GPKG's PRELUDE_STATEMENTS (SQL) and its raster options (TABLE, WHERE,
+// The open options (GDAL 3.6) of kVectorDrivers that a request may set. Left
+// out: GPKG's PRELUDE_STATEMENTS (SQL) and its raster options (TABLE, WHERE,
 // ...), Shapefile's AUTO_REPACK, DBF_DATE_LAST_UPDATE and DBF_EOF_CHAR
 // (writing), GeoJSON's FEATURE_SERVER_PAGING (network).
 constexpr std::array<std::string_view, 26> kOpenOptions = {
@@ -64,19 +65,19 @@ Status CheckUntrustedOgrOptions(const OgrDatasetSpec& spec) {
     }
   }
   if (!spec.driver.empty() &&
-      std::none_of(kDrivers.begin(), kDrivers.end(),
+      std::none_of(kVectorDrivers.begin(), kVectorDrivers.end(),
                    [&](const char* d) { return spec.driver == d; })) {
     return Status::InvalidArgument("driver=" + spec.driver.substr(0, 40) +
                                    ": a Reload may read only " +
-                                   DriverNames(kDrivers));
+                                   DriverNames(kVectorDrivers));
   }
   return Status::OK();
 }
 
 Status UntrustedOgrDriver(const OgrDatasetSpec& spec, const std::string& path,
                           std::string* driver) {
-  return ChooseUntrustedDriver(spec.driver, path, GDAL_OF_VECTOR, kDrivers,
-                               "format", driver);
+  return ChooseUntrustedDriver(spec.driver, path, GDAL_OF_VECTOR,
+                               kVectorDrivers, "format", driver);
 }
 
 }  // namespace locator::gis

@@ -12,7 +12,7 @@
 namespace locator::gis {
 namespace {
 
-constexpr std::array<const char*, 8> kDrivers = {
+constexpr std::array<const char*, 8> kRasterDrivers = {
     "GTiff", "AAIGrid", "EHdr", "SRTMHGT", "USGSDEM", "GSAG", "GSBG", "GS7BG"};
 
 }  // namespace
@@ -24,19 +24,19 @@ Status CheckUntrustedRasterOptions(const RasterDatasetSpec& spec) {
     }
   }
   if (!spec.driver.empty() &&
-      std::none_of(kDrivers.begin(), kDrivers.end(),
+      std::none_of(kRasterDrivers.begin(), kRasterDrivers.end(),
                    [&](const char* d) { return spec.driver == d; })) {
     return Status::InvalidArgument("driver=" + QuotedInput(spec.driver) +
                                    ": a Reload may read only " +
-                                   DriverNames(kDrivers));
+                                   DriverNames(kRasterDrivers));
   }
   return Status::OK();
 }
 
 Status UntrustedRasterDriver(const RasterDatasetSpec& spec,
                              const std::string& path, std::string* driver) {
-  return ChooseUntrustedDriver(spec.driver, path, GDAL_OF_RASTER, kDrivers,
-                               "raster format", driver);
+  return ChooseUntrustedDriver(spec.driver, path, GDAL_OF_RASTER,
+                               kRasterDrivers, "raster format", driver);
 }
 
 }  // namespace locator::gis

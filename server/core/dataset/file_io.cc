@@ -13,19 +13,14 @@
 #include <utility>
 
 #include "common/status_macros.h"
+#include "server/core/dataset/dataset_text.h"
 
 namespace locator {
 namespace {
 
-std::string ErrorText(int err) { return std::generic_category().message(err); }
+using dataset_text::Quoted;
 
-std::string Quoted(std::string_view s) {
-  // Appended piecewise: GCC 12 warns (-Wrestrict, wrongly) on "'" + string.
-  std::string quoted(1, '\'');
-  quoted.append(s);
-  quoted.push_back('\'');
-  return quoted;
-}
+std::string ErrorText(int err) { return std::generic_category().message(err); }
 
 // Closes the descriptor when the scope ends.
 struct FdCloser {
