@@ -10,7 +10,7 @@
 #          LOCATOR_FUZZ_SECONDS, then deploy/soak.sh for
 #          LOCATOR_SOAK_SECONDS on its locatord and locator-load (ASAN's
 #          quarantine off, so that resident memory measures the server's own)
-#   tsan   (gcc) the concurrency tests (the engine under many threads, the
+#   tsan   (clang) the concurrency tests (the engine under many threads, the
 #          serving layer's parts in process) and locatord under real traffic
 #          (locatord_e2e_test) under ThreadSanitizer (build-tsan; only their
 #          executables)
@@ -46,7 +46,7 @@ LAUNCHER=()
 if command -v ccache > /dev/null; then
   LAUNCHER=("-DCMAKE_CXX_COMPILER_LAUNCHER=env;CCACHE_SLOPPINESS=pch_defines,time_macros;ccache")
 fi
-# lld (Debian's lld) links the clang tree's executables in a fraction of GNU
+# lld (Debian's lld) links the clang trees' executables in a fraction of GNU
 # ld's time; they are many and large (ASAN, gRPC).
 CLANG_LINKER=()
 if command -v ld.lld > /dev/null; then
@@ -179,5 +179,5 @@ stage tsan-build build_tree build-tsan \
   "tests-concurrency locatord_e2e_test" \
   "${SANITIZER_FLAGS[@]}" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG" \
-  -DLOCATOR_SANITIZER=thread
+  -DCMAKE_CXX_COMPILER=clang++ "${CLANG_LINKER[@]}" -DLOCATOR_SANITIZER=thread
 stage tsan-test tsan_test

@@ -4,7 +4,7 @@
 // found, without a crash, a leak or undefined behaviour.
 //
 // Seeds: tests/fuzz/corpus/mesh_file_fuzzer/ (files of the fixture's
-// datasets; see tests/core/mesh_file_test.cc to regenerate them).
+// datasets; see tests/core/mesh/mesh_file_test.cc to regenerate them).
 
 #include <cstddef>
 #include <cstdint>

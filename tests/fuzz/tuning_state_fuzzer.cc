@@ -4,7 +4,7 @@
 // triangle), without a crash, a leak or undefined behaviour.
 //
 // Seeds: tests/fuzz/corpus/tuning_state_fuzzer/ (real saves of the fixture's
-// locator; see tests/core/tuning_state_test.cc to regenerate them).
+// locator; see tests/core/tuning/tuning_state_test.cc to regenerate them).
 
 #include <cstddef>
 #include <cstdint>

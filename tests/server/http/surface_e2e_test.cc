@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "tests/core/scratch_dir.h"
-#include "tests/server/e2e_support.h"
+#include "tests/server/main/e2e_support.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/status_e2e_support.h"
 
