@@ -398,7 +398,7 @@ TEST(ServerConfigTest, ByteFlagsTakeUnitSuffixes) {
   EXPECT_EQ(config.serving.max_message_bytes, size_t{1} << 30);
 }
 
-TEST(ServerConfigTest, HttpListenTurnsTheStatusServerOn) {
+TEST(ServerConfigTest, HttpListenTurnsTheHttpFrontendOn) {
   ServerConfig config;
   ASSERT_TRUE(Parse({"--http-listen", "0.0.0.0:0"}, &config).ok());
   EXPECT_TRUE(config.http_enabled());
