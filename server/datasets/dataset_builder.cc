@@ -217,12 +217,12 @@ bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
                                   const std::string& spec,
                                   const EngineOptions& options,
                                   std::shared_ptr<Engine>* built) {
-  GeneratorSpec generator;
+  if (options.mesh_cache_dir.empty() || !IsGeneratorSpec(spec)) return false;
+  const StatusOr<GeneratorSpec> generator = ParseGeneratorSpec(spec);
   uint64_t fingerprint = 0;
-  if (options.mesh_cache_dir.empty() || !IsGeneratorSpec(spec) ||
-      !ParseGeneratorSpec(spec, &generator).ok() ||
-      !FindGeneratedFingerprint(options.mesh_cache_dir, generator, &fingerprint)
-           .ok()) {
+  if (!generator.ok() || !FindGeneratedFingerprint(options.mesh_cache_dir,
+                                                   *generator, &fingerprint)
+                              .ok()) {
     return false;
   }
   DatasetOrigin origin;
@@ -257,13 +257,14 @@ void DatasetBuilder::RecordGenerated(const std::string& spec,
                                      const EngineOptions& options,
                                      const MeshCacheOutcome& cache,
                                      std::string_view tag) {
-  GeneratorSpec generator;
   if (cache.path.empty() || !cache.save_error.empty() ||
-      !IsGeneratorSpec(spec) || !ParseGeneratorSpec(spec, &generator).ok()) {
+      !IsGeneratorSpec(spec)) {
     return;
   }
+  const StatusOr<GeneratorSpec> generator = ParseGeneratorSpec(spec);
+  if (!generator.ok()) return;
   const Status status = RecordGeneratedFingerprint(
-      options.mesh_cache_dir, generator, cache.fingerprint);
+      options.mesh_cache_dir, *generator, cache.fingerprint);
   if (!status.ok()) {
     LogLine(LogLevel::kWarning, tag)
         << "cannot record the mesh of " << spec << ": " << status.ToString();

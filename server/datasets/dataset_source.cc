@@ -14,6 +14,7 @@
 #include "common/gis/raster_dataset_spec.h"
 #include "common/gis/raster_grid.h"
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "server/core/terrain/grid/triangulate_grid.h"
 #include "server/core/terrain/points/simplify_points.h"
 
@@ -159,13 +160,11 @@ Status LoadPoints(const std::string& whole_spec, const std::string& spec,
     default: {
       // Text files and generators take no options of their own.
       std::vector<gis::SpecOption> options;
-      if (Status s = gis::ParseSpecOptions(spec, &options); !s.ok()) return s;
+      RETURN_IF_ERROR(gis::ParseSpecOptions(spec, &options));
       if (!options.empty()) {
         return gis::UnknownSpecOption(whole_spec, options[0].name, "");
       }
-      if (Status s = LoadDataset(spec, &out->dataset, limits); !s.ok()) {
-        return s;
-      }
+      ASSIGN_OR_RETURN(out->dataset, LoadDataset(spec, limits));
       out->files = LocalFiles(TextSpecFiles(spec));
       return Status::OK();
     }

@@ -184,16 +184,15 @@ TEST(DomainTest, PolySegmentsWithHolePoint) {
 }
 
 TEST(DomainTest, PolyFileHoleNeverAnswersAValue) {
-  Dataset d;
-  const Status s = ParsePolyText(
+  const StatusOr<Dataset> d = ParsePolyText(
       "8 2 1 0\n"
       "0 0 0 10\n1 4 0 10\n2 4 4 10\n3 0 4 10\n"
       "4 1 1 20\n5 3 1 20\n6 3 3 20\n7 1 3 20\n"
       "8 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 4 5\n5 5 6\n6 6 7\n7 7 4\n"
       "1\n0 2 2\n",
-      "terrain.poly", &d);
-  ASSERT_TRUE(s.ok()) << s.ToString();
-  const auto t = BuildOk(d);
+      "terrain.poly");
+  ASSERT_TRUE(d.ok()) << d.status().ToString();
+  const auto t = BuildOk(*d);
   ASSERT_TRUE(t);
   EXPECT_EQ(t->num_holes(), 1u);
   EXPECT_EQ(t->num_triangles(), 8u);  // the ring between the squares

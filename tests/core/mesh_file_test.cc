@@ -350,9 +350,9 @@ TEST(MeshFileSeedsTest, AFileOfTheFormerFormatIsRebuilt) {
 
 TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
   const auto key = [](const std::string& spec) {
-    GeneratorSpec g;
-    EXPECT_TRUE(ParseGeneratorSpec(spec, &g).ok()) << spec;
-    return g.CanonicalKey();
+    const StatusOr<GeneratorSpec> g = ParseGeneratorSpec(spec);
+    EXPECT_TRUE(g.ok()) << spec;
+    return g.ok() ? g->CanonicalKey() : std::string();
   };
   EXPECT_EQ(key("uniform:1000"), key("uniform:1000:1"));
   EXPECT_EQ(key("clusters:1000:4"), key("clusters:1000:4:1"));
@@ -360,10 +360,9 @@ TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
   EXPECT_NE(key("uniform:1000:1"), key("uniform:1001:1"));
   EXPECT_NE(key("clusters:1000:4:1"), key("clusters:1000:5:1"));
   EXPECT_NE(key("uniform:1000:1"), key("clusters:1000:1:1"));
-  GeneratorSpec g;
-  EXPECT_THAT(ParseGeneratorSpec("uniform:0", &g).message(),
+  EXPECT_THAT(ParseGeneratorSpec("uniform:0").status().message(),
               HasSubstr("N must be a positive integer"));
-  EXPECT_THAT(ParseGeneratorSpec("clusters:5:9", &g).message(),
+  EXPECT_THAT(ParseGeneratorSpec("clusters:5:9").status().message(),
               HasSubstr("K must not exceed N"));
 }
 
@@ -371,8 +370,9 @@ TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
 // points; a missing or malformed key sends the caller to generate them.
 TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
   test::ScratchDir dir;
-  GeneratorSpec spec;
-  ASSERT_TRUE(ParseGeneratorSpec("uniform:500:9", &spec).ok());
+  const StatusOr<GeneratorSpec> parsed = ParseGeneratorSpec("uniform:500:9");
+  ASSERT_TRUE(parsed.ok());
+  const GeneratorSpec& spec = *parsed;
   uint64_t fingerprint = 0;
   EXPECT_EQ(FindGeneratedFingerprint(dir.path(), spec, &fingerprint).code(),
             Status::Code::kNotFound);

@@ -51,13 +51,11 @@ class Builds {
       built_[slot.name()].push_back(spec);
       serving_[slot.name()] = serving;
       if (spec == "bad") return Status::InvalidArgument("bad dataset");
-      Dataset dataset;
-      if (Status s = LoadDataset(spec, &dataset, DatasetLimits()); !s.ok()) {
-        return s;
-      }
+      StatusOr<Dataset> dataset = LoadDataset(spec, DatasetLimits());
+      if (!dataset.ok()) return dataset.status();
       std::unique_ptr<Engine> engine;
       if (Status s =
-              Engine::Create(std::move(dataset), EngineOptions(), &engine);
+              Engine::Create(*std::move(dataset), EngineOptions(), &engine);
           !s.ok()) {
         return s;
       }

@@ -416,10 +416,9 @@ bool Reference::Agrees(const Point2& q, const LocateResult& got,
 
 Status Reference::Build(const std::string& dataset_path,
                         std::unique_ptr<Reference>* reference) {
-  Dataset dataset;
-  const Status loaded = LoadDataset(dataset_path, &dataset);
-  if (!loaded.ok()) return loaded;
-  return FromDataset(std::move(dataset), reference);
+  StatusOr<Dataset> dataset = LoadDataset(dataset_path);
+  if (!dataset.ok()) return dataset.status();
+  return FromDataset(*std::move(dataset), reference);
 }
 
 Status Reference::FromDataset(Dataset dataset,
