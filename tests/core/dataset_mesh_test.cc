@@ -159,22 +159,23 @@ TEST(LoadDatasetTest, EleReadsTheNodeFileBesideIt) {
 }
 
 // Writes `off` to a scratch file and builds its triangulation.
-Status BuildOff(std::string_view off, std::unique_ptr<Triangulation>* t) {
+StatusOr<std::unique_ptr<Triangulation>> BuildOff(std::string_view off) {
   test::ScratchDir dir;
   const std::string path = dir.path() + "/mesh.off";
   WriteFile(path, off);
   const StatusOr<Dataset> loaded = LoadDataset(path);
-  return loaded.ok() ? Triangulation::Build(*loaded, t) : loaded.status();
+  if (!loaded.ok()) return loaded.status();
+  return Triangulation::Build(*loaded);
 }
 
 TEST(LoadDatasetTest, OffMeshIsServedAsGiven) {
   // An L of four triangles around (0, 0); its notch x > 1, y > 1 is inside
   // the convex hull (bounded by the edge (2 1)-(1 2)) but in no triangle.
-  std::unique_ptr<Triangulation> t;
-  ASSERT_TRUE(BuildOff("OFF\n6 4 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
-                       "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n",
-                       &t)
-                  .ok());
+  const StatusOr<std::unique_ptr<Triangulation>> built = BuildOff(
+      "OFF\n6 4 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
+      "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n");
+  ASSERT_TRUE(built.ok()) << built.status().ToString();
+  const Triangulation* t = built->get();
   EXPECT_EQ(t->num_triangles(), 4u);
   EXPECT_EQ(t->ReferenceLocate({1.4, 1.4}).type, LocationType::kOutsideDomain);
   EXPECT_EQ(t->ReferenceLocate({1.0, 0.25}).type, LocationType::kFace);
@@ -183,11 +184,10 @@ TEST(LoadDatasetTest, OffMeshIsServedAsGiven) {
 
 TEST(LoadDatasetTest, NonManifoldOffIsRefused) {
   // Three triangles on the edge 0-1.
-  std::unique_ptr<Triangulation> t;
   const Status s = BuildOff(
-      "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 2 0\n"
-      "3 0 1 2\n3 0 1 3\n3 0 1 4\n",
-      &t);
+                       "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 2 0\n"
+                       "3 0 1 2\n3 0 1 3\n3 0 1 4\n")
+                       .status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument);
   EXPECT_NE(s.message().find("mesh edge (0 1) is shared by triangles 0, 1 "
                              "and 2 (not a manifold)"),

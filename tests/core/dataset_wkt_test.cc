@@ -143,8 +143,10 @@ TEST(LoadDatasetTest, PointsPlusWktServeTheLakeAsAHole) {
   EXPECT_EQ(ds.source, spec);
   EXPECT_EQ(ds.points.size(), 25u);
   EXPECT_EQ(ds.constraints.rings.size(), 2u);
-  std::unique_ptr<Triangulation> t;
-  ASSERT_TRUE(Triangulation::Build(ds, &t).ok());
+  const StatusOr<std::unique_ptr<Triangulation>> built =
+      Triangulation::Build(ds);
+  ASSERT_TRUE(built.ok()) << built.status().ToString();
+  const Triangulation* t = built->get();
   EXPECT_EQ(t->ReferenceLocate({2, 2}).type, LocationType::kOutsideDomain);
   const LocateResult land = t->ReferenceLocate({0.5, 0.25});
   ASSERT_EQ(land.type, LocationType::kFace);

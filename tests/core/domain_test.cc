@@ -63,15 +63,13 @@ Dataset AnisotropicMesh(int k, uint64_t seed) {
 }
 
 std::unique_ptr<Triangulation> BuildOk(const Dataset& d) {
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(d, &t);
-  EXPECT_TRUE(s.ok()) << s.ToString();
-  return t;
+  StatusOr<std::unique_ptr<Triangulation>> t = Triangulation::Build(d);
+  EXPECT_TRUE(t.ok()) << t.status().ToString();
+  return t.ok() ? *std::move(t) : nullptr;
 }
 
 std::string BuildError(const Dataset& d) {
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(d, &t);
+  const Status s = Triangulation::Build(d).status();
   EXPECT_FALSE(s.ok());
   return s.message();
 }
@@ -100,9 +98,10 @@ void ExpectEveryStrategyAgrees(const Triangulation& t) {
     TuningOptions options;
     options.warmup_queries = 500;
     options.retune_every = 500;
-    std::unique_ptr<PointLocator> locator;
-    ASSERT_TRUE(MakePointLocator(name, t.mesh(), options, &locator).ok());
-    test::ExpectAllAgree(*locator, t, queries);
+    const StatusOr<std::unique_ptr<PointLocator>> locator =
+        MakePointLocator(name, t.mesh(), options);
+    ASSERT_TRUE(locator.ok());
+    test::ExpectAllAgree(**locator, t, queries);
   }
 }
 

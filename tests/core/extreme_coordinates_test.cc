@@ -181,11 +181,11 @@ std::unique_ptr<Served> Serve(Dataset dataset) {
     options.strategy = strategy;
     options.tuning.warmup_queries = 64;
     options.tuning.retune_every = 64;
-    std::unique_ptr<Engine> engine;
-    const Status s = Engine::Create(served->dataset, options, &engine);
-    EXPECT_TRUE(s.ok()) << strategy << ": " << s.ToString();
-    if (!s.ok()) return nullptr;
-    served->engines.push_back(std::move(engine));
+    StatusOr<std::unique_ptr<Engine>> engine =
+        Engine::Create(served->dataset, options);
+    EXPECT_TRUE(engine.ok()) << strategy << ": " << engine.status().ToString();
+    if (!engine.ok()) return nullptr;
+    served->engines.push_back(*std::move(engine));
   }
   return served;
 }
@@ -776,8 +776,7 @@ TEST(ExtremeConstraintsTest, CrossingsBeyondDoublesAreRefused) {
       "crossing.wkt");
   ASSERT_TRUE(constraints.ok()) << constraints.status().ToString();
   ds.constraints = *std::move(constraints);
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(ds, &t);
+  const Status s = Triangulation::Build(ds).status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
   EXPECT_NE(s.message().find("cannot be computed in doubles"),
             std::string::npos)

@@ -119,12 +119,11 @@ bool SameDoubles(const Dataset& a, const Dataset& b) {
 // Triangulates `ds` if it has constraints (see the file comment).
 void CheckTriangulates(const Dataset& ds) {
   if (ds.constraints.empty()) return;
-  std::unique_ptr<Triangulation> t;
-  const Status status = Triangulation::Build(ds, &t);
-  if (status.ok()) {
-    if (t->num_triangles() == 0) Fail("built an empty domain", status);
-  } else if (status.code() != Status::Code::kInvalidArgument) {
-    Fail("triangulating failed with an unexpected code", status);
+  const StatusOr<std::unique_ptr<Triangulation>> t = Triangulation::Build(ds);
+  if (t.ok()) {
+    if ((*t)->num_triangles() == 0) Fail("built an empty domain", t.status());
+  } else if (t.status().code() != Status::Code::kInvalidArgument) {
+    Fail("triangulating failed with an unexpected code", t.status());
   }
 }
 

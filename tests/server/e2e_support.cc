@@ -425,10 +425,12 @@ Status Reference::FromDataset(Dataset dataset,
                               std::unique_ptr<Reference>* reference) {
   std::unique_ptr<Reference> built(new Reference());
   built->dataset_ = std::move(dataset);
-  const Status status =
-      Triangulation::Build(built->dataset_, &built->triangulation_);
-  if (status.ok()) *reference = std::move(built);
-  return status;
+  StatusOr<std::unique_ptr<Triangulation>> triangulation =
+      Triangulation::Build(built->dataset_);
+  if (!triangulation.ok()) return triangulation.status();
+  built->triangulation_ = *std::move(triangulation);
+  *reference = std::move(built);
+  return Status::OK();
 }
 
 std::string Reference::Disagreements(std::span<const Point2> queries,

@@ -112,7 +112,7 @@ Status LocatorEndToEnd(const GridBenchOptions& options, const std::string& csv,
   // block's first walk, scanline coherence every other.
   EngineOptions engine_options;
   engine_options.strategy = "jump-and-walk";
-  RETURN_IF_ERROR(Engine::Create(std::move(dataset), engine_options, engine));
+  ASSIGN_OR_RETURN(*engine, Engine::Create(std::move(dataset), engine_options));
   const RasterSpec spec = SpecFor(options);
   RETURN_IF_ERROR(RenderAll(**engine, spec, options.threads, cells));
   return WriteGeoTiff(spec, *cells, tif);
