@@ -184,8 +184,8 @@ Status OpenRaster(const RasterDatasetSpec& spec,
 
 Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
                          ElevationGrid* out, std::vector<std::string>* files) {
-  RasterDatasetSpec parsed;
-  RETURN_IF_ERROR(ParseRasterDatasetSpec(spec, &parsed));
+  ASSIGN_OR_RETURN(const RasterDatasetSpec parsed,
+                   ParseRasterDatasetSpec(spec));
   std::unique_ptr<GDALDataset, GdalCloser> dataset;
   RETURN_IF_ERROR(OpenRaster(parsed, &dataset));
   const std::string& source = parsed.source;

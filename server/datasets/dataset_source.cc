@@ -98,14 +98,14 @@ Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
   }
   out->simplification = stats;
   out->files = LocalFiles(read);
-  gis::RasterDatasetSpec parsed;
-  if (out->files.empty() || !gis::ParseRasterDatasetSpec(spec, &parsed).ok()) {
-    return Status::OK();
-  }
+  if (out->files.empty()) return Status::OK();
+  const StatusOr<gis::RasterDatasetSpec> parsed =
+      gis::ParseRasterDatasetSpec(spec);
+  if (!parsed.ok()) return Status::OK();
   // GDAL reads these side-cars when they exist (nodata, scale and CRS in an
   // .aux.xml, a mask, a .prj, a world file): one that appears later
   // changes the dataset.
-  const fs::path source = Absolute(parsed.source);
+  const fs::path source = Absolute(parsed->source);
   fs::path stem = source;
   stem.replace_extension();
   for (const fs::path& side_car :
@@ -123,12 +123,11 @@ Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
 
 // The files an OGR spec's source reads, when they are local files.
 std::vector<std::string> OgrFiles(const std::string& spec) {
-  gis::OgrDatasetSpec parsed;
+  const StatusOr<gis::OgrDatasetSpec> parsed = gis::ParseOgrDatasetSpec(spec);
   std::vector<std::string> files;
-  if (!gis::ParseOgrDatasetSpec(spec, &parsed).ok() ||
-      !gis::VectorFileList(parsed.source, parsed.open_options, parsed.driver,
-                           &files)
-           .ok()) {
+  if (!parsed.ok() || !gis::VectorFileList(parsed->source, parsed->open_options,
+                                           parsed->driver, &files)
+                           .ok()) {
     return {};
   }
   return LocalFiles(files);
@@ -140,14 +139,10 @@ Status LoadPoints(const std::string& whole_spec, const std::string& spec,
                   ServedDataset* out) {
   switch (kind) {
     case DatasetKind::kLas: {
-      gis::las::LasDatasetSpec parsed;
-      if (Status s = gis::las::LoadLasDataset(spec, &out->dataset, limits);
-          !s.ok()) {
-        return s;
-      }
-      if (gis::las::ParseLasDatasetSpec(spec, &parsed).ok()) {
-        out->files = LocalFiles({parsed.path});
-      }
+      RETURN_IF_ERROR(gis::las::LoadLasDataset(spec, &out->dataset, limits));
+      const StatusOr<gis::las::LasDatasetSpec> parsed =
+          gis::las::ParseLasDatasetSpec(spec);
+      if (parsed.ok()) out->files = LocalFiles({parsed->path});
       return Status::OK();
     }
     case DatasetKind::kOgr:
