@@ -224,9 +224,12 @@ Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
   grid.step_x = gt[1];
   grid.step_y = gt[5];
   if (!parsed.assigned_crs.empty()) {
-    if (Status s = UserCrsToWkt(parsed.assigned_crs, &grid.crs); !s.ok()) {
-      return Status::InvalidArgument(source + ": a_srs: " + s.message());
+    StatusOr<std::string> wkt = UserCrsToWkt(parsed.assigned_crs);
+    if (!wkt.ok()) {
+      return Status::InvalidArgument(source +
+                                     ": a_srs: " + wkt.status().message());
     }
+    grid.crs = *std::move(wkt);
   } else if (const OGRSpatialReference* srs = dataset->GetSpatialRef()) {
     grid.crs = SpatialRefToWkt(*srs);
   }

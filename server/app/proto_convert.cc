@@ -56,11 +56,11 @@ T* ResizedColumn(google::protobuf::RepeatedField<T>* column, size_t size) {
 // loader checked that it can).
 void ToCrsStats(const std::string& wkt, v1::CrsStats* crs) {
   crs->set_wkt(wkt);
-  gis::CrsInfo info;
-  if (!gis::DescribeCrsMemoized(wkt, &info).ok()) return;
-  crs->set_name(info.name);
-  crs->set_epsg_code(info.epsg_code);
-  for (const std::string& unit : info.axis_units) crs->add_axis_units(unit);
+  const StatusOr<gis::CrsInfo> info = gis::DescribeCrsMemoized(wkt);
+  if (!info.ok()) return;
+  crs->set_name(info->name);
+  crs->set_epsg_code(info->epsg_code);
+  for (const std::string& unit : info->axis_units) crs->add_axis_units(unit);
 }
 
 void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {

@@ -185,9 +185,9 @@ Status SimplifyLoaded(const std::string& spec,
 // Stats and request transforms rely on PROJ knowing the dataset's CRS.
 Status CheckCrs(const std::string& spec, const std::string& crs) {
   if (crs.empty()) return Status::OK();
-  gis::CrsInfo info;
-  if (Status status = gis::DescribeCrsMemoized(crs, &info); !status.ok()) {
-    return Status::InvalidArgument(spec + ": " + status.message());
+  if (const StatusOr<gis::CrsInfo> info = gis::DescribeCrsMemoized(crs);
+      !info.ok()) {
+    return Status::InvalidArgument(spec + ": " + info.status().message());
   }
   return Status::OK();
 }

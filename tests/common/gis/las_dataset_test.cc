@@ -136,9 +136,9 @@ TEST_F(LasDatasetTest, ExtraBytesPerRecordAreSkipped) {
 
 TEST_F(LasDatasetTest, TheCrsComesFromTheWktRecordOrTheGeoTiffKeys) {
   const auto epsg = [](const Dataset& ds) {
-    CrsInfo info;
-    EXPECT_TRUE(DescribeCrs(ds.crs, &info).ok()) << ds.crs;
-    return info.epsg_code;
+    const StatusOr<CrsInfo> info = DescribeCrs(ds.crs);
+    EXPECT_TRUE(info.ok()) << ds.crs;
+    return info.ok() ? info->epsg_code : 0;
   };
   LasFileOptions wkt = Options(4, 6);
   wkt.wkt = testing::EpsgWkt2(32633);

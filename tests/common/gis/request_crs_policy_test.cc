@@ -131,8 +131,7 @@ TEST(RequestCrsPolicyTest, OperatorCrssNeverOpenADeviceOrAFifo) {
   test::ScratchDir dir;
   const testing::FifoWatch fifo(dir.path() + "/init.fifo");
   for (const std::string& init : {fifo.path(), std::string("/dev/ptmx")}) {
-    CrsInfo info;
-    const Status status = DescribeCrs("+init=" + init + ":crs", &info);
+    const Status status = DescribeCrs("+init=" + init + ":crs").status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << init;
     EXPECT_THAT(status.message(),
                 HasSubstr("'" + init + "' (not a regular file)"));
