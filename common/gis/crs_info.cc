@@ -54,8 +54,7 @@ int EpsgCode(const PJ* crs) {
 
 StatusOr<CrsInfo> DescribeCrs(std::string_view crs) {
   GuardedProjContext& guarded = ThreadProjContext();
-  PjPtr created;
-  RETURN_IF_ERROR(CreateCrs(guarded, crs, &created));
+  ASSIGN_OR_RETURN(const PjPtr created, CreateCrs(guarded, crs));
   PJ_CONTEXT* ctx = guarded.get();
   CrsInfo info;
   const char* name = proj_get_name(created.get());

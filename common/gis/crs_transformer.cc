@@ -50,9 +50,8 @@ bool Transform(PJ* pj, PJ_DIRECTION direction, Point2* p) {
 // operator chose them.
 void AdmitGridsOf(const std::string& dataset_crs) {
   GuardedProjContext& ctx = ThreadProjContext();
-  PjPtr crs;
-  if (CreateCrs(ctx, dataset_crs, &crs).ok()) {
-    for (const GridUse& grid : GridsOf(ctx, crs.get())) {
+  if (const StatusOr<PjPtr> crs = CreateCrs(ctx, dataset_crs); crs.ok()) {
+    for (const GridUse& grid : GridsOf(ctx, crs->get())) {
       if (!grid.file.empty()) AdmitProjFile(grid.file);
     }
   }
@@ -80,9 +79,8 @@ Status CrsTransformer::Create(const std::string& request_crs,
                               std::unique_ptr<CrsTransformer>* out) {
   AdmitGridsOf(dataset_crs);
   GuardedProjContext& guarded = ThreadRequestProjContext();
-  PjPtr request, dataset;
-  RETURN_IF_ERROR(CreateRequestCrs(request_crs, &request));
-  RETURN_IF_ERROR(CreateCrs(guarded, dataset_crs, &dataset));
+  ASSIGN_OR_RETURN(PjPtr request, CreateRequestCrs(request_crs));
+  ASSIGN_OR_RETURN(PjPtr dataset, CreateCrs(guarded, dataset_crs));
   std::unique_ptr<CrsTransformer> created(new CrsTransformer);
   created->context_ = guarded.get();
   created->request_crs_ = request_crs;

@@ -104,11 +104,9 @@ Fixture* MakeFixture() {
     p = {495000 + 10000 * p.x, 5495000 + 10000 * p.y};
   }
   gis::GuardedProjContext& ctx = gis::ThreadProjContext();
-  gis::PjPtr crs;
-  if (!gis::CreateCrs(ctx, "EPSG:32633", &crs).ok()) {
-    Fail("no EPSG:32633", "");
-  }
-  dataset.crs = proj_as_wkt(ctx.get(), crs.get(), PJ_WKT2_2019, nullptr);
+  const StatusOr<gis::PjPtr> crs = gis::CreateCrs(ctx, "EPSG:32633");
+  if (!crs.ok()) Fail("no EPSG:32633", "");
+  dataset.crs = proj_as_wkt(ctx.get(), crs->get(), PJ_WKT2_2019, nullptr);
   StatusOr<std::unique_ptr<Engine>> utm =
       Engine::Create(dataset, EngineOptions());
   if (!utm.ok()) Fail("cannot build the utm engine", "");

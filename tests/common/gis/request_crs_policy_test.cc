@@ -45,8 +45,7 @@ TEST(RequestCrsPolicyTest, HostileCrssAreRefusedNamingTheFile) {
   const std::string outside = testing::CopyOfBeta2007Grid(dir.path());
   for (const testing::HostileCrs& row :
        testing::HostileCrss(fifo.path(), outside, kMaxRequestCrsBytes + 1)) {
-    PjPtr crs;
-    Status status = CreateRequestCrs(row.crs, &crs);
+    Status status = CreateRequestCrs(row.crs).status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument)
         << row.what << ": " << status.ToString();
     EXPECT_THAT(status.message(), HasSubstr(row.file)) << row.what;
@@ -73,8 +72,7 @@ TEST(RequestCrsPolicyTest, TheLengthLimitIsNamed) {
 
 TEST(RequestCrsPolicyTest, GridsInProjsDataDirectoriesAreUsed) {
   const std::string request = BesselWithGrid("BETA2007.gsb");
-  PjPtr crs;
-  ASSERT_TRUE(CreateRequestCrs(request, &crs).ok());
+  ASSERT_TRUE(CreateRequestCrs(request).ok());
   std::unique_ptr<CrsTransformer> with_grid, without_grid;
   ASSERT_TRUE(CrsTransformer::Create(request, "EPSG:25832", &with_grid).ok());
   ASSERT_TRUE(CrsTransformer::Create("+proj=longlat +ellps=bessel",
