@@ -74,9 +74,8 @@ bool CrsTransformer::AreaOfUse::Contains(double lon, double lat) const {
 
 CrsTransformer::~CrsTransformer() = default;
 
-Status CrsTransformer::Create(const std::string& request_crs,
-                              const std::string& dataset_crs,
-                              std::unique_ptr<CrsTransformer>* out) {
+StatusOr<std::unique_ptr<CrsTransformer>> CrsTransformer::Create(
+    const std::string& request_crs, const std::string& dataset_crs) {
   AdmitGridsOf(dataset_crs);
   GuardedProjContext& guarded = ThreadRequestProjContext();
   ASSIGN_OR_RETURN(PjPtr request, CreateRequestCrs(request_crs));
@@ -109,8 +108,7 @@ Status CrsTransformer::Create(const std::string& request_crs,
       created->areas_.push_back(area);
     }
   }
-  *out = std::move(created);
-  return Status::OK();
+  return created;
 }
 
 Status CrsTransformer::ForThread(const std::string& request_crs,
@@ -140,7 +138,8 @@ Status CrsTransformer::ForThread(const std::string& request_crs,
   static CrsVerdicts* const verdicts = new CrsVerdicts();
   std::unique_ptr<CrsTransformer> created;
   RETURN_IF_ERROR(verdicts->Decide(PairKey(request_crs, dataset_crs), [&] {
-    return Create(request_crs, dataset_crs, &created);
+    ASSIGN_OR_RETURN(created, Create(request_crs, dataset_crs));
+    return Status::OK();
   }));
   if (cache.size() == kCacheCapacity) cache.pop_back();
   cache.insert(cache.begin(),
