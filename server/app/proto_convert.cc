@@ -96,10 +96,9 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
 
 }  // namespace
 
-Status FromLocateRequest(const v1::LocateRequest& request, Point2* point) {
+StatusOr<Point2> FromLocateRequest(const v1::LocateRequest& request) {
   if (!request.has_point()) return Status::InvalidArgument("point is required");
-  *point = Point2{request.point().x(), request.point().y()};
-  return Status::OK();
+  return Point2{request.point().x(), request.point().y()};
 }
 
 void ToLocateResponse(const LocateResult& result,
@@ -238,7 +237,7 @@ void ToGetStatsResponse(const EngineStats& stats,
   memory->set_tuning_bytes(stats.tuning.memory_bytes);
 }
 
-Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec) {
+StatusOr<std::string> FromReloadRequest(const v1::ReloadRequest& request) {
   // The one reader of the deprecated field.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
@@ -249,8 +248,7 @@ Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec) {
         "spec " + QuotedInput(request.spec()) + " and the deprecated dataset " +
         QuotedInput(legacy) + " differ; send the spec in spec alone");
   }
-  *spec = request.spec().empty() ? legacy : request.spec();
-  return Status::OK();
+  return request.spec().empty() ? legacy : request.spec();
 }
 
 void ToReloadResponse(const EngineStats& stats, uint64_t generation,
