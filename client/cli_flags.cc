@@ -6,6 +6,7 @@
 #include "client/cli_flag_values.h"
 #include "client/polyline_text.h"
 #include "common/flags/flag_set.h"
+#include "common/status_macros.h"
 
 namespace locator {
 namespace {
@@ -207,7 +208,7 @@ Status ParseCliLine(int argc, const char* const* argv, CliLine* line) {
   AddCliFlags(line, &deadline_ms, &grid, &flags);
   flags.AllowPositionals(&words);
   line->settings.usage = flags.Help();
-  if (Status parsed = flags.Parse(argc, argv); !parsed.ok()) return parsed;
+  RETURN_IF_ERROR(flags.Parse(argc, argv));
   if (flags.help_requested()) {
     line->help = true;
     return Status::OK();

@@ -52,15 +52,14 @@ int EpsgCode(const PJ* crs) {
 
 }  // namespace
 
-Status DescribeCrs(std::string_view crs, CrsInfo* info) {
+StatusOr<CrsInfo> DescribeCrs(std::string_view crs) {
   GuardedProjContext& guarded = ThreadProjContext();
-  PjPtr created;
-  RETURN_IF_ERROR(CreateCrs(guarded, crs, &created));
+  ASSIGN_OR_RETURN(const PjPtr created, CreateCrs(guarded, crs));
   PJ_CONTEXT* ctx = guarded.get();
-  *info = CrsInfo();
+  CrsInfo info;
   const char* name = proj_get_name(created.get());
-  info->name = name == nullptr ? "" : name;
-  info->epsg_code = EpsgCode(created.get());
+  info.name = name == nullptr ? "" : name;
+  info.epsg_code = EpsgCode(created.get());
 
   PjPtr horizontal = HorizontalCrs(created.get());
   PjPtr normalized(horizontal == nullptr ? nullptr
@@ -70,7 +69,7 @@ Status DescribeCrs(std::string_view crs, CrsInfo* info) {
                ? nullptr
                : proj_crs_get_coordinate_system(ctx, normalized.get()));
   if (cs == nullptr) {
-    return Status::InvalidArgument("CRS '" + info->name +
+    return Status::InvalidArgument("CRS '" + info.name +
                                    "' has no horizontal coordinate system");
   }
   const int axes = std::min(proj_cs_get_axis_count(ctx, cs.get()), 2);
@@ -78,26 +77,23 @@ Status DescribeCrs(std::string_view crs, CrsInfo* info) {
     const char* unit = nullptr;
     proj_cs_get_axis_info(ctx, cs.get(), i, nullptr, nullptr, nullptr, nullptr,
                           &unit, nullptr, nullptr);
-    info->axis_units.emplace_back(unit == nullptr ? "" : unit);
+    info.axis_units.emplace_back(unit == nullptr ? "" : unit);
   }
-  return Status::OK();
+  return info;
 }
 
-Status DescribeCrsMemoized(const std::string& crs, CrsInfo* info) {
+StatusOr<CrsInfo> DescribeCrsMemoized(const std::string& crs) {
   static std::mutex mu;
-  static std::map<std::string, std::pair<Status, CrsInfo>> memo;
+  static std::map<std::string, StatusOr<CrsInfo>> memo;
   {
     std::lock_guard<std::mutex> lock(mu);
-    if (const auto it = memo.find(crs); it != memo.end()) {
-      *info = it->second.second;
-      return it->second.first;
-    }
+    if (const auto it = memo.find(crs); it != memo.end()) return it->second;
   }
-  const Status status = DescribeCrs(crs, info);
+  StatusOr<CrsInfo> described = DescribeCrs(crs);
   std::lock_guard<std::mutex> lock(mu);
   if (memo.size() >= kMemoCapacity) memo.clear();
-  memo.emplace(crs, std::make_pair(status, *info));
-  return status;
+  memo.emplace(crs, described);
+  return described;
 }
 
 }  // namespace locator::gis

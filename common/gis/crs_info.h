@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis {
 
@@ -28,11 +29,11 @@ struct CrsInfo {
 
 // Describes the CRS `crs` names (EPSG:NNNN, WKT or a PROJ string);
 // InvalidArgument naming it when PROJ does not know it.
-Status DescribeCrs(std::string_view crs, CrsInfo* info);
+StatusOr<CrsInfo> DescribeCrs(std::string_view crs);
 
 // DescribeCrs, memoized process-wide for the few most recent CRSs
 // (identifying a WKT without an ID takes milliseconds), for stats.
-Status DescribeCrsMemoized(const std::string& crs, CrsInfo* info);
+StatusOr<CrsInfo> DescribeCrsMemoized(const std::string& crs);
 
 }  // namespace locator::gis
 

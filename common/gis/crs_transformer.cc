@@ -50,9 +50,8 @@ bool Transform(PJ* pj, PJ_DIRECTION direction, Point2* p) {
 // operator chose them.
 void AdmitGridsOf(const std::string& dataset_crs) {
   GuardedProjContext& ctx = ThreadProjContext();
-  PjPtr crs;
-  if (CreateCrs(ctx, dataset_crs, &crs).ok()) {
-    for (const GridUse& grid : GridsOf(ctx, crs.get())) {
+  if (const StatusOr<PjPtr> crs = CreateCrs(ctx, dataset_crs); crs.ok()) {
+    for (const GridUse& grid : GridsOf(ctx, crs->get())) {
       if (!grid.file.empty()) AdmitProjFile(grid.file);
     }
   }
@@ -75,14 +74,12 @@ bool CrsTransformer::AreaOfUse::Contains(double lon, double lat) const {
 
 CrsTransformer::~CrsTransformer() = default;
 
-Status CrsTransformer::Create(const std::string& request_crs,
-                              const std::string& dataset_crs,
-                              std::unique_ptr<CrsTransformer>* out) {
+StatusOr<std::unique_ptr<CrsTransformer>> CrsTransformer::Create(
+    const std::string& request_crs, const std::string& dataset_crs) {
   AdmitGridsOf(dataset_crs);
   GuardedProjContext& guarded = ThreadRequestProjContext();
-  PjPtr request, dataset;
-  RETURN_IF_ERROR(CreateRequestCrs(request_crs, &request));
-  RETURN_IF_ERROR(CreateCrs(guarded, dataset_crs, &dataset));
+  ASSIGN_OR_RETURN(PjPtr request, CreateRequestCrs(request_crs));
+  ASSIGN_OR_RETURN(PjPtr dataset, CreateCrs(guarded, dataset_crs));
   std::unique_ptr<CrsTransformer> created(new CrsTransformer);
   created->context_ = guarded.get();
   created->request_crs_ = request_crs;
@@ -111,8 +108,7 @@ Status CrsTransformer::Create(const std::string& request_crs,
       created->areas_.push_back(area);
     }
   }
-  *out = std::move(created);
-  return Status::OK();
+  return created;
 }
 
 Status CrsTransformer::ForThread(const std::string& request_crs,
@@ -142,7 +138,8 @@ Status CrsTransformer::ForThread(const std::string& request_crs,
   static CrsVerdicts* const verdicts = new CrsVerdicts();
   std::unique_ptr<CrsTransformer> created;
   RETURN_IF_ERROR(verdicts->Decide(PairKey(request_crs, dataset_crs), [&] {
-    return Create(request_crs, dataset_crs, &created);
+    ASSIGN_OR_RETURN(created, Create(request_crs, dataset_crs));
+    return Status::OK();
   }));
   if (cache.size() == kCacheCapacity) cache.pop_back();
   cache.insert(cache.begin(),

@@ -32,6 +32,7 @@
 #include "common/gis/proj_objects.h"
 #include "locator/geometry.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis {
 
@@ -43,9 +44,8 @@ class CrsTransformer {
   // Creates a transformer on the calling thread; InvalidArgument naming the
   // CRS PROJ does not know, the pair it cannot transform between, or the
   // file the request context did not let PROJ open.
-  static Status Create(const std::string& request_crs,
-                       const std::string& dataset_crs,
-                       std::unique_ptr<CrsTransformer>* out);
+  static StatusOr<std::unique_ptr<CrsTransformer>> Create(
+      const std::string& request_crs, const std::string& dataset_crs);
 
   // The calling thread's transformer for the pair, created on first use
   // unless the pair is known to fail. *out stays valid until this thread's

@@ -39,7 +39,7 @@ std::string SpatialRefToWkt(const OGRSpatialReference& srs) {
   return out;
 }
 
-Status UserCrsToWkt(const std::string& crs, std::string* wkt) {
+StatusOr<std::string> UserCrsToWkt(const std::string& crs) {
   OGRSpatialReference srs;
   const char* const options[] = {"ALLOW_NETWORK_ACCESS=NO",
                                  "ALLOW_FILE_ACCESS=NO", nullptr};
@@ -48,8 +48,7 @@ Status UserCrsToWkt(const std::string& crs, std::string* wkt) {
     return Status::InvalidArgument("unknown CRS " + QuotedCrs(crs) + ": " +
                                    LastGdalError());
   }
-  *wkt = SpatialRefToWkt(srs);
-  return Status::OK();
+  return SpatialRefToWkt(srs);
 }
 
 std::vector<std::string> GdalFileList(GDALDataset& dataset) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 class GDALDataset;
 class OGRSpatialReference;
@@ -66,7 +67,7 @@ std::string SpatialRefToWkt(const OGRSpatialReference& srs);
 // -a_srs takes it) as WKT2, read without file or network access.
 // InvalidArgument "unknown CRS '...'" (QuotedCrs) with GDAL's message
 // otherwise.
-Status UserCrsToWkt(const std::string& crs, std::string* wkt);
+StatusOr<std::string> UserCrsToWkt(const std::string& crs);
 
 // The files `dataset` reads (GDALDataset::GetFileList: the main file and
 // its side-cars, a VRT's sources), in GDAL's order.

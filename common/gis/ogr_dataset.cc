@@ -224,8 +224,7 @@ Status ResolveCrs(const OgrDatasetSpec& spec,
 
 Status LoadOgrDataset(const std::string& spec_text, Dataset* out,
                       const DatasetLimits& limits) {
-  OgrDatasetSpec spec;
-  RETURN_IF_ERROR(ParseOgrDatasetSpec(spec_text, &spec));
+  ASSIGN_OR_RETURN(const OgrDatasetSpec spec, ParseOgrDatasetSpec(spec_text));
   // GDAL reports through its error state, not stderr.
   CPLErrorHandlerPusher quiet(CPLQuietErrorHandler);
   GDALDatasetUniquePtr source;

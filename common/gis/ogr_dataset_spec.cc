@@ -25,15 +25,15 @@ SpecParts SplitOgrDatasetSpec(std::string_view spec) {
   return SplitSpec(spec, kOgrPrefix);
 }
 
-Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
-  *out = OgrDatasetSpec();
+StatusOr<OgrDatasetSpec> ParseOgrDatasetSpec(std::string_view spec) {
+  OgrDatasetSpec parsed;
   const auto error = [spec](const std::string& what) {
     return SpecError(spec, what);
   };
   const SpecParts parts = SplitOgrDatasetSpec(spec);
-  out->source = std::string(parts.source);
-  if (out->source.empty()) return error("no source before the options");
-  if (parts.options.empty()) return Status::OK();
+  parsed.source = std::string(parts.source);
+  if (parsed.source.empty()) return error("no source before the options");
+  if (parts.options.empty()) return parsed;
 
   std::vector<SpecOption> options;
   RETURN_IF_ERROR(ParseSpecOptions(spec, &options));
@@ -45,17 +45,17 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
         return error("open option " + QuotedInput(value) +
                      " is not NAME=VALUE");
       }
-      out->open_options.push_back(std::move(value));
+      parsed.open_options.push_back(std::move(value));
       continue;
     }
     std::string* field = nullptr;
-    if (name == "layer") field = &out->layer;
-    if (name == "z") field = &out->z_field;
-    if (name == "where") field = &out->where;
-    if (name == "breaklines") field = &out->breaklines_layer;
-    if (name == "domain") field = &out->domain_layer;
-    if (name == "a_srs") field = &out->assigned_crs;
-    if (name == "driver") field = &out->driver;
+    if (name == "layer") field = &parsed.layer;
+    if (name == "z") field = &parsed.z_field;
+    if (name == "where") field = &parsed.where;
+    if (name == "breaklines") field = &parsed.breaklines_layer;
+    if (name == "domain") field = &parsed.domain_layer;
+    if (name == "a_srs") field = &parsed.assigned_crs;
+    if (name == "driver") field = &parsed.driver;
     if (field == nullptr) {
       return UnknownSpecOption(
           spec, name, "layer, z, where, breaklines, domain, a_srs, oo, driver");
@@ -67,7 +67,7 @@ Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out) {
       return error("option " + QuotedInput(name) + " is empty");
     *field = std::move(value);
   }
-  return Status::OK();
+  return parsed;
 }
 
 }  // namespace locator::gis

@@ -35,6 +35,7 @@
 
 #include "common/gis/dataset_spec_options.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis {
 
@@ -63,7 +64,7 @@ SpecParts SplitOgrDatasetSpec(std::string_view spec);
 
 // Parses `spec`; InvalidArgument naming the spec for an unknown option, an
 // option without '=', a repeated option or a bad %-escape.
-Status ParseOgrDatasetSpec(std::string_view spec, OgrDatasetSpec* out);
+StatusOr<OgrDatasetSpec> ParseOgrDatasetSpec(std::string_view spec);
 
 }  // namespace locator::gis
 

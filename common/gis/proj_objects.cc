@@ -69,7 +69,7 @@ Status RefusedFileError(GuardedProjContext& ctx, std::string_view crs) {
       " names a file PROJ may not open here: " + refusal);
 }
 
-Status CreateCrs(GuardedProjContext& ctx, std::string_view crs, PjPtr* out) {
+StatusOr<PjPtr> CreateCrs(GuardedProjContext& ctx, std::string_view crs) {
   std::string text(crs);
   if (text.starts_with("+proj=") &&
       text.find("type=crs") == std::string::npos) {
@@ -88,8 +88,7 @@ Status CreateCrs(GuardedProjContext& ctx, std::string_view crs, PjPtr* out) {
         "unknown CRS " + QuotedCrs(crs) +
         ": it names an operation, not a coordinate reference system");
   }
-  *out = std::move(created);
-  return Status::OK();
+  return created;
 }
 
 std::vector<GridUse> GridsOf(GuardedProjContext& ctx, const PJ* crs) {

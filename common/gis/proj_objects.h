@@ -23,6 +23,7 @@
 
 #include "common/gis/proj_file_guard.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis {
 
@@ -50,7 +51,7 @@ std::string QuotedCrs(std::string_view crs);
 // "+proj=" strings need no "+type=crs") in `ctx`. InvalidArgument "unknown
 // CRS '...'" when PROJ cannot make a CRS of it, or naming the file it
 // needed and `ctx` did not let it open (an +init file).
-Status CreateCrs(GuardedProjContext& ctx, std::string_view crs, PjPtr* out);
+StatusOr<PjPtr> CreateCrs(GuardedProjContext& ctx, std::string_view crs);
 
 // A grid a CRS names: the name as the CRS gives it, and the file PROJ found
 // for it ("" if none).

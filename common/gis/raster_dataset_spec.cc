@@ -26,7 +26,7 @@ SpecParts SplitRasterDatasetSpec(std::string_view spec) {
   return SplitSpec(spec, kRasterPrefix);
 }
 
-Status ParseRasterDatasetSpec(std::string_view spec, RasterDatasetSpec* out) {
+StatusOr<RasterDatasetSpec> ParseRasterDatasetSpec(std::string_view spec) {
   RasterDatasetSpec parsed;
   parsed.source = std::string(SplitRasterDatasetSpec(spec).source);
   if (parsed.source.empty())
@@ -56,8 +56,7 @@ Status ParseRasterDatasetSpec(std::string_view spec, RasterDatasetSpec* out) {
       return UnknownSpecOption(spec, option.name, "band, a_srs, driver");
     }
   }
-  *out = std::move(parsed);
-  return Status::OK();
+  return parsed;
 }
 
 }  // namespace locator::gis

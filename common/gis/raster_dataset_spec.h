@@ -27,6 +27,7 @@
 
 #include "common/gis/dataset_spec_options.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis {
 
@@ -50,7 +51,7 @@ SpecParts SplitRasterDatasetSpec(std::string_view spec);
 // Parses `spec`; InvalidArgument naming the spec and the option for an
 // unknown or repeated option, a band that is not a positive integer, an
 // empty a_srs or driver, or no source.
-Status ParseRasterDatasetSpec(std::string_view spec, RasterDatasetSpec* out);
+StatusOr<RasterDatasetSpec> ParseRasterDatasetSpec(std::string_view spec);
 
 }  // namespace locator::gis
 

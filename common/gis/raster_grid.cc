@@ -184,8 +184,8 @@ Status OpenRaster(const RasterDatasetSpec& spec,
 
 Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
                          ElevationGrid* out, std::vector<std::string>* files) {
-  RasterDatasetSpec parsed;
-  RETURN_IF_ERROR(ParseRasterDatasetSpec(spec, &parsed));
+  ASSIGN_OR_RETURN(const RasterDatasetSpec parsed,
+                   ParseRasterDatasetSpec(spec));
   std::unique_ptr<GDALDataset, GdalCloser> dataset;
   RETURN_IF_ERROR(OpenRaster(parsed, &dataset));
   const std::string& source = parsed.source;
@@ -224,9 +224,12 @@ Status ReadElevationGrid(const std::string& spec, const DatasetLimits& limits,
   grid.step_x = gt[1];
   grid.step_y = gt[5];
   if (!parsed.assigned_crs.empty()) {
-    if (Status s = UserCrsToWkt(parsed.assigned_crs, &grid.crs); !s.ok()) {
-      return Status::InvalidArgument(source + ": a_srs: " + s.message());
+    StatusOr<std::string> wkt = UserCrsToWkt(parsed.assigned_crs);
+    if (!wkt.ok()) {
+      return Status::InvalidArgument(source +
+                                     ": a_srs: " + wkt.status().message());
     }
+    grid.crs = *std::move(wkt);
   } else if (const OGRSpatialReference* srs = dataset->GetSpatialRef()) {
     grid.crs = SpatialRefToWkt(*srs);
   }

@@ -13,28 +13,24 @@ Status CheckRequestCrsLength(std::string_view crs) {
                                  " bytes are accepted");
 }
 
-Status CreateRequestCrs(std::string_view crs, PjPtr* out) {
+StatusOr<PjPtr> CreateRequestCrs(std::string_view crs) {
   RETURN_IF_ERROR(CheckRequestCrsLength(crs));
   GuardedProjContext& ctx = ThreadRequestProjContext();
-  PjPtr created;
-  RETURN_IF_ERROR(CreateCrs(ctx, crs, &created));
+  ASSIGN_OR_RETURN(PjPtr created, CreateCrs(ctx, crs));
   // Checked by name: PROJ remembers a grid it could not open and does not
   // ask for it again.
   for (const GridUse& grid : GridsOf(ctx, created.get())) {
     ctx.Permits(grid.name);
   }
   RETURN_IF_ERROR(RefusedFileError(ctx, crs));
-  *out = std::move(created);
-  return Status::OK();
+  return created;
 }
 
 Status CheckRequestCrs(const std::string& crs) {
   RETURN_IF_ERROR(CheckRequestCrsLength(crs));
   static CrsVerdicts* const verdicts = new CrsVerdicts();
-  return verdicts->Decide(crs, [&crs] {
-    PjPtr created;
-    return CreateRequestCrs(crs, &created);
-  });
+  return verdicts->Decide(crs,
+                          [&crs] { return CreateRequestCrs(crs).status(); });
 }
 
 }  // namespace locator::gis

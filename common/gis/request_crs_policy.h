@@ -24,6 +24,7 @@
 
 #include "common/gis/proj_objects.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis {
 
@@ -38,7 +39,7 @@ Status CheckRequestCrsLength(std::string_view crs);
 // Creates the CRS `crs` names in the calling thread's request context, as
 // CreateCrs() does; InvalidArgument too when it is too long or names a file
 // the request context does not let PROJ open (a grid, an +init file).
-Status CreateRequestCrs(std::string_view crs, PjPtr* out);
+StatusOr<PjPtr> CreateRequestCrs(std::string_view crs);
 
 // Whether a request may name `crs`: CreateRequestCrs()'s status, decided
 // once per CRS text for the whole process.

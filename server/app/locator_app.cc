@@ -110,8 +110,7 @@ StatusOr<LocatorApp::Admission> LocatorApp::Admit(
 Status LocatorApp::LocateOn(const Engine& engine,
                             const v1::LocateRequest& request,
                             LocateResult* result) const {
-  Point2 point;
-  RETURN_IF_ERROR(FromLocateRequest(request, &point));
+  ASSIGN_OR_RETURN(const Point2 point, FromLocateRequest(request));
   ASSIGN_OR_RETURN(const QueryOptions options, QueryOptionsOf(request));
   return LocateInRequestCrs(engine, point, options, result);
 }
@@ -187,11 +186,12 @@ void LocatorApp::Reload(Admission call, const v1::ReloadRequest& request,
                         v1::ReloadResponse* response,
                         std::function<void(const Status&)> done) {
   DatasetSlot* dataset = call.dataset;
-  std::string requested;
-  if (Status bad = FromReloadRequest(request, &requested); !bad.ok()) {
-    done(bad);
+  StatusOr<std::string> from_request = FromReloadRequest(request);
+  if (!from_request.ok()) {
+    done(from_request.status());
     return;
   }
+  const std::string requested = *std::move(from_request);
   StatusOr<std::string> spec = dataset->reload_policy().Resolve(requested);
   if (!spec.ok()) {
     done(spec.status());

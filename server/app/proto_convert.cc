@@ -56,11 +56,11 @@ T* ResizedColumn(google::protobuf::RepeatedField<T>* column, size_t size) {
 // loader checked that it can).
 void ToCrsStats(const std::string& wkt, v1::CrsStats* crs) {
   crs->set_wkt(wkt);
-  gis::CrsInfo info;
-  if (!gis::DescribeCrsMemoized(wkt, &info).ok()) return;
-  crs->set_name(info.name);
-  crs->set_epsg_code(info.epsg_code);
-  for (const std::string& unit : info.axis_units) crs->add_axis_units(unit);
+  const StatusOr<gis::CrsInfo> info = gis::DescribeCrsMemoized(wkt);
+  if (!info.ok()) return;
+  crs->set_name(info->name);
+  crs->set_epsg_code(info->epsg_code);
+  for (const std::string& unit : info->axis_units) crs->add_axis_units(unit);
 }
 
 void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
@@ -96,10 +96,9 @@ void ToDatasetStats(const DatasetInfo& info, v1::DatasetStats* dataset) {
 
 }  // namespace
 
-Status FromLocateRequest(const v1::LocateRequest& request, Point2* point) {
+StatusOr<Point2> FromLocateRequest(const v1::LocateRequest& request) {
   if (!request.has_point()) return Status::InvalidArgument("point is required");
-  *point = Point2{request.point().x(), request.point().y()};
-  return Status::OK();
+  return Point2{request.point().x(), request.point().y()};
 }
 
 void ToLocateResponse(const LocateResult& result,
@@ -238,7 +237,7 @@ void ToGetStatsResponse(const EngineStats& stats,
   memory->set_tuning_bytes(stats.tuning.memory_bytes);
 }
 
-Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec) {
+StatusOr<std::string> FromReloadRequest(const v1::ReloadRequest& request) {
   // The one reader of the deprecated field.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
@@ -249,8 +248,7 @@ Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec) {
         "spec " + QuotedInput(request.spec()) + " and the deprecated dataset " +
         QuotedInput(legacy) + " differ; send the spec in spec alone");
   }
-  *spec = request.spec().empty() ? legacy : request.spec();
-  return Status::OK();
+  return request.spec().empty() ? legacy : request.spec();
 }
 
 void ToReloadResponse(const EngineStats& stats, uint64_t generation,

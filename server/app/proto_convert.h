@@ -15,6 +15,7 @@
 #include "locator/engine.h"
 #include "locator/locate_result.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "locator/v1/locator.pb.h"
 #include "server/core/strategies/point_locator.h"
 
@@ -23,7 +24,7 @@ namespace locator {
 // Sets `*point` to the point of `request`. InvalidArgument "point is
 // required" if the request has none: proto3 gives message fields presence,
 // and a missing point is not (0, 0).
-Status FromLocateRequest(const v1::LocateRequest& request, Point2* point);
+StatusOr<Point2> FromLocateRequest(const v1::LocateRequest& request);
 
 // Fills `response` with every field of `result`, as locator.proto documents
 // them (barycentric empty and hull_edge_vertex_ids set outside the hull; value
@@ -67,7 +68,7 @@ void ToGetStatsResponse(const EngineStats& stats,
 // The spec a Reload asks to load: `spec`, or the deprecated `dataset` of
 // clients from before `spec` existed. InvalidArgument when both are set and
 // differ.
-Status FromReloadRequest(const v1::ReloadRequest& request, std::string* spec);
+StatusOr<std::string> FromReloadRequest(const v1::ReloadRequest& request);
 
 // Fills `response` for a Reload that made the engine with `stats` serve as
 // `generation`.

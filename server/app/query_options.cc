@@ -10,8 +10,8 @@ namespace {
 template <typename Request>
 StatusOr<QueryOptions> CommonOptionsOf(const Request& request) {
   QueryOptions options;
-  RETURN_IF_ERROR(
-      FromInterpolation(request.interpolation(), &options.interpolation));
+  ASSIGN_OR_RETURN(options.interpolation,
+                   FromInterpolation(request.interpolation()));
   options.crs = request.crs();
   return options;
 }

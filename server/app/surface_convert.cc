@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "server/core/geometry/wide_math.h"
 
 namespace locator {
@@ -87,18 +88,15 @@ Status GridShape(const v1::GridRequest& request, RasterSpec* spec) {
 
 }  // namespace
 
-Status FromInterpolation(int value, Interpolation* how) {
+StatusOr<Interpolation> FromInterpolation(int value) {
   switch (value) {
     case v1::INTERPOLATION_UNSPECIFIED:
     case v1::INTERPOLATION_LINEAR:
-      *how = Interpolation::kLinear;
-      return Status::OK();
+      return Interpolation::kLinear;
     case v1::INTERPOLATION_NATURAL_NEIGHBOR:
-      *how = Interpolation::kNaturalNeighbor;
-      return Status::OK();
+      return Interpolation::kNaturalNeighbor;
     case v1::INTERPOLATION_NEAREST:
-      *how = Interpolation::kNearest;
-      return Status::OK();
+      return Interpolation::kNearest;
   }
   return Status::InvalidArgument("unknown interpolation " +
                                  std::to_string(value));
@@ -140,13 +138,10 @@ Status FromGridRequest(const v1::GridRequest& request, uint64_t max_cells,
   spec->nodata = request.has_nodata()
                      ? request.nodata()
                      : std::numeric_limits<double>::quiet_NaN();
-  if (Status s =
-          FromInterpolation(request.interpolation(), &spec->interpolation);
-      !s.ok()) {
-    return s;
-  }
-  if (Status s = CheckRasterBox(spec->box); !s.ok()) return s;
-  if (Status s = GridShape(request, spec); !s.ok()) return s;
+  ASSIGN_OR_RETURN(spec->interpolation,
+                   FromInterpolation(request.interpolation()));
+  RETURN_IF_ERROR(CheckRasterBox(spec->box));
+  RETURN_IF_ERROR(GridShape(request, spec));
   if (spec->cells() > max_cells) {
     return Status::ResourceExhausted(
         "a grid of " + std::to_string(spec->width) + " x " +

@@ -14,6 +14,7 @@
 #include "locator/profile.h"
 #include "locator/raster.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "locator/v1/locator.pb.h"
 
 namespace locator {
@@ -21,7 +22,7 @@ namespace locator {
 // The core's interpolation for the request's enum value (UNSPECIFIED is
 // linear). InvalidArgument for a value this server does not know (a newer
 // client's).
-Status FromInterpolation(int value, Interpolation* how);
+StatusOr<Interpolation> FromInterpolation(int value);
 
 // The request's polyline, unchecked (the engine checks count and
 // finiteness).

@@ -3,6 +3,8 @@
 #include <limits>
 #include <string>
 
+#include "common/status_macros.h"
+
 namespace locator {
 namespace {
 
@@ -73,7 +75,7 @@ void AddHttpFlags(ServerConfig* config, FlagSet* flags) {
 
 Status CheckHttpFlags(const ServerConfig& config) {
   for (const std::string& origin : config.http_cors_origins) {
-    if (Status status = CheckCorsOrigin(origin); !status.ok()) return status;
+    RETURN_IF_ERROR(CheckCorsOrigin(origin));
   }
   return Status::OK();
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "server/core/geometry/hilbert.h"
 #include "server/core/mesh/mesh_cache.h"
 #include "server/core/mesh/serving_mesh.h"
@@ -41,22 +42,20 @@ Status CheckBatchPoint(const Point2& q, size_t index) {
 Engine::Engine() : walk_costs_(std::make_unique<WalkCostHistogram>()) {}
 Engine::~Engine() = default;
 
-Status Engine::Create(Dataset dataset, const EngineOptions& options,
-                      std::unique_ptr<Engine>* engine) {
-  return Build(std::move(dataset), std::nullopt, options, engine);
+StatusOr<std::unique_ptr<Engine>> Engine::Create(Dataset dataset,
+                                                 const EngineOptions& options) {
+  return Build(std::move(dataset), std::nullopt, options);
 }
 
-Status Engine::CreateSimplified(Dataset tin,
-                                const SimplificationStats& simplification,
-                                const EngineOptions& options,
-                                std::unique_ptr<Engine>* engine) {
-  return Build(std::move(tin), simplification, options, engine);
+StatusOr<std::unique_ptr<Engine>> Engine::CreateSimplified(
+    Dataset tin, const SimplificationStats& simplification,
+    const EngineOptions& options) {
+  return Build(std::move(tin), simplification, options);
 }
 
-Status Engine::Build(Dataset dataset,
-                     std::optional<SimplificationStats> simplification,
-                     const EngineOptions& options,
-                     std::unique_ptr<Engine>* engine) {
+StatusOr<std::unique_ptr<Engine>> Engine::Build(
+    Dataset dataset, std::optional<SimplificationStats> simplification,
+    const EngineOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
   BuiltMesh built;
@@ -64,40 +63,35 @@ Status Engine::Build(Dataset dataset,
       options.build_threads > 0
           ? options.build_threads
           : std::max(1u, std::thread::hardware_concurrency());
-  Status s = BuildOrMapMesh(dataset, options.mesh_cache_dir, &built,
-                            &e->info_.mesh_cache, threads);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(BuildOrMapMesh(dataset, options.mesh_cache_dir, &built,
+                                 &e->info_.mesh_cache, threads));
   e->info_.source = std::move(dataset.source);
   e->info_.crs = std::move(dataset.crs);
   e->info_.simplification = simplification;
-  return Finish(std::move(built), options, start, std::move(e), engine);
+  return Finish(std::move(built), options, start, std::move(e));
 }
 
-Status Engine::CreateFromMeshFile(uint64_t fingerprint, DatasetOrigin origin,
-                                  const EngineOptions& options,
-                                  std::unique_ptr<Engine>* engine) {
+StatusOr<std::unique_ptr<Engine>> Engine::CreateFromMeshFile(
+    uint64_t fingerprint, DatasetOrigin origin, const EngineOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<Engine> e(new Engine());
   BuiltMesh built;
-  Status s = MapCachedMesh(options.mesh_cache_dir, fingerprint, &built,
-                           &e->info_.mesh_cache);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(MapCachedMesh(options.mesh_cache_dir, fingerprint, &built,
+                                &e->info_.mesh_cache));
   e->info_.source = std::move(origin.source);
   e->info_.crs = std::move(origin.crs);
   e->info_.simplification = std::move(origin.simplification);
-  return Finish(std::move(built), options, start, std::move(e), engine);
+  return Finish(std::move(built), options, start, std::move(e));
 }
 
-Status Engine::Finish(BuiltMesh built, const EngineOptions& options,
-                      std::chrono::steady_clock::time_point start,
-                      std::unique_ptr<Engine> e,
-                      std::unique_ptr<Engine>* engine) {
+StatusOr<std::unique_ptr<Engine>> Engine::Finish(
+    BuiltMesh built, const EngineOptions& options,
+    std::chrono::steady_clock::time_point start, std::unique_ptr<Engine> e) {
   e->mesh_ = std::move(built.mesh);
   e->edge_sample_ = std::move(built.facts.edge_sample);
   e->outline_ = std::move(built.facts.outline);
-  Status s = MakePointLocator(options.strategy, *e->mesh_, options.tuning,
-                              &e->locator_);
-  if (!s.ok()) return s;
+  ASSIGN_OR_RETURN(e->locator_, MakePointLocator(options.strategy, *e->mesh_,
+                                                 options.tuning));
   const ServingMesh& mesh = *e->mesh_;
   DatasetInfo& info = e->info_;
   info.input_points = mesh.input_points();
@@ -113,8 +107,7 @@ Status Engine::Finish(BuiltMesh built, const EngineOptions& options,
   info.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
-  *engine = std::move(e);
-  return Status::OK();
+  return e;
 }
 
 void Engine::Record(uint64_t queries, uint64_t cost) const {
@@ -135,9 +128,8 @@ void Engine::Record(uint64_t queries, uint64_t cost) const {
 
 Status Engine::Locate(const Point2& q, LocateResult* result,
                       Interpolation how) const {
-  Status s = CheckFinite(q, "query point");
-  if (s.ok()) s = CheckInterpolation(how);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckFinite(q, "query point"));
+  RETURN_IF_ERROR(CheckInterpolation(how));
   const Detail detail = StrategyDetail(how, Detail::kFull);
   locator_->Locate(q, result, detail);
   if (detail == Detail::kAllButValue) {
@@ -153,9 +145,9 @@ Status Engine::LocateBatch(std::span<const Point2> queries,
                            const std::function<bool()>& keep_going,
                            Interpolation how, Detail detail) const {
   for (size_t i = 0; i < queries.size(); ++i) {
-    if (Status s = CheckBatchPoint(queries[i], i); !s.ok()) return s;
+    RETURN_IF_ERROR(CheckBatchPoint(queries[i], i));
   }
-  if (Status s = CheckInterpolation(how); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckInterpolation(how));
   results->resize(queries.size());
   const std::vector<uint32_t> order = HilbertOrder(queries, info_.bounding_box);
   const Detail strategy_detail = StrategyDetail(how, detail);

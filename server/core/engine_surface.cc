@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 
+#include "common/status_macros.h"
 #include "locator/engine.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/strategies/point_locator.h"
@@ -49,7 +50,7 @@ void Engine::InterpolateValues(std::span<const Point2> queries,
 
 Status Engine::TraceProfile(std::span<const Point2> line,
                             const ProfileOptions& options, Profile* out) const {
-  if (Status s = CheckInterpolation(options.interpolation); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckInterpolation(options.interpolation));
   const ServingMesh& mesh = *mesh_;
   // The trace checks the line itself; the strategy only sees a good point.
   const uint32_t start = !line.empty() && IsFinite(line[0])
@@ -60,8 +61,8 @@ Status Engine::TraceProfile(std::span<const Point2> line,
 
 Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,
                           uint32_t rows, double* out) const {
-  if (Status s = CheckRasterSpec(spec); !s.ok()) return s;
-  if (Status s = CheckInterpolation(spec.interpolation); !s.ok()) return s;
+  RETURN_IF_ERROR(CheckRasterSpec(spec));
+  RETURN_IF_ERROR(CheckInterpolation(spec.interpolation));
   if (first_row > spec.height || rows > spec.height - first_row) {
     return Status::InvalidArgument(
         "rows " + std::to_string(first_row) + ".." +

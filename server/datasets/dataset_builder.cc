@@ -166,16 +166,16 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
       << SecondsSince(load_start) << " s; building the serving mesh";
   if (served.simplification) LogSimplified(*served.simplification, tag);
   heartbeat.SetPhase("building the serving mesh");
-  std::unique_ptr<Engine> created;
-  status =
+  StatusOr<std::unique_ptr<Engine>> engine =
       served.simplification
           ? Engine::CreateSimplified(std::move(served.dataset),
-                                     *served.simplification, options, &created)
-          : Engine::Create(std::move(served.dataset), options, &created);
-  if (!status.ok()) {
+                                     *served.simplification, options)
+          : Engine::Create(std::move(served.dataset), options);
+  if (!engine.ok()) {
     budget_.Cancel(slot.index());
-    return status;
+    return std::move(engine).status();
   }
+  std::unique_ptr<Engine> created = *std::move(engine);
   // Published by the caller right after this returns.
   budget_.Commit(slot.index());
   const DatasetInfo& info = created->dataset_info();
@@ -191,11 +191,12 @@ bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
                              const EngineOptions& options, std::string_view how,
                              std::shared_ptr<Engine>* built) {
   const std::string_view tag = Tag(slot);
-  std::unique_ptr<Engine> created;
-  Status status = Engine::CreateFromMeshFile(fingerprint, std::move(origin),
-                                             options, &created);
+  StatusOr<std::unique_ptr<Engine>> created =
+      Engine::CreateFromMeshFile(fingerprint, std::move(origin), options);
+  Status status = created.status();
   if (status.ok()) {
-    status = budget_.Claim(slot.index(), created->dataset_info().input_points);
+    status =
+        budget_.Claim(slot.index(), (*created)->dataset_info().input_points);
   }
   if (!status.ok()) {
     // The slow path loads the spec and says what is wrong, if anything.
@@ -208,8 +209,8 @@ bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
   }
   budget_.Commit(slot.index());
   LogLine(LogLevel::kInfo, tag) << "found the mesh of " << spec << " " << how;
-  LogBuilt(*created, tag);
-  *built = std::move(created);
+  LogBuilt(**created, tag);
+  *built = *std::move(created);
   return true;
 }
 
@@ -217,12 +218,12 @@ bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,
                                   const std::string& spec,
                                   const EngineOptions& options,
                                   std::shared_ptr<Engine>* built) {
-  GeneratorSpec generator;
+  if (options.mesh_cache_dir.empty() || !IsGeneratorSpec(spec)) return false;
+  const StatusOr<GeneratorSpec> generator = ParseGeneratorSpec(spec);
   uint64_t fingerprint = 0;
-  if (options.mesh_cache_dir.empty() || !IsGeneratorSpec(spec) ||
-      !ParseGeneratorSpec(spec, &generator).ok() ||
-      !FindGeneratedFingerprint(options.mesh_cache_dir, generator, &fingerprint)
-           .ok()) {
+  if (!generator.ok() || !FindGeneratedFingerprint(options.mesh_cache_dir,
+                                                   *generator, &fingerprint)
+                              .ok()) {
     return false;
   }
   DatasetOrigin origin;
@@ -257,13 +258,14 @@ void DatasetBuilder::RecordGenerated(const std::string& spec,
                                      const EngineOptions& options,
                                      const MeshCacheOutcome& cache,
                                      std::string_view tag) {
-  GeneratorSpec generator;
   if (cache.path.empty() || !cache.save_error.empty() ||
-      !IsGeneratorSpec(spec) || !ParseGeneratorSpec(spec, &generator).ok()) {
+      !IsGeneratorSpec(spec)) {
     return;
   }
+  const StatusOr<GeneratorSpec> generator = ParseGeneratorSpec(spec);
+  if (!generator.ok()) return;
   const Status status = RecordGeneratedFingerprint(
-      options.mesh_cache_dir, generator, cache.fingerprint);
+      options.mesh_cache_dir, *generator, cache.fingerprint);
   if (!status.ok()) {
     LogLine(LogLevel::kWarning, tag)
         << "cannot record the mesh of " << spec << ": " << status.ToString();

@@ -14,6 +14,7 @@
 #include "common/gis/raster_dataset_spec.h"
 #include "common/gis/raster_grid.h"
 #include "common/input_text.h"
+#include "common/status_macros.h"
 #include "server/core/terrain/grid/triangulate_grid.h"
 #include "server/core/terrain/points/simplify_points.h"
 
@@ -97,14 +98,14 @@ Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
   }
   out->simplification = stats;
   out->files = LocalFiles(read);
-  gis::RasterDatasetSpec parsed;
-  if (out->files.empty() || !gis::ParseRasterDatasetSpec(spec, &parsed).ok()) {
-    return Status::OK();
-  }
+  if (out->files.empty()) return Status::OK();
+  const StatusOr<gis::RasterDatasetSpec> parsed =
+      gis::ParseRasterDatasetSpec(spec);
+  if (!parsed.ok()) return Status::OK();
   // GDAL reads these side-cars when they exist (nodata, scale and CRS in an
   // .aux.xml, a mask, a .prj, a world file): one that appears later
   // changes the dataset.
-  const fs::path source = Absolute(parsed.source);
+  const fs::path source = Absolute(parsed->source);
   fs::path stem = source;
   stem.replace_extension();
   for (const fs::path& side_car :
@@ -122,12 +123,11 @@ Status LoadRaster(const std::string& spec, const gis::SimplifySpec& simplify,
 
 // The files an OGR spec's source reads, when they are local files.
 std::vector<std::string> OgrFiles(const std::string& spec) {
-  gis::OgrDatasetSpec parsed;
+  const StatusOr<gis::OgrDatasetSpec> parsed = gis::ParseOgrDatasetSpec(spec);
   std::vector<std::string> files;
-  if (!gis::ParseOgrDatasetSpec(spec, &parsed).ok() ||
-      !gis::VectorFileList(parsed.source, parsed.open_options, parsed.driver,
-                           &files)
-           .ok()) {
+  if (!parsed.ok() || !gis::VectorFileList(parsed->source, parsed->open_options,
+                                           parsed->driver, &files)
+                           .ok()) {
     return {};
   }
   return LocalFiles(files);
@@ -139,14 +139,10 @@ Status LoadPoints(const std::string& whole_spec, const std::string& spec,
                   ServedDataset* out) {
   switch (kind) {
     case DatasetKind::kLas: {
-      gis::las::LasDatasetSpec parsed;
-      if (Status s = gis::las::LoadLasDataset(spec, &out->dataset, limits);
-          !s.ok()) {
-        return s;
-      }
-      if (gis::las::ParseLasDatasetSpec(spec, &parsed).ok()) {
-        out->files = LocalFiles({parsed.path});
-      }
+      RETURN_IF_ERROR(gis::las::LoadLasDataset(spec, &out->dataset, limits));
+      const StatusOr<gis::las::LasDatasetSpec> parsed =
+          gis::las::ParseLasDatasetSpec(spec);
+      if (parsed.ok()) out->files = LocalFiles({parsed->path});
       return Status::OK();
     }
     case DatasetKind::kOgr:
@@ -159,13 +155,11 @@ Status LoadPoints(const std::string& whole_spec, const std::string& spec,
     default: {
       // Text files and generators take no options of their own.
       std::vector<gis::SpecOption> options;
-      if (Status s = gis::ParseSpecOptions(spec, &options); !s.ok()) return s;
+      RETURN_IF_ERROR(gis::ParseSpecOptions(spec, &options));
       if (!options.empty()) {
         return gis::UnknownSpecOption(whole_spec, options[0].name, "");
       }
-      if (Status s = LoadDataset(spec, &out->dataset, limits); !s.ok()) {
-        return s;
-      }
+      ASSIGN_OR_RETURN(out->dataset, LoadDataset(spec, limits));
       out->files = LocalFiles(TextSpecFiles(spec));
       return Status::OK();
     }
@@ -191,9 +185,9 @@ Status SimplifyLoaded(const std::string& spec,
 // Stats and request transforms rely on PROJ knowing the dataset's CRS.
 Status CheckCrs(const std::string& spec, const std::string& crs) {
   if (crs.empty()) return Status::OK();
-  gis::CrsInfo info;
-  if (Status status = gis::DescribeCrsMemoized(crs, &info); !status.ok()) {
-    return Status::InvalidArgument(spec + ": " + status.message());
+  if (const StatusOr<gis::CrsInfo> info = gis::DescribeCrsMemoized(crs);
+      !info.ok()) {
+    return Status::InvalidArgument(spec + ": " + info.status().message());
   }
   return Status::OK();
 }

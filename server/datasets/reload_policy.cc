@@ -60,22 +60,21 @@ Status ParseKindSpec(const std::string& requested, const std::string& kind_spec,
                      DatasetKind kind, gis::OgrDatasetSpec* ogr,
                      gis::RasterDatasetSpec* raster) {
   switch (kind) {
-    case DatasetKind::kOgr:
-      return gis::ParseOgrDatasetSpec(kind_spec, ogr);
-    case DatasetKind::kRaster:
-      return gis::ParseRasterDatasetSpec(kind_spec, raster);
-    case DatasetKind::kLas: {
+    case DatasetKind::kOgr: {
+      ASSIGN_OR_RETURN(*ogr, gis::ParseOgrDatasetSpec(kind_spec));
+      return Status::OK();
+    }
+    case DatasetKind::kRaster: {
+      ASSIGN_OR_RETURN(*raster, gis::ParseRasterDatasetSpec(kind_spec));
+      return Status::OK();
+    }
+    case DatasetKind::kLas:
       // classes= and returns= only filter the file's points; the LAS
       // reader opens nothing else.
-      gis::las::LasDatasetSpec las;
-      return gis::las::ParseLasDatasetSpec(kind_spec, &las);
-    }
+      return gis::las::ParseLasDatasetSpec(kind_spec).status();
     default: {
       std::vector<gis::SpecOption> options;
-      if (Status status = gis::ParseSpecOptions(kind_spec, &options);
-          !status.ok()) {
-        return status;
-      }
+      RETURN_IF_ERROR(gis::ParseSpecOptions(kind_spec, &options));
       return options.empty()
                  ? Status::OK()
                  : gis::UnknownSpecOption(requested, options[0].name, "");

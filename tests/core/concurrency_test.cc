@@ -192,10 +192,10 @@ TEST_F(ConcurrencyTest, EngineLocateBatchAndStatsConcurrently) {
   EngineOptions options;
   options.tuning.background = true;
   options.tuning.retune_every = 1000;
-  std::unique_ptr<Engine> engine;
-  ASSERT_TRUE(
-      Engine::Create(GenerateUniform(kPoints, kDatasetSeed), options, &engine)
-          .ok());
+  StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(GenerateUniform(kPoints, kDatasetSeed), options);
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<Engine> engine = *std::move(created);
   std::atomic<uint64_t> errors{0};
   std::atomic<bool> done{false};
   std::atomic<uint64_t> stats_calls{0};

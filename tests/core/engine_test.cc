@@ -35,11 +35,11 @@ Dataset TestDataset() {
   return ds;
 }
 
-Status CreateEngine(Dataset ds, const std::string& strategy,
-                    std::unique_ptr<Engine>* engine) {
+StatusOr<std::unique_ptr<Engine>> CreateEngine(Dataset ds,
+                                               const std::string& strategy) {
   EngineOptions options;
   options.strategy = strategy;
-  return Engine::Create(std::move(ds), options, engine);
+  return Engine::Create(std::move(ds), options);
 }
 
 class EngineTest : public ::testing::Test {
@@ -47,11 +47,13 @@ class EngineTest : public ::testing::Test {
   void SetUp() override {
     Dataset dataset = TestDataset();
     const auto before_create = std::chrono::steady_clock::now();
-    const Status s = CreateEngine(std::move(dataset), "self-tuning", &engine_);
+    StatusOr<std::unique_ptr<Engine>> engine =
+        CreateEngine(std::move(dataset), "self-tuning");
     create_seconds_ = std::chrono::duration<double>(
                           std::chrono::steady_clock::now() - before_create)
                           .count();
-    ASSERT_TRUE(s.ok()) << s.ToString();
+    ASSERT_TRUE(engine.ok()) << engine.status().ToString();
+    engine_ = *std::move(engine);
     t_ = test::BuildTriangulation(TestDataset());
     ASSERT_NE(t_, nullptr);
   }
@@ -73,42 +75,40 @@ class EngineTest : public ::testing::Test {
 };
 
 TEST(EngineCreateTest, UnknownStrategyListsTheValidNames) {
-  std::unique_ptr<Engine> engine;
-  const Status s = CreateEngine(GenerateUniform(100, 1), "fastest", &engine);
+  const Status s = CreateEngine(GenerateUniform(100, 1), "fastest").status();
   ASSERT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
   EXPECT_NE(s.message().find("fastest"), std::string::npos) << s.message();
   for (const std::string& name : StrategyNames()) {
     EXPECT_NE(s.message().find(name), std::string::npos) << s.message();
   }
-  EXPECT_EQ(engine, nullptr);
 }
 
 TEST(EngineCreateTest, CollinearOrTooFewPointsFail) {
-  std::unique_ptr<Engine> engine;
-  const Status collinear = CreateEngine(
-      test::PointsDataset({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), "walk", &engine);
+  const Status collinear =
+      CreateEngine(test::PointsDataset({{0, 0}, {1, 1}, {2, 2}, {3, 3}}),
+                   "walk")
+          .status();
   ASSERT_EQ(collinear.code(), Status::Code::kInvalidArgument);
   EXPECT_NE(collinear.message().find("collinear"), std::string::npos)
       << collinear.message();
   const Status few =
-      CreateEngine(test::PointsDataset({{0, 0}, {1, 1}}), "walk", &engine);
+      CreateEngine(test::PointsDataset({{0, 0}, {1, 1}}), "walk").status();
   EXPECT_EQ(few.code(), Status::Code::kInvalidArgument);
-  EXPECT_EQ(engine, nullptr);
 }
 
 TEST(EngineCreateTest, TuningOptionsOutOfRangeFail) {
   EngineOptions options;
   options.tuning.grid_size = 0;
-  std::unique_ptr<Engine> engine;
-  const Status s = Engine::Create(GenerateUniform(100, 1), options, &engine);
+  const Status s = Engine::Create(GenerateUniform(100, 1), options).status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
-  EXPECT_EQ(engine, nullptr);
 }
 
 TEST(EngineCreateTest, EveryStrategyIsAvailable) {
   for (const std::string& name : StrategyNames()) {
-    std::unique_ptr<Engine> engine;
-    ASSERT_TRUE(CreateEngine(GenerateUniform(500, 2), name, &engine).ok());
+    const StatusOr<std::unique_ptr<Engine>> created =
+        CreateEngine(GenerateUniform(500, 2), name);
+    ASSERT_TRUE(created.ok());
+    const std::unique_ptr<Engine>& engine = *created;
     EXPECT_EQ(engine->Stats().strategy, name);
     LocateResult r;
     ASSERT_TRUE(engine->Locate({0.5, 0.5}, &r).ok());
@@ -332,10 +332,11 @@ TEST_F(EngineTest, StatsDescribeTheDataset) {
   EXPECT_GT(box.width(), 0.99);
   EXPECT_EQ(engine_->dataset_info().triangles, info.triangles);
 
-  std::unique_ptr<Engine> plain;
-  ASSERT_TRUE(CreateEngine(GenerateUniform(100, 1), "walk", &plain).ok());
-  EXPECT_FALSE(plain->Stats().dataset.has_values);
-  EXPECT_EQ(plain->Stats().dataset.duplicates_merged, 0u);
+  const StatusOr<std::unique_ptr<Engine>> plain =
+      CreateEngine(GenerateUniform(100, 1), "walk");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE((*plain)->Stats().dataset.has_values);
+  EXPECT_EQ((*plain)->Stats().dataset.duplicates_merged, 0u);
 }
 
 TEST_F(EngineTest, ValuesAreInterpolated) {

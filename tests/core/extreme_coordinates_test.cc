@@ -181,11 +181,11 @@ std::unique_ptr<Served> Serve(Dataset dataset) {
     options.strategy = strategy;
     options.tuning.warmup_queries = 64;
     options.tuning.retune_every = 64;
-    std::unique_ptr<Engine> engine;
-    const Status s = Engine::Create(served->dataset, options, &engine);
-    EXPECT_TRUE(s.ok()) << strategy << ": " << s.ToString();
-    if (!s.ok()) return nullptr;
-    served->engines.push_back(std::move(engine));
+    StatusOr<std::unique_ptr<Engine>> engine =
+        Engine::Create(served->dataset, options);
+    EXPECT_TRUE(engine.ok()) << strategy << ": " << engine.status().ToString();
+    if (!engine.ok()) return nullptr;
+    served->engines.push_back(*std::move(engine));
   }
   return served;
 }
@@ -698,14 +698,15 @@ TEST(ExtremeRasterTest, CellsMustBeDoubles) {
 // Numbers at the ends of the doubles load as written: the largest double,
 // the smallest denormal, -0; beyond the doubles they are refused.
 TEST(ExtremeLoadTest, TextKeepsEveryFiniteDouble) {
-  Dataset ds;
-  ASSERT_TRUE(ParseXyzText("1.7976931348623157e308,-1.7976931348623157e308,"
-                           "1.7976931348623157e308\n"
-                           "-1.7976931348623157e308,4.9e-324,-4.9e-324\n"
-                           "2.2250738585072014e-308,-0,1e160\n"
-                           "1e300,1e300,-0\n",
-                           "extreme.csv", &ds)
-                  .ok());
+  const StatusOr<Dataset> parsed = ParseXyzText(
+      "1.7976931348623157e308,-1.7976931348623157e308,"
+      "1.7976931348623157e308\n"
+      "-1.7976931348623157e308,4.9e-324,-4.9e-324\n"
+      "2.2250738585072014e-308,-0,1e160\n"
+      "1e300,1e300,-0\n",
+      "extreme.csv");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const Dataset& ds = *parsed;
   ASSERT_EQ(ds.points.size(), 4u);
   EXPECT_EQ(ds.points[0].x, kMax);
   EXPECT_EQ(ds.points[1].y, L::denorm_min());
@@ -716,7 +717,7 @@ TEST(ExtremeLoadTest, TextKeepsEveryFiniteDouble) {
   ASSERT_NE(s, nullptr);
   ExpectLocatesRight(*s, QueriesFor(*s));
   ExpectInterpolationsRight(*s, EveryNth(QueriesFor(*s), 5), nullptr, 0);
-  const Status beyond = ParseXyzText("1e309,0,0\n", "beyond.csv", &ds);
+  const Status beyond = ParseXyzText("1e309,0,0\n", "beyond.csv").status();
   EXPECT_EQ(beyond.code(), Status::Code::kInvalidArgument);
   EXPECT_NE(beyond.message().find("beyond.csv:1: non-finite coordinate"),
             std::string::npos)
@@ -766,16 +767,16 @@ TEST(ExtremeConstraintsTest, CrossingBreaklinesAtEveryScale) {
 TEST(ExtremeConstraintsTest, CrossingsBeyondDoublesAreRefused) {
   Dataset ds;
   ds.points = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
-  ASSERT_TRUE(ParseWktConstraints(
-                  "LINESTRING (-1e300 -1e300, 1e300 1.7976931348623157e308)\n"
-                  "LINESTRING (-1.7976931348623157e308 1e300, 1e160 -1e160, "
-                  "1e300 -1e300)\n"
-                  "POLYGON ((-1e300 -1e300, 1e300 -1e300, 1e300 1e300, "
-                  "-1e300 1e300, -1e300 -1e300))\n",
-                  "crossing.wkt", &ds.constraints)
-                  .ok());
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(ds, &t);
+  StatusOr<DatasetConstraints> constraints = ParseWktConstraints(
+      "LINESTRING (-1e300 -1e300, 1e300 1.7976931348623157e308)\n"
+      "LINESTRING (-1.7976931348623157e308 1e300, 1e160 -1e160, "
+      "1e300 -1e300)\n"
+      "POLYGON ((-1e300 -1e300, 1e300 -1e300, 1e300 1e300, "
+      "-1e300 1e300, -1e300 -1e300))\n",
+      "crossing.wkt");
+  ASSERT_TRUE(constraints.ok()) << constraints.status().ToString();
+  ds.constraints = *std::move(constraints);
+  const Status s = Triangulation::Build(ds).status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
   EXPECT_NE(s.message().find("cannot be computed in doubles"),
             std::string::npos)

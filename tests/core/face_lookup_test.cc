@@ -56,10 +56,14 @@ class FaceLookupTest : public ::testing::TestWithParam<Interpolation> {
       dataset.values.push_back(std::sin(7 * p.x) + p.y * p.y);
     }
     values_ = dataset.values;
-    std::unique_ptr<Engine> engine;
-    ASSERT_TRUE(Engine::Create(dataset, EngineOptions(), &engine).ok());
-    ASSERT_TRUE(Engine::Create(dataset, EngineOptions(), &reference_).ok());
-    engine_ = std::move(engine);
+    StatusOr<std::unique_ptr<Engine>> engine =
+        Engine::Create(dataset, EngineOptions());
+    ASSERT_TRUE(engine.ok());
+    StatusOr<std::unique_ptr<Engine>> reference =
+        Engine::Create(dataset, EngineOptions());
+    ASSERT_TRUE(reference.ok());
+    reference_ = *std::move(reference);
+    engine_ = *std::move(engine);
     EngineTestPeer::WrapStrategy(*engine_, [this](auto strategy) {
       auto counting = std::make_unique<CountingLocator>(std::move(strategy));
       counting_ = counting.get();

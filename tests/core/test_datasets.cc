@@ -121,26 +121,26 @@ std::vector<std::array<uint32_t, 3>> TriangleSet(const ServingMesh& mesh) {
 }
 
 std::unique_ptr<Triangulation> BuildTriangulation(const Dataset& dataset) {
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(dataset, &t);
-  if (!s.ok()) {
+  StatusOr<std::unique_ptr<Triangulation>> t = Triangulation::Build(dataset);
+  if (!t.ok()) {
     ADD_FAILURE() << "Triangulation::Build(" << dataset.source
-                  << "): " << s.ToString();
+                  << "): " << t.status().ToString();
     return nullptr;
   }
-  return t;
+  return *std::move(t);
 }
 
 std::unique_ptr<PointLocator> MakeLocator(std::string_view name,
                                           const Triangulation& t,
                                           const TuningOptions& options) {
-  std::unique_ptr<PointLocator> locator;
-  const Status s = MakePointLocator(name, t.mesh(), options, &locator);
-  if (!s.ok()) {
-    ADD_FAILURE() << "MakePointLocator(" << name << "): " << s.ToString();
+  StatusOr<std::unique_ptr<PointLocator>> locator =
+      MakePointLocator(name, t.mesh(), options);
+  if (!locator.ok()) {
+    ADD_FAILURE() << "MakePointLocator(" << name
+                  << "): " << locator.status().ToString();
     return nullptr;
   }
-  return locator;
+  return *std::move(locator);
 }
 
 std::vector<Point2> UniformQueries(const BoundingBox& box, size_t n,

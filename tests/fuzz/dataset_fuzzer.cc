@@ -53,9 +53,10 @@ void Fail(std::string_view what, const Status& status) {
   std::abort();
 }
 
-Status ParseEleAgainstFixedNodes(std::string_view text, std::string_view name,
-                                 Dataset* ds, const DatasetLimits& limits) {
-  return ParseEleText(text, name, kEleNodes, "fuzz.node", ds, limits);
+StatusOr<Dataset> ParseEleAgainstFixedNodes(std::string_view text,
+                                            std::string_view name,
+                                            const DatasetLimits& limits) {
+  return ParseEleText(text, name, kEleNodes, "fuzz.node", limits);
 }
 
 // 1-based lines in `text` as FieldReader counts them.
@@ -118,12 +119,11 @@ bool SameDoubles(const Dataset& a, const Dataset& b) {
 // Triangulates `ds` if it has constraints (see the file comment).
 void CheckTriangulates(const Dataset& ds) {
   if (ds.constraints.empty()) return;
-  std::unique_ptr<Triangulation> t;
-  const Status status = Triangulation::Build(ds, &t);
-  if (status.ok()) {
-    if (t->num_triangles() == 0) Fail("built an empty domain", status);
-  } else if (status.code() != Status::Code::kInvalidArgument) {
-    Fail("triangulating failed with an unexpected code", status);
+  const StatusOr<std::unique_ptr<Triangulation>> t = Triangulation::Build(ds);
+  if (t.ok()) {
+    if ((*t)->num_triangles() == 0) Fail("built an empty domain", t.status());
+  } else if (t.status().code() != Status::Code::kInvalidArgument) {
+    Fail("triangulating failed with an unexpected code", t.status());
   }
 }
 
@@ -144,21 +144,19 @@ void CheckDataset(const Dataset& ds) {
       if (corner >= ds.points.size()) Fail("a mesh corner names no point", ok);
     }
   }
-  Dataset again;
-  const Status reparsed = ParseXyzText(ToCsv(ds), kCsvName, &again);
-  if (!reparsed.ok()) Fail("its own CSV does not parse", reparsed);
-  if (!SameDoubles(ds, again)) Fail("CSV round trip changed the doubles", ok);
+  const StatusOr<Dataset> again = ParseXyzText(ToCsv(ds), kCsvName);
+  if (!again.ok()) Fail("its own CSV does not parse", again.status());
+  if (!SameDoubles(ds, *again)) Fail("CSV round trip changed the doubles", ok);
   CheckTriangulates(ds);
 }
 
 template <typename Parser>
 void Check(Parser parse, std::string_view text, std::string_view name) {
-  Dataset ds;
-  const Status status = parse(text, name, &ds, DatasetLimits());
-  if (status.ok()) {
-    CheckDataset(ds);
+  const StatusOr<Dataset> ds = parse(text, name, DatasetLimits());
+  if (ds.ok()) {
+    CheckDataset(*ds);
   } else {
-    CheckError(status, text, name);
+    CheckError(ds.status(), text, name);
   }
 }
 
@@ -181,8 +179,12 @@ void CheckPolylines(const std::vector<Polyline>& lines, size_t min_points) {
 void CheckWkt(std::string_view text) {
   Dataset ds;
   ds.points = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
-  const Status status = ParseWktConstraints(text, kWktName, &ds.constraints);
-  if (!status.ok()) return CheckError(status, text, kWktName);
+  StatusOr<DatasetConstraints> constraints =
+      ParseWktConstraints(text, kWktName);
+  if (!constraints.ok()) {
+    return CheckError(constraints.status(), text, kWktName);
+  }
+  ds.constraints = *std::move(constraints);
   CheckPolylines(ds.constraints.breaklines, 2);
   CheckPolylines(ds.constraints.rings, 3);
   CheckTriangulates(ds);

@@ -94,30 +94,27 @@ Fixture* MakeFixture() {
                       DatasetConfig{"other", "fixed", true},
                       DatasetConfig{"utm", "fixed", true}};
   f->app = std::make_unique<LocatorApp>(options);
-  std::unique_ptr<Engine> engine, utm;
   Dataset dataset = GenerateUniform(200, 3);
   for (const Point2& p : dataset.points) dataset.values.push_back(p.x - p.y);
-  if (!Engine::Create(dataset, EngineOptions(), &engine).ok()) {
-    Fail("cannot build the engine", "");
-  }
+  StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(dataset, EngineOptions());
+  if (!engine.ok()) Fail("cannot build the engine", "");
   // The same points 10 km across around 15°E 49.65°N, in UTM zone 33N.
   for (Point2& p : dataset.points) {
     p = {495000 + 10000 * p.x, 5495000 + 10000 * p.y};
   }
   gis::GuardedProjContext& ctx = gis::ThreadProjContext();
-  gis::PjPtr crs;
-  if (!gis::CreateCrs(ctx, "EPSG:32633", &crs).ok()) {
-    Fail("no EPSG:32633", "");
-  }
-  dataset.crs = proj_as_wkt(ctx.get(), crs.get(), PJ_WKT2_2019, nullptr);
-  if (!Engine::Create(dataset, EngineOptions(), &utm).ok()) {
-    Fail("cannot build the utm engine", "");
-  }
-  f->engine = std::move(engine);
+  const StatusOr<gis::PjPtr> crs = gis::CreateCrs(ctx, "EPSG:32633");
+  if (!crs.ok()) Fail("no EPSG:32633", "");
+  dataset.crs = proj_as_wkt(ctx.get(), crs->get(), PJ_WKT2_2019, nullptr);
+  StatusOr<std::unique_ptr<Engine>> utm =
+      Engine::Create(dataset, EngineOptions());
+  if (!utm.ok()) Fail("cannot build the utm engine", "");
+  f->engine = *std::move(engine);
   const auto& slots = f->app->datasets().slots();
   slots[0]->Publish(f->engine);
   slots[1]->Publish(f->engine);
-  slots[2]->Publish(std::shared_ptr<Engine>(std::move(utm)));
+  slots[2]->Publish(std::shared_ptr<Engine>(*std::move(utm)));
   f->api = std::make_unique<JsonApi>(f->app.get());
   return f;
 }

@@ -88,7 +88,10 @@ void Require(const Status& status, const char* what) {
 Fixture* MakeFixture() {
   auto* f = new Fixture;
   f->dataset = FixedDataset();
-  Require(Triangulation::Build(f->dataset, &f->reference), "reference");
+  StatusOr<std::unique_ptr<Triangulation>> reference =
+      Triangulation::Build(f->dataset);
+  Require(reference.status(), "reference");
+  f->reference = *std::move(reference);
   for (const char* strategy : kStrategies) {
     EngineOptions options;
     options.strategy = strategy;
@@ -96,9 +99,10 @@ Fixture* MakeFixture() {
     options.tuning.grid_size = 8;
     options.tuning.warmup_queries = 200;
     options.tuning.retune_every = 256;
-    std::unique_ptr<Engine> engine;
-    Require(Engine::Create(f->dataset, options, &engine), strategy);
-    f->engines.push_back(std::move(engine));
+    StatusOr<std::unique_ptr<Engine>> engine =
+        Engine::Create(f->dataset, options);
+    Require(engine.status(), strategy);
+    f->engines.push_back(*std::move(engine));
   }
   const auto& dt = f->reference->cgal();
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {

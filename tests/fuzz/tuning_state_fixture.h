@@ -43,14 +43,15 @@ inline const TuningStateFixture& TuningStateFuzzFixture() {
     // A budget of its own, not a share of the mesh's bytes: enough for
     // refined cells, so that saves hold sub-grid starts.
     f->options.budget_bytes = TuningStateFixture::kBudgetBytes;
-    const Status built = Triangulation::Build(
-        GenerateUniform(TuningStateFixture::kPoints, TuningStateFixture::kSeed),
-        &f->triangulation);
+    StatusOr<std::unique_ptr<Triangulation>> built =
+        Triangulation::Build(GenerateUniform(TuningStateFixture::kPoints,
+                                             TuningStateFixture::kSeed));
     if (!built.ok()) {
       std::fprintf(stderr, "tuning state fixture: %s\n",
-                   built.ToString().c_str());
+                   built.status().ToString().c_str());
       std::abort();
     }
+    f->triangulation = *std::move(built);
     const TuningSummary summary =
         SelfTuningLocator(f->triangulation->mesh(), f->options).Summary();
     f->grid = GridGeometry(summary.grid_box, summary.grid_size);

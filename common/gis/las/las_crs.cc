@@ -50,12 +50,10 @@ StatusOr<std::string> ToWkt2(const LasInput& input, std::string_view record,
                              const std::string& crs) {
   // The file's CRS is the operator's dataset's, as an OGR layer's is.
   GuardedProjContext& ctx = ThreadProjContext();
-  PjPtr created;
-  if (Status s = CreateCrs(ctx, crs, &created); !s.ok()) {
-    return Bad(input, record, s.message());
-  }
+  const StatusOr<PjPtr> created = CreateCrs(ctx, crs);
+  if (!created.ok()) return Bad(input, record, created.status().message());
   const char* text =
-      proj_as_wkt(ctx.get(), created.get(), PJ_WKT2_2019, nullptr);
+      proj_as_wkt(ctx.get(), created->get(), PJ_WKT2_2019, nullptr);
   if (text == nullptr) {
     return Bad(input, record,
                "PROJ cannot write the CRS as WKT: " + LastProjError(ctx.get()));

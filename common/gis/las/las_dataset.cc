@@ -55,8 +55,7 @@ Status Load(LasInput& input, const LasFilter& filter,
 
 Status LoadLasDataset(const std::string& spec, Dataset* out,
                       const DatasetLimits& limits, LasPointCounts* counts) {
-  LasDatasetSpec parsed;
-  RETURN_IF_ERROR(ParseLasDatasetSpec(spec, &parsed));
+  ASSIGN_OR_RETURN(const LasDatasetSpec parsed, ParseLasDatasetSpec(spec));
   if (SourceHasExtension(parsed.path, kLazExtension)) {
     return Status::FailedPrecondition(LazMessage(parsed.path));
   }

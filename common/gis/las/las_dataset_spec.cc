@@ -61,7 +61,7 @@ SpecParts SplitLasDatasetSpec(std::string_view spec) {
   return SplitSpec(spec, kLasPrefix);
 }
 
-Status ParseLasDatasetSpec(std::string_view spec, LasDatasetSpec* out) {
+StatusOr<LasDatasetSpec> ParseLasDatasetSpec(std::string_view spec) {
   LasDatasetSpec parsed;
   parsed.path = std::string(SplitSpec(spec, kLasPrefix).source);
   if (parsed.path.empty()) {
@@ -82,13 +82,11 @@ Status ParseLasDatasetSpec(std::string_view spec, LasDatasetSpec* out) {
       return SpecError(spec, "option '" + option.name + "' given twice");
     }
     *seen = true;
-    const Status status = option.name == "classes"
-                              ? ParseClasses(spec, option, &parsed.filter)
-                              : ParseReturns(spec, option, &parsed.filter);
-    if (!status.ok()) return status;
+    RETURN_IF_ERROR(option.name == "classes"
+                        ? ParseClasses(spec, option, &parsed.filter)
+                        : ParseReturns(spec, option, &parsed.filter));
   }
-  *out = std::move(parsed);
-  return Status::OK();
+  return parsed;
 }
 
 }  // namespace locator::gis::las

@@ -27,6 +27,7 @@
 
 #include "common/gis/dataset_spec_options.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator::gis::las {
 
@@ -59,7 +60,7 @@ SpecParts SplitLasDatasetSpec(std::string_view spec);
 // Parses `spec`; InvalidArgument naming the spec and the option for an
 // unknown or repeated option, a class that is not 0-255, an unknown returns
 // value, or no path.
-Status ParseLasDatasetSpec(std::string_view spec, LasDatasetSpec* out);
+StatusOr<LasDatasetSpec> ParseLasDatasetSpec(std::string_view spec);
 
 }  // namespace locator::gis::las
 

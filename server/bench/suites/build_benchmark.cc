@@ -74,18 +74,18 @@ size_t StartPeak() {
 
 Status SetUpStrategy(const ServingMesh& mesh, Sample* sample) {
   const Stopwatch watch;
-  std::unique_ptr<PointLocator> locator;
-  Status s = MakePointLocator("self-tuning", mesh, TuningOptions(), &locator);
+  const StatusOr<std::unique_ptr<PointLocator>> locator =
+      MakePointLocator("self-tuning", mesh, TuningOptions());
   sample->setup_s = watch.Seconds();
-  return s;
+  return locator.status();
 }
 
 Status BuildWithCgal(const Dataset& dataset, Sample* sample) {
   const size_t before = StartPeak();
   const double cpu = CpuSeconds();
   const Stopwatch watch;
-  std::unique_ptr<Triangulation> t;
-  RETURN_IF_ERROR(Triangulation::Build(dataset, &t));
+  ASSIGN_OR_RETURN(std::unique_ptr<Triangulation> t,
+                   Triangulation::Build(dataset));
   sample->mesh = t->shared_mesh();
   t.reset();  // as the engine does: it serves from the mesh alone
   sample->wall_s = watch.Seconds();
@@ -114,11 +114,11 @@ Status BuildInTiles(const Dataset& dataset, unsigned threads, Sample* sample) {
   Dataset copy = dataset;
   EngineOptions engine_options;
   engine_options.build_threads = threads;
-  std::unique_ptr<Engine> engine;
   watch.Restart();
-  Status s = Engine::Create(std::move(copy), engine_options, &engine);
+  const StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(std::move(copy), engine_options);
   sample->engine_s = watch.Seconds();
-  return s;
+  return engine.status();
 }
 
 double Median(std::vector<double> v) {

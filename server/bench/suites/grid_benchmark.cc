@@ -107,13 +107,12 @@ Status WriteGeoTiff(const RasterSpec& spec, const std::vector<double>& cells,
 Status LocatorEndToEnd(const GridBenchOptions& options, const std::string& csv,
                        const std::string& tif, std::unique_ptr<Engine>* engine,
                        std::vector<double>* cells) {
-  Dataset dataset;
-  RETURN_IF_ERROR(LoadDataset(csv, &dataset));
+  ASSIGN_OR_RETURN(Dataset dataset, LoadDataset(csv));
   // A one-shot job needs no learned start table: Jump&Walk starts each
   // block's first walk, scanline coherence every other.
   EngineOptions engine_options;
   engine_options.strategy = "jump-and-walk";
-  RETURN_IF_ERROR(Engine::Create(std::move(dataset), engine_options, engine));
+  ASSIGN_OR_RETURN(*engine, Engine::Create(std::move(dataset), engine_options));
   const RasterSpec spec = SpecFor(options);
   RETURN_IF_ERROR(RenderAll(**engine, spec, options.threads, cells));
   return WriteGeoTiff(spec, *cells, tif);

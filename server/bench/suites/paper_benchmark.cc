@@ -79,8 +79,8 @@ void LocateRange(const PointLocator& locator, const Triangulation& t,
 Status RunStream(const PaperOptions& o, const Triangulation& t,
                  const std::string& strategy, const Stream& stream,
                  SizeResults* out, Disagreements* disagreements) {
-  std::unique_ptr<PointLocator> locator;
-  RETURN_IF_ERROR(MakePointLocator(strategy, t.mesh(), o.tuning, &locator));
+  ASSIGN_OR_RETURN(std::unique_ptr<PointLocator> locator,
+                   MakePointLocator(strategy, t.mesh(), o.tuning));
   const size_t total = stream.queries.size();
   LocateRange(*locator, t, strategy, stream, 0, o.warmup, nullptr,
               disagreements);
@@ -168,10 +168,9 @@ Status RunPaper(const PaperOptions& o, BenchReport* report) {
     SizeResults results;
     for (int seed = 1; seed <= o.seeds; ++seed) {
       const Dataset dataset = MakeDataset(o, n, seed);
-      std::unique_ptr<Triangulation> t;
-      Status s = Triangulation::Build(dataset, &t);
-      if (s.ok()) s = CheckServesConstraints(dataset, *t);
-      if (!s.ok()) return s;
+      ASSIGN_OR_RETURN(std::unique_ptr<Triangulation> t,
+                       Triangulation::Build(dataset));
+      RETURN_IF_ERROR(CheckServesConstraints(dataset, *t));
       for (WorkloadKind kind : workloads) {
         const size_t measured =
             kind == WorkloadKind::kDrift ? o.drift_queries : o.measured;

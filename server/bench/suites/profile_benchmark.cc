@@ -15,11 +15,10 @@
 namespace locator::bench {
 namespace {
 
-Status BuildTerrain(const SurfaceBenchOptions& options,
-                    std::unique_ptr<Engine>* engine) {
+StatusOr<std::unique_ptr<Engine>> BuildTerrain(
+    const SurfaceBenchOptions& options) {
   // The default strategy, self-tuning, as locatord serves.
-  return Engine::Create(TerrainDataset(options.points, 42), EngineOptions(),
-                        engine);
+  return Engine::Create(TerrainDataset(options.points, 42), EngineOptions());
 }
 
 // A random polyline inside the terrain's box whose segments add up to
@@ -51,8 +50,7 @@ std::vector<Point2> RandomLine(double length, std::mt19937_64& random) {
 
 Status RunProfileBenchmark(const SurfaceBenchOptions& options,
                            std::ostream& out) {
-  std::unique_ptr<Engine> engine;
-  RETURN_IF_ERROR(BuildTerrain(options, &engine));
+  ASSIGN_OR_RETURN(const std::unique_ptr<Engine> engine, BuildTerrain(options));
   // Mean triangle edges crossed per metre of line, for uniform points.
   const double per_metre =
       1.4 * std::sqrt(static_cast<double>(options.points)) / 10000;
@@ -88,8 +86,7 @@ Status RunProfileBenchmark(const SurfaceBenchOptions& options,
 
 Status RunInterpolationBenchmark(const SurfaceBenchOptions& options,
                                  std::ostream& out) {
-  std::unique_ptr<Engine> engine;
-  RETURN_IF_ERROR(BuildTerrain(options, &engine));
+  ASSIGN_OR_RETURN(const std::unique_ptr<Engine> engine, BuildTerrain(options));
   // Uniform points in random order: the locate costs what a map's random
   // clicks cost; the raster below shows the interpolation almost alone.
   const std::vector<Point2> queries = TerrainPoints(options.queries, 9);

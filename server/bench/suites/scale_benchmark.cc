@@ -150,9 +150,8 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
   for (const std::string& strategy : StrategyNames()) {
     if (!Selected(o.strategies, strategy)) continue;
     auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<PointLocator> locator;
-    const Status s = MakePointLocator(strategy, mesh, o.tuning, &locator);
-    if (!s.ok()) return s;
+    ASSIGN_OR_RETURN(std::unique_ptr<PointLocator> locator,
+                     MakePointLocator(strategy, mesh, o.tuning));
     const double build_ns = NanosSince(start);
     LocateAll(*locator, warm, nullptr);
     const std::span<const Point2> timed = measured.first(
@@ -282,14 +281,13 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
       // (BuildGivenMesh); CGAL's triangulation of it is the reference.
       BuiltMesh given;
       if (data == ScaleData::kDem) {
-        if (s = BuildGivenMesh(dataset, &given); !s.ok()) return s;
+        ASSIGN_OR_RETURN(given, BuildGivenMesh(dataset));
         report->Add(BenchRow{"build", "-", n, "given-mesh" + suffix, 0, 0, 0,
                              NanosSince(start), given.mesh->MemoryBytes()});
         start = std::chrono::steady_clock::now();
       }
-      std::unique_ptr<Triangulation> t;
-      s = Triangulation::Build(dataset, &t);
-      if (!s.ok()) return s;
+      ASSIGN_OR_RETURN(std::unique_ptr<Triangulation> t,
+                       Triangulation::Build(dataset));
       // The serving mesh is what answers; CGAL's triangulation builds it.
       report->Add(BenchRow{"build", "-", n, "triangulation" + suffix, 0, 0, 0,
                            NanosSince(start), t->mesh().MemoryBytes()});

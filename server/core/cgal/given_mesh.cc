@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/cgal/domain_outline.h"
 #include "server/core/cgal/given_mesh_builder.h"
 #include "server/core/geometry/hilbert.h"
@@ -25,14 +26,13 @@ bool IsGivenMesh(const Dataset& dataset) {
          c.segments.empty() && c.hole_seeds.empty();
 }
 
-Status BuildGivenMesh(const Dataset& dataset, BuiltMesh* out) {
+StatusOr<BuiltMesh> BuildGivenMesh(const Dataset& dataset) {
   GivenMeshBuilder builder(dataset);
-  Status s = builder.Check();
-  if (s.ok()) s = builder.Serve(out);
-  return s;
+  RETURN_IF_ERROR(builder.Check());
+  return builder.Serve();
 }
 
-Status GivenMeshBuilder::Serve(BuiltMesh* out) {
+StatusOr<BuiltMesh> GivenMeshBuilder::Serve() {
   const std::vector<Point2>& pts = d_.points;
   const size_t face_count = tri_.size() + [&] {
     size_t outside = 0;
@@ -218,13 +218,14 @@ Status GivenMeshBuilder::Serve(BuiltMesh* out) {
   arrays.box = box;
   arrays.input_points = pts.size();
   arrays.digest = hash.digest();
-  out->mesh = std::make_shared<const ServingMesh>(std::move(storage), arrays);
-  out->facts.constraints = mesh_edges_;
-  out->facts.holes = holes;
-  out->facts.duplicates_merged = pts.size() - distinct_;
-  out->facts.outline = OutlineOfMesh(*out->mesh, kOutlineSize);
-  out->facts.edge_sample = out->mesh->SampleEdges(kEdgeSampleSize);
-  return Status::OK();
+  BuiltMesh built;
+  built.mesh = std::make_shared<const ServingMesh>(std::move(storage), arrays);
+  built.facts.constraints = mesh_edges_;
+  built.facts.holes = holes;
+  built.facts.duplicates_merged = pts.size() - distinct_;
+  built.facts.outline = OutlineOfMesh(*built.mesh, kOutlineSize);
+  built.facts.edge_sample = built.mesh->SampleEdges(kEdgeSampleSize);
+  return built;
 }
 
 }  // namespace locator

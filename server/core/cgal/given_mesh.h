@@ -35,6 +35,7 @@
 
 #include "locator/dataset.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "server/core/mesh/mesh_file.h"
 
 namespace locator {
@@ -45,7 +46,7 @@ bool IsGivenMesh(const Dataset& dataset);
 
 // The serving mesh and facts of `dataset`, for which IsGivenMesh() holds.
 // InvalidArgument naming what is wrong, as above.
-Status BuildGivenMesh(const Dataset& dataset, BuiltMesh* out);
+StatusOr<BuiltMesh> BuildGivenMesh(const Dataset& dataset);
 
 }  // namespace locator
 

@@ -23,6 +23,7 @@
 
 #include "locator/dataset.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "server/core/mesh/mesh_file.h"
 
 namespace locator {
@@ -34,7 +35,7 @@ class GivenMeshBuilder {
   // Checks the mesh (see given_mesh.h) and triangulates its boundary.
   Status Check();
   // The serving mesh and its facts. Precondition: Check() succeeded.
-  Status Serve(BuiltMesh* out);
+  StatusOr<BuiltMesh> Serve();
 
  private:
   static constexpr uint32_t kNone = 0xffffffffu;

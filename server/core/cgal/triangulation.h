@@ -56,6 +56,7 @@
 #include "locator/geometry.h"
 #include "locator/locate_result.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "server/core/mesh/serving_mesh.h"
 
 namespace locator {
@@ -84,8 +85,7 @@ class Triangulation {
   // are collinear, or its constraints are bad: boundaries that cross, a hole
   // point outside the domain, a mesh that is not served as given (the error
   // names the triangle or edge), an empty domain.
-  static Status Build(const Dataset& dataset,
-                      std::unique_ptr<Triangulation>* out);
+  static StatusOr<std::unique_ptr<Triangulation>> Build(const Dataset& dataset);
 
   Triangulation(const Triangulation&) = delete;
   Triangulation& operator=(const Triangulation&) = delete;

@@ -217,13 +217,11 @@ Status Triangulation::Builder::NameCrossings() {
   return Status::OK();
 }
 
-Status Triangulation::Build(const Dataset& dataset,
-                            std::unique_ptr<Triangulation>* out) {
+StatusOr<std::unique_ptr<Triangulation>> Triangulation::Build(
+    const Dataset& dataset) {
   std::unique_ptr<Triangulation> t(new Triangulation());
-  Status s = Builder(dataset, t.get()).Run();
-  if (!s.ok()) return s;
-  *out = std::move(t);
-  return Status::OK();
+  RETURN_IF_ERROR(Builder(dataset, t.get()).Run());
+  return t;
 }
 
 }  // namespace locator

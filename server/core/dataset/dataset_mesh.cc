@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "server/core/dataset/dataset_text.h"
 
@@ -88,13 +89,12 @@ Status ReadOffHeader(TextFieldReader* reader, std::string_view filename,
 
 }  // namespace
 
-Status ParseOffText(std::string_view text, std::string_view filename,
-                    Dataset* out, const DatasetLimits& limits) {
+StatusOr<Dataset> ParseOffText(std::string_view text, std::string_view filename,
+                               const DatasetLimits& limits) {
   TextFieldReader reader(text);
   size_t vertices = 0;
   size_t faces = 0;
-  Status s = ReadOffHeader(&reader, filename, &vertices, &faces);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadOffHeader(&reader, filename, &vertices, &faces));
   if (vertices == 0) return EmptyDataset(filename);
   if (vertices > limits.max_points) {
     return TooManyPoints(Cat(filename, ":", reader.line_number()),
@@ -104,21 +104,19 @@ Status ParseOffText(std::string_view text, std::string_view filename,
   TextFields f;
   Where where;
   for (size_t v = 0; v < vertices; ++v) {
-    s = ReadRow(&reader, filename, 3, Cat("vertex ", v, " 'x y z'"), &f,
-                &where);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadRow(&reader, filename, 3, Cat("vertex ", v, " 'x y z'"),
+                            &f, &where));
     if (f.count != 3) {
       return where.Error(
           Cat("expected 3 fields for vertex ", v, " 'x y z', got ", f.count));
     }
-    if (s = ParsePoint(f, 0, true, where, &ds); !s.ok()) return s;
+    RETURN_IF_ERROR(ParsePoint(f, 0, true, where, &ds));
   }
   const CornerRange range{0, vertices, "vertex",
                           Cat("the ", vertices, " vertices numbered from 0")};
   for (size_t t = 0; t < faces; ++t) {
     const std::string face = Cat("face ", t);
-    s = ReadRow(&reader, filename, 1, face, &f, &where);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadRow(&reader, filename, 1, face, &f, &where));
     size_t corners = 0;
     if (!ParseInteger(f.field[0], &corners)) {
       return where.Error(Cat(Quoted(f.field[0]), " is not a corner count"));
@@ -132,32 +130,26 @@ Status ParseOffText(std::string_view text, std::string_view filename,
           Cat(face, " lists ", f.count - 1, " of its 3 corners"));
     }
     std::array<uint32_t, 3> triangle;
-    s = ReadCorners(f, 1, range, face, where, &triangle);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadCorners(f, 1, range, face, where, &triangle));
     ds.constraints.triangles.push_back(triangle);
   }
-  if (s = NoMoreLines(&reader, filename, Cat("the ", faces, " faces"));
-      !s.ok()) {
-    return s;
-  }
-  *out = std::move(ds);
-  return Status::OK();
+  RETURN_IF_ERROR(NoMoreLines(&reader, filename, Cat("the ", faces, " faces")));
+  return ds;
 }
 
-Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
-                    std::string_view node_text, std::string_view node_filename,
-                    Dataset* out, const DatasetLimits& limits) {
+StatusOr<Dataset> ParseEleText(std::string_view ele_text,
+                               std::string_view ele_filename,
+                               std::string_view node_text,
+                               std::string_view node_filename,
+                               const DatasetLimits& limits) {
   Dataset ds;
   NodeSection nodes;
   TextFieldReader node_reader(node_text);
-  Status s = dataset_text::ParseNodeSection(&node_reader, node_filename, limits,
-                                            &ds, &nodes);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(dataset_text::ParseNodeSection(&node_reader, node_filename,
+                                                 limits, &ds, &nodes));
   const size_t n = ds.points.size();
-  if (s = NoMoreLines(&node_reader, node_filename, Cat("the ", n, " points"));
-      !s.ok()) {
-    return s;
-  }
+  RETURN_IF_ERROR(
+      NoMoreLines(&node_reader, node_filename, Cat("the ", n, " points")));
   const CornerRange range{nodes.first_index, n, "node",
                           Cat("the ", n, " nodes numbered from ",
                               nodes.first_index, " in ", node_filename)};
@@ -184,8 +176,7 @@ Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
   Where where;
   for (size_t t = 0; t < triangles; ++t) {
     const std::string triangle = Cat("triangle ", t);
-    s = ReadRow(&reader, ele_filename, 4, triangle, &f, &where);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadRow(&reader, ele_filename, 4, triangle, &f, &where));
     // Written as a subtraction so that a huge declared attribute count
     // cannot overflow into a match.
     if (f.count < 1 + per_triangle ||
@@ -196,17 +187,12 @@ Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
                              header.line, ", got ", f.count));
     }
     std::array<uint32_t, 3> corners;
-    s = ReadCorners(f, 1, range, triangle, where, &corners);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadCorners(f, 1, range, triangle, where, &corners));
     ds.constraints.triangles.push_back(corners);
   }
-  if (s = NoMoreLines(&reader, ele_filename,
-                      Cat("the ", triangles, " triangles"));
-      !s.ok()) {
-    return s;
-  }
-  *out = std::move(ds);
-  return Status::OK();
+  RETURN_IF_ERROR(
+      NoMoreLines(&reader, ele_filename, Cat("the ", triangles, " triangles")));
+  return ds;
 }
 
 }  // namespace locator

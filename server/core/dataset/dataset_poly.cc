@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "server/core/dataset/dataset_text.h"
 
@@ -18,25 +19,25 @@ using dataset_text::ReadCount;
 using dataset_text::ReadRow;
 using dataset_text::Where;
 
-Status ParsePolyText(std::string_view text, std::string_view filename,
-                     Dataset* out, const DatasetLimits& limits) {
+StatusOr<Dataset> ParsePolyText(std::string_view text,
+                                std::string_view filename,
+                                const DatasetLimits& limits) {
   TextFieldReader reader(text);
   Dataset ds;
   NodeSection nodes;
-  Status s =
-      dataset_text::ParseNodeSection(&reader, filename, limits, &ds, &nodes);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(
+      dataset_text::ParseNodeSection(&reader, filename, limits, &ds, &nodes));
   const long long n = static_cast<long long>(ds.points.size());
 
   size_t segments = 0;
-  s = ReadCount(&reader, filename, 2, "segment header '<#segments> <#markers>'",
-                &segments);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadCount(&reader, filename, 2,
+                            "segment header '<#segments> <#markers>'",
+                            &segments));
   TextFields f;
   Where where;
   for (size_t k = 0; k < segments; ++k) {
-    s = ReadRow(&reader, filename, 3, Cat("segment ", k), &f, &where);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(
+        ReadRow(&reader, filename, 3, Cat("segment ", k), &f, &where));
     Polyline segment;
     for (size_t end = 1; end <= 2; ++end) {
       long long index;
@@ -56,18 +57,13 @@ Status ParsePolyText(std::string_view text, std::string_view filename,
   }
 
   size_t holes = 0;
-  s = ReadCount(&reader, filename, 1, "hole header '<#holes>'", &holes);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(
+      ReadCount(&reader, filename, 1, "hole header '<#holes>'", &holes));
   for (size_t k = 0; k < holes; ++k) {
-    s = ReadRow(&reader, filename, 3, Cat("hole ", k), &f, &where);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadRow(&reader, filename, 3, Cat("hole ", k), &f, &where));
     Point2 p;
-    if (s = ParseFinite(f.field[1], "coordinate", where, &p.x); !s.ok()) {
-      return s;
-    }
-    if (s = ParseFinite(f.field[2], "coordinate", where, &p.y); !s.ok()) {
-      return s;
-    }
+    RETURN_IF_ERROR(ParseFinite(f.field[1], "coordinate", where, &p.x));
+    RETURN_IF_ERROR(ParseFinite(f.field[2], "coordinate", where, &p.y));
     ds.constraints.hole_seeds.push_back(p);
   }
 
@@ -81,21 +77,15 @@ Status ParsePolyText(std::string_view text, std::string_view filename,
       return header.Error("expected regional attribute header '<#regions>'");
     }
     for (size_t k = 0; k < regions; ++k) {
-      s = ReadRow(&reader, filename, 4, Cat("region ", k), &f, &where);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(
+          ReadRow(&reader, filename, 4, Cat("region ", k), &f, &where));
       RegionalAttribute region;
-      if (s = ParseFinite(f.field[1], "coordinate", where, &region.seed.x);
-          !s.ok()) {
-        return s;
-      }
-      if (s = ParseFinite(f.field[2], "coordinate", where, &region.seed.y);
-          !s.ok()) {
-        return s;
-      }
-      if (s = ParseFinite(f.field[3], "attribute", where, &region.attribute);
-          !s.ok()) {
-        return s;
-      }
+      RETURN_IF_ERROR(
+          ParseFinite(f.field[1], "coordinate", where, &region.seed.x));
+      RETURN_IF_ERROR(
+          ParseFinite(f.field[2], "coordinate", where, &region.seed.y));
+      RETURN_IF_ERROR(
+          ParseFinite(f.field[3], "attribute", where, &region.attribute));
       ds.constraints.regions.push_back(region);
     }
     if (reader.Next(&rest)) {
@@ -103,8 +93,7 @@ Status ParsePolyText(std::string_view text, std::string_view filename,
           "unexpected line after the regional attributes");
     }
   }
-  *out = std::move(ds);
-  return Status::OK();
+  return ds;
 }
 
 }  // namespace locator

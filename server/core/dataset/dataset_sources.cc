@@ -40,20 +40,20 @@ std::vector<std::string_view> SplitOnColon(std::string_view s) {
 
 // Parses the text of the dataset file `path` by its extension; a .ele reads
 // its .node beside it.
-Status ParseDatasetFile(const std::string& path, std::string_view text,
-                        const DatasetLimits& limits, Dataset* ds) {
-  if (path.ends_with(".node")) return ParseNodeText(text, path, ds, limits);
-  if (path.ends_with(".poly")) return ParsePolyText(text, path, ds, limits);
-  if (path.ends_with(".off")) return ParseOffText(text, path, ds, limits);
+StatusOr<Dataset> ParseDatasetFile(const std::string& path,
+                                   std::string_view text,
+                                   const DatasetLimits& limits) {
+  if (path.ends_with(".node")) return ParseNodeText(text, path, limits);
+  if (path.ends_with(".poly")) return ParsePolyText(text, path, limits);
+  if (path.ends_with(".off")) return ParseOffText(text, path, limits);
   if (path.ends_with(".ele")) {
     const std::string node_path = DatasetCompanionFiles(path)[0];
     std::string node_text;
-    const Status read = ReadWholeFile(
-        node_path, Cat("node file of ", Quoted(path)), &node_text);
-    if (!read.ok()) return read;
-    return ParseEleText(text, path, node_text, node_path, ds, limits);
+    RETURN_IF_ERROR(ReadWholeFile(node_path, Cat("node file of ", Quoted(path)),
+                                  &node_text));
+    return ParseEleText(text, path, node_text, node_path, limits);
   }
-  return ParseXyzText(text, path, ds, limits);
+  return ParseXyzText(text, path, limits);
 }
 
 template <typename T>
@@ -76,7 +76,7 @@ std::vector<std::string> DatasetCompanionFiles(const std::string& path) {
   return {path.substr(0, path.size() - kEle.size()) + ".node"};
 }
 
-Status ParseGeneratorSpec(const std::string& spec, GeneratorSpec* out) {
+StatusOr<GeneratorSpec> ParseGeneratorSpec(const std::string& spec) {
   const std::vector<std::string_view> parts = SplitOnColon(spec);
   GeneratorSpec g;
   g.clusters = parts[0] == "clusters";
@@ -97,8 +97,7 @@ Status ParseGeneratorSpec(const std::string& spec, GeneratorSpec* out) {
   if (parts.size() == required + 1 && !ParseInteger(parts.back(), &g.seed)) {
     return BadSpec(spec, "SEED must be an unsigned 64-bit integer");
   }
-  *out = g;
-  return Status::OK();
+  return g;
 }
 
 std::string GeneratorSpec::CanonicalKey() const {
@@ -113,44 +112,34 @@ bool IsGeneratorSpec(std::string_view spec) {
   return spec.starts_with("uniform:") || spec.starts_with("clusters:");
 }
 
-Status LoadDataset(const std::string& spec, Dataset* out,
-                   const DatasetLimits& limits) {
+StatusOr<Dataset> LoadDataset(const std::string& spec,
+                              const DatasetLimits& limits) {
   Dataset ds;
-  Status status;
   std::string_view points_spec;
   std::string_view wkt_path;
   if (SplitWktConstraintsSpec(spec, &points_spec, &wkt_path)) {
-    status = LoadDataset(std::string(points_spec), &ds, limits);
+    ASSIGN_OR_RETURN(ds, LoadDataset(std::string(points_spec), limits));
     std::string text;
-    if (status.ok()) {
-      status = ReadWholeFile(std::string(wkt_path), "constraints", &text);
-    }
-    DatasetConstraints wkt;
-    if (status.ok()) status = ParseWktConstraints(text, wkt_path, &wkt);
-    if (status.ok()) AppendConstraints(std::move(wkt), &ds.constraints);
+    RETURN_IF_ERROR(ReadWholeFile(std::string(wkt_path), "constraints", &text));
+    ASSIGN_OR_RETURN(DatasetConstraints wkt,
+                     ParseWktConstraints(text, wkt_path));
+    AppendConstraints(std::move(wkt), &ds.constraints);
   } else if (IsGeneratorSpec(spec)) {
-    GeneratorSpec g;
-    status = ParseGeneratorSpec(spec, &g);
-    if (status.ok() && g.n > limits.max_points) {
-      status = TooManyPoints(spec, limits.max_points);
-    }
-    if (status.ok()) {
-      ds = g.clusters ? GenerateClusters(g.n, g.k, g.seed)
-                      : GenerateUniform(g.n, g.seed);
-    }
+    ASSIGN_OR_RETURN(const GeneratorSpec g, ParseGeneratorSpec(spec));
+    if (g.n > limits.max_points) return TooManyPoints(spec, limits.max_points);
+    ds = g.clusters ? GenerateClusters(g.n, g.k, g.seed)
+                    : GenerateUniform(g.n, g.seed);
   } else {
     std::string text;
-    status = ReadWholeFile(spec, "dataset", &text);
-    if (status.ok()) status = ParseDatasetFile(spec, text, limits, &ds);
+    RETURN_IF_ERROR(ReadWholeFile(spec, "dataset", &text));
+    ASSIGN_OR_RETURN(ds, ParseDatasetFile(spec, text, limits));
   }
-  if (!status.ok()) return status;
   ds.source = spec;
-  *out = std::move(ds);
-  return Status::OK();
+  return ds;
 }
 
-Status ParseXyzText(std::string_view text, std::string_view filename,
-                    Dataset* out, const DatasetLimits& limits) {
+StatusOr<Dataset> ParseXyzText(std::string_view text, std::string_view filename,
+                               const DatasetLimits& limits) {
   const size_t estimate = ReserveEstimate(text, limits.max_points);
   Dataset ds;
   ds.points.reserve(estimate);
@@ -184,8 +173,7 @@ Status ParseXyzText(std::string_view text, std::string_view filename,
     RETURN_IF_ERROR(ParsePoint(f, 0, columns == 3, where, &ds));
   }
   if (ds.points.empty()) return EmptyDataset(filename);
-  *out = std::move(ds);
-  return Status::OK();
+  return ds;
 }
 
 namespace dataset_text {
@@ -292,21 +280,20 @@ Status ParseNodeSection(TextFieldReader* reader, std::string_view filename,
 
 }  // namespace dataset_text
 
-Status ParseNodeText(std::string_view text, std::string_view filename,
-                     Dataset* out, const DatasetLimits& limits) {
+StatusOr<Dataset> ParseNodeText(std::string_view text,
+                                std::string_view filename,
+                                const DatasetLimits& limits) {
   TextFieldReader reader(text);
   Dataset ds;
   NodeSection section;
-  Status s = ParseNodeSection(&reader, filename, limits, &ds, &section);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ParseNodeSection(&reader, filename, limits, &ds, &section));
   TextFields f;
   if (reader.Next(&f)) {
     return Where{filename, reader.line_number()}.Error(
         Cat("more than the ", ds.points.size(), " points declared on line ",
             section.header_line));
   }
-  *out = std::move(ds);
-  return Status::OK();
+  return ds;
 }
 
 }  // namespace locator

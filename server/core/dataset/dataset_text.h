@@ -15,6 +15,7 @@
 #include <system_error>
 #include <type_traits>
 
+#include "common/status_macros.h"
 #include "common/text_fields.h"
 #include "locator/dataset_sources.h"
 #include "locator/status.h"
@@ -83,9 +84,8 @@ inline Status ParsePoint(const TextFields& f, size_t first, bool with_value,
   std::array<double, 3> v;
   const size_t n = with_value ? 3 : 2;
   for (size_t i = 0; i < n; ++i) {
-    Status s = ParseFinite(f.field[first + i], i < 2 ? "coordinate" : "value",
-                           where, &v[i]);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ParseFinite(f.field[first + i],
+                                i < 2 ? "coordinate" : "value", where, &v[i]));
   }
   ds->points.push_back({v[0], v[1]});
   if (with_value) ds->values.push_back(v[2]);

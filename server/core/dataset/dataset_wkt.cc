@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "server/core/dataset/dataset_text.h"
 
@@ -111,8 +112,7 @@ class WktReader {
       return Status::InvalidArgument(Cat(filename_, ": no geometries"));
     }
     while (tokens_.Peek().kind != TokenKind::kEnd) {
-      Status s = ReadGeometry();
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(ReadGeometry());
       if (tokens_.Peek().kind == TokenKind::kSemicolon) tokens_.Take();
     }
     return Status::OK();
@@ -205,9 +205,8 @@ class WktReader {
 
   // '(' x y [z] {',' x y [z]} ')'.
   Status ReadCoordinates(const Token& owner, Coordinates* c) {
-    Status s =
-        Expect(TokenKind::kOpen, Cat("'(' of ", owner.word, "'s points"));
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(
+        Expect(TokenKind::kOpen, Cat("'(' of ", owner.word, "'s points")));
     do {
       if (!c->points.empty()) tokens_.Take();  // the ','
       double v[3];
@@ -241,8 +240,7 @@ class WktReader {
   Status ReadLineString(const Token& tag) {
     const Token start = tokens_.Peek();
     Coordinates c;
-    Status s = ReadCoordinates(tag, &c);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadCoordinates(tag, &c));
     if (c.points.size() < 2) {
       return Error(tag, "a LINESTRING needs at least 2 points");
     }
@@ -330,13 +328,11 @@ class WktReader {
 
 }  // namespace
 
-Status ParseWktConstraints(std::string_view text, std::string_view filename,
-                           DatasetConstraints* out) {
+StatusOr<DatasetConstraints> ParseWktConstraints(std::string_view text,
+                                                 std::string_view filename) {
   DatasetConstraints constraints;
-  Status s = WktReader(text, filename, &constraints).ReadAll();
-  if (!s.ok()) return s;
-  *out = std::move(constraints);
-  return Status::OK();
+  RETURN_IF_ERROR(WktReader(text, filename, &constraints).ReadAll());
+  return constraints;
 }
 
 bool SplitWktConstraintsSpec(std::string_view spec, std::string_view* points,

@@ -32,12 +32,9 @@ std::string MeshFilePath(const std::string& dir, uint64_t fingerprint) {
 }
 
 StatusOr<BuiltMesh> TriangulateMesh(const Dataset& dataset, unsigned threads) {
-  BuiltMesh built;
   // A mesh served as given needs no constraint hierarchy.
-  if (IsGivenMesh(dataset)) {
-    RETURN_IF_ERROR(BuildGivenMesh(dataset, &built));
-    return built;
-  }
+  if (IsGivenMesh(dataset)) return BuildGivenMesh(dataset);
+  BuiltMesh built;
   if (dataset.constraints.empty()) {
     TiledBuildOptions options;
     options.threads = threads;
@@ -48,8 +45,8 @@ StatusOr<BuiltMesh> TriangulateMesh(const Dataset& dataset, unsigned threads) {
     RETURN_IF_ERROR(s);
     return built;
   }
-  std::unique_ptr<Triangulation> t;
-  RETURN_IF_ERROR(Triangulation::Build(dataset, &t));
+  ASSIGN_OR_RETURN(std::unique_ptr<Triangulation> t,
+                   Triangulation::Build(dataset));
   built.mesh = t->shared_mesh();
   built.facts.constraints = t->num_constraints();
   built.facts.holes = t->num_holes();

@@ -1,5 +1,6 @@
 #include "server/core/strategies/locator_factory.h"
 
+#include "common/status_macros.h"
 #include "server/core/strategies/adaptive_paper_locator.h"
 #include "server/core/strategies/jump_and_walk_locator.h"
 #include "server/core/strategies/self_tuning_locator.h"
@@ -7,22 +8,18 @@
 
 namespace locator {
 
-Status MakePointLocator(std::string_view name, const ServingMesh& mesh,
-                        const TuningOptions& options,
-                        std::unique_ptr<PointLocator>* out) {
-  Status s = ValidateStrategy(name);
-  if (s.ok()) s = ValidateTuningOptions(options);
-  if (!s.ok()) return s;
-  if (name == "walk") {
-    *out = std::make_unique<WalkLocator>(mesh);
-  } else if (name == "jump-and-walk") {
-    *out = std::make_unique<JumpAndWalkLocator>(mesh);
-  } else if (name == "adaptive-paper") {
-    *out = std::make_unique<AdaptivePaperLocator>(mesh, options);
-  } else {
-    *out = std::make_unique<SelfTuningLocator>(mesh, options);
+StatusOr<std::unique_ptr<PointLocator>> MakePointLocator(
+    std::string_view name, const ServingMesh& mesh,
+    const TuningOptions& options) {
+  RETURN_IF_ERROR(ValidateStrategy(name));
+  RETURN_IF_ERROR(ValidateTuningOptions(options));
+  if (name == "walk") return std::make_unique<WalkLocator>(mesh);
+  if (name == "jump-and-walk")
+    return std::make_unique<JumpAndWalkLocator>(mesh);
+  if (name == "adaptive-paper") {
+    return std::make_unique<AdaptivePaperLocator>(mesh, options);
   }
-  return Status::OK();
+  return std::make_unique<SelfTuningLocator>(mesh, options);
 }
 
 }  // namespace locator

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "locator/tuning_options.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/strategies/point_locator.h"
@@ -18,9 +19,9 @@ namespace locator {
 // Builds the strategy `name` (see StrategyNames()) over `mesh`, which must
 // outlive it. InvalidArgument naming the valid strategies for an unknown
 // name, or for tuning options out of range.
-Status MakePointLocator(std::string_view name, const ServingMesh& mesh,
-                        const TuningOptions& options,
-                        std::unique_ptr<PointLocator>* out);
+StatusOr<std::unique_ptr<PointLocator>> MakePointLocator(
+    std::string_view name, const ServingMesh& mesh,
+    const TuningOptions& options);
 
 }  // namespace locator
 

@@ -18,22 +18,24 @@ TEST(CrsInfoTest, UtmZone33NorthAndWgs84) {
   } kCases[] = {{"EPSG:32633", "WGS 84 / UTM zone 33N", 32633, "metre"},
                 {"EPSG:4326", "WGS 84", 4326, "degree"}};
   for (const auto& c : kCases) {
-    CrsInfo info;
-    ASSERT_TRUE(DescribeCrs(c.crs, &info).ok()) << c.crs;
-    EXPECT_EQ(info.name, c.name);
-    EXPECT_EQ(info.epsg_code, c.epsg_code);
-    EXPECT_THAT(info.axis_units, ElementsAre(c.unit, c.unit)) << c.crs;
+    const StatusOr<CrsInfo> info = DescribeCrs(c.crs);
+    ASSERT_TRUE(info.ok()) << c.crs;
+    EXPECT_EQ(info->name, c.name);
+    EXPECT_EQ(info->epsg_code, c.epsg_code);
+    EXPECT_THAT(info->axis_units, ElementsAre(c.unit, c.unit)) << c.crs;
   }
 }
 
 TEST(CrsInfoTest, ProjStringAndUsFeet) {
-  CrsInfo info;
-  ASSERT_TRUE(DescribeCrs("+proj=utm +zone=33 +datum=WGS84", &info).ok());
-  EXPECT_THAT(info.axis_units, ElementsAre("metre", "metre"));
+  StatusOr<CrsInfo> info = DescribeCrs("+proj=utm +zone=33 +datum=WGS84");
+  ASSERT_TRUE(info.ok());
+  EXPECT_THAT(info->axis_units, ElementsAre("metre", "metre"));
   // NAD83 / Texas South Central (ftUS).
-  ASSERT_TRUE(DescribeCrs("EPSG:2278", &info).ok());
-  EXPECT_EQ(info.epsg_code, 2278);
-  EXPECT_THAT(info.axis_units, ElementsAre("US survey foot", "US survey foot"));
+  info = DescribeCrs("EPSG:2278");
+  ASSERT_TRUE(info.ok());
+  EXPECT_EQ(info->epsg_code, 2278);
+  EXPECT_THAT(info->axis_units,
+              ElementsAre("US survey foot", "US survey foot"));
 }
 
 TEST(CrsInfoTest, WktWithoutAnIdIsIdentified) {
@@ -46,24 +48,22 @@ TEST(CrsInfoTest, WktWithoutAnIdIsIdentified) {
       R"(PARAMETER["scale_factor",0.9996],PARAMETER["false_easting",500000],)"
       R"(PARAMETER["false_northing",0],UNIT["metre",1],AXIS["Easting",EAST],)"
       R"(AXIS["Northing",NORTH]])";
-  CrsInfo info;
-  ASSERT_TRUE(DescribeCrs(kWkt, &info).ok());
-  EXPECT_EQ(info.name, "WGS 84 / UTM zone 33N");
-  EXPECT_EQ(info.epsg_code, 32633);
+  const StatusOr<CrsInfo> info = DescribeCrs(kWkt);
+  ASSERT_TRUE(info.ok()) << info.status().ToString();
+  EXPECT_EQ(info->name, "WGS 84 / UTM zone 33N");
+  EXPECT_EQ(info->epsg_code, 32633);
 }
 
 TEST(CrsInfoTest, UnknownCrsIsInvalidArgumentNamingIt) {
   for (const char* crs : {"EPSG:999999", "not a crs", "", "+proj=nope"}) {
-    CrsInfo info;
-    const Status status = DescribeCrs(crs, &info);
+    const Status status = DescribeCrs(crs).status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << crs;
     EXPECT_THAT(status.message(),
                 HasSubstr("unknown CRS '" + std::string(crs) + "'"));
   }
   // A coordinate operation (the UTM zone 33N conversion) is not a CRS.
-  CrsInfo info;
   const Status status =
-      DescribeCrs("urn:ogc:def:coordinateOperation:EPSG::16033", &info);
+      DescribeCrs("urn:ogc:def:coordinateOperation:EPSG::16033").status();
   EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
   EXPECT_THAT(status.message(), HasSubstr("not a coordinate reference system"));
 }

@@ -39,9 +39,10 @@ TEST(CrsTransformerTest, MatchesCs2csToAMicrometre) {
       CS2CS_PATH, {"-f", "%.9f", "EPSG:4326", "EPSG:32633", input_path});
 
   std::vector<Point2> projected = lon_lat;
-  std::unique_ptr<CrsTransformer> transformer;
-  ASSERT_TRUE(
-      CrsTransformer::Create("EPSG:4326", "EPSG:32633", &transformer).ok());
+  StatusOr<std::unique_ptr<CrsTransformer>> created =
+      CrsTransformer::Create("EPSG:4326", "EPSG:32633");
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<CrsTransformer> transformer = *std::move(created);
   ASSERT_TRUE(transformer->ToDataset(projected).ok());
   std::istringstream lines(output);
   for (const Point2& p : projected) {
@@ -53,17 +54,19 @@ TEST(CrsTransformerTest, MatchesCs2csToAMicrometre) {
 }
 
 TEST(CrsTransformerTest, RoundTripsAndAgreesWithTheInverse) {
-  std::unique_ptr<CrsTransformer> forward, backward;
-  ASSERT_TRUE(CrsTransformer::Create("EPSG:4326", "EPSG:32633", &forward).ok());
-  ASSERT_TRUE(
-      CrsTransformer::Create("EPSG:32633", "EPSG:4326", &backward).ok());
+  const StatusOr<std::unique_ptr<CrsTransformer>> forward =
+      CrsTransformer::Create("EPSG:4326", "EPSG:32633");
+  ASSERT_TRUE(forward.ok());
+  const StatusOr<std::unique_ptr<CrsTransformer>> backward =
+      CrsTransformer::Create("EPSG:32633", "EPSG:4326");
+  ASSERT_TRUE(backward.ok());
   const std::vector<Point2> original = LonLatPoints();
   std::vector<Point2> utm = original;
-  ASSERT_TRUE(forward->ToDataset(utm).ok());
+  ASSERT_TRUE((*forward)->ToDataset(utm).ok());
   std::vector<Point2> via_inverse = utm;
-  ASSERT_TRUE(forward->ToRequest(via_inverse).ok());
+  ASSERT_TRUE((*forward)->ToRequest(via_inverse).ok());
   std::vector<Point2> via_backward = utm;
-  ASSERT_TRUE(backward->ToDataset(via_backward).ok());
+  ASSERT_TRUE((*backward)->ToDataset(via_backward).ok());
   for (size_t i = 0; i < original.size(); ++i) {
     EXPECT_GT(utm[i].x, 100000);  // x is the easting, not the latitude
     EXPECT_NEAR(via_inverse[i].x, original[i].x, 1e-10);
@@ -74,9 +77,10 @@ TEST(CrsTransformerTest, RoundTripsAndAgreesWithTheInverse) {
 }
 
 TEST(CrsTransformerTest, PointOutsideTheAreaOfUseIsNamedByIndex) {
-  std::unique_ptr<CrsTransformer> transformer;
-  ASSERT_TRUE(
-      CrsTransformer::Create("EPSG:4326", "EPSG:32633", &transformer).ok());
+  StatusOr<std::unique_ptr<CrsTransformer>> created =
+      CrsTransformer::Create("EPSG:4326", "EPSG:32633");
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<CrsTransformer> transformer = *std::move(created);
   std::vector<Point2> points = {{15, 45}, {16, 50}, {40, 10}};
   const Status status = transformer->ToDataset(points);
   EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
@@ -99,9 +103,7 @@ TEST(CrsTransformerTest, PointOutsideTheAreaOfUseIsNamedByIndex) {
 }
 
 TEST(CrsTransformerTest, UnknownCrsIsInvalidArgument) {
-  std::unique_ptr<CrsTransformer> transformer;
-  Status status =
-      CrsTransformer::Create("EPSG:999999", "EPSG:32633", &transformer);
+  Status status = CrsTransformer::Create("EPSG:999999", "EPSG:32633").status();
   EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
   EXPECT_THAT(status.message(), HasSubstr("unknown CRS 'EPSG:999999'"));
   CrsTransformer* cached = nullptr;

@@ -102,10 +102,14 @@ TEST_F(LasDatasetTest, ClassAndReturnFiltersKeepWhatTheyName) {
     const std::string bytes =
         testing::LasBytes(Tile(), Options(format == 6 ? 4 : 2, format));
     const auto kept = [&](const std::string& spec) {
-      LasDatasetSpec parsed;
-      EXPECT_TRUE(ParseLasDatasetSpec("t.las?" + spec, &parsed).ok()) << spec;
+      const StatusOr<LasDatasetSpec> parsed =
+          ParseLasDatasetSpec("t.las?" + spec);
+      EXPECT_TRUE(parsed.ok()) << spec;
       Dataset ds;
-      EXPECT_TRUE(LoadBytes(bytes, &ds, parsed.filter).ok()) << spec;
+      EXPECT_TRUE(
+          LoadBytes(bytes, &ds, parsed.ok() ? parsed->filter : LasFilter())
+              .ok())
+          << spec;
       std::vector<double> z = ds.values;
       return z;
     };
@@ -132,9 +136,9 @@ TEST_F(LasDatasetTest, ExtraBytesPerRecordAreSkipped) {
 
 TEST_F(LasDatasetTest, TheCrsComesFromTheWktRecordOrTheGeoTiffKeys) {
   const auto epsg = [](const Dataset& ds) {
-    CrsInfo info;
-    EXPECT_TRUE(DescribeCrs(ds.crs, &info).ok()) << ds.crs;
-    return info.epsg_code;
+    const StatusOr<CrsInfo> info = DescribeCrs(ds.crs);
+    EXPECT_TRUE(info.ok()) << ds.crs;
+    return info.ok() ? info->epsg_code : 0;
   };
   LasFileOptions wkt = Options(4, 6);
   wkt.wkt = testing::EpsgWkt2(32633);
@@ -431,9 +435,10 @@ TEST(LasDatasetSpecTest, ParsesItsOptionsAndNamesBadOnes) {
   EXPECT_TRUE(IsLasDatasetSpec("TILE.LAZ?classes=2"));
   EXPECT_TRUE(IsLasDatasetSpec("las:cloud.bin"));
   EXPECT_FALSE(IsLasDatasetSpec("tile.csv"));
-  LasDatasetSpec spec;
-  ASSERT_TRUE(
-      ParseLasDatasetSpec("a.las?classes=2,9&returns=last", &spec).ok());
+  const StatusOr<LasDatasetSpec> parsed =
+      ParseLasDatasetSpec("a.las?classes=2,9&returns=last");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const LasDatasetSpec& spec = *parsed;
   EXPECT_EQ(spec.path, "a.las");
   EXPECT_TRUE(spec.filter.classes.test(2));
   EXPECT_TRUE(spec.filter.classes.test(9));
@@ -456,7 +461,7 @@ TEST(LasDatasetSpecTest, ParsesItsOptionsAndNamesBadOnes) {
       {"las:?classes=2", "no path before the options"},
   };
   for (const auto& c : kBad) {
-    const Status status = ParseLasDatasetSpec(c.spec, &spec);
+    const Status status = ParseLasDatasetSpec(c.spec).status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << c.spec;
     EXPECT_THAT(status.message(), HasSubstr(c.message)) << c.spec;
     EXPECT_THAT(status.message(), HasSubstr(c.spec)) << c.spec;

@@ -24,15 +24,13 @@ TEST(OgrDatasetSpecTest, RecognizesOgrExtensionsAndThePrefix) {
 }
 
 TEST(OgrDatasetSpecTest, ParsesEveryOption) {
-  OgrDatasetSpec spec;
-  ASSERT_TRUE(
-      ParseOgrDatasetSpec(
-          "ogr:a.csv?layer=pts&z=h&where=h%20%3E%2010%20AND%20k%3D'a%26b'"
-          "&breaklines=lines&domain=area&a_srs=EPSG:32633"
-          "&oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y&driver=ESRI%"
-          "20Shapefile",
-          &spec)
-          .ok());
+  const StatusOr<OgrDatasetSpec> parsed = ParseOgrDatasetSpec(
+      "ogr:a.csv?layer=pts&z=h&where=h%20%3E%2010%20AND%20k%3D'a%26b'"
+      "&breaklines=lines&domain=area&a_srs=EPSG:32633"
+      "&oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y&driver=ESRI%"
+      "20Shapefile");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const OgrDatasetSpec& spec = *parsed;
   EXPECT_EQ(spec.source, "a.csv");
   EXPECT_EQ(spec.layer, "pts");
   EXPECT_EQ(spec.z_field, "h");
@@ -46,8 +44,9 @@ TEST(OgrDatasetSpecTest, ParsesEveryOption) {
 }
 
 TEST(OgrDatasetSpecTest, APathWithoutOptionsIsJustTheSource) {
-  OgrDatasetSpec spec;
-  ASSERT_TRUE(ParseOgrDatasetSpec("dir/dem.gpkg", &spec).ok());
+  const StatusOr<OgrDatasetSpec> parsed = ParseOgrDatasetSpec("dir/dem.gpkg");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const OgrDatasetSpec& spec = *parsed;
   EXPECT_EQ(spec.source, "dir/dem.gpkg");
   EXPECT_TRUE(spec.layer.empty());
   EXPECT_TRUE(spec.open_options.empty());
@@ -68,8 +67,7 @@ TEST(OgrDatasetSpecTest, RejectsMalformedOptionsNamingThem) {
       {"ogr:?layer=a", "no source before the options"},
   };
   for (const auto& c : kCases) {
-    OgrDatasetSpec spec;
-    const Status status = ParseOgrDatasetSpec(c.spec, &spec);
+    const Status status = ParseOgrDatasetSpec(c.spec).status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << c.spec;
     EXPECT_THAT(status.message(), HasSubstr(c.message)) << c.spec;
     EXPECT_THAT(status.message(), HasSubstr(c.spec)) << c.spec;
@@ -97,8 +95,7 @@ TEST(OgrDatasetSpecTest, QuotesWhatItNamesShort) {
       {"a.gpkg?lay\ner=1", "unknown option 'lay\\x0aer'"},
   };
   for (const auto& c : kCases) {
-    OgrDatasetSpec spec;
-    const Status status = ParseOgrDatasetSpec(c.spec, &spec);
+    const Status status = ParseOgrDatasetSpec(c.spec).status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument);
     EXPECT_THAT(status.message(), HasSubstr(c.message));
     EXPECT_LT(status.message().size(), 400u);

@@ -52,9 +52,9 @@ std::vector<Triple> Expected(bool with_values) {
 }
 
 int EpsgOf(const Dataset& d) {
-  CrsInfo info;
-  EXPECT_TRUE(DescribeCrs(d.crs, &info).ok()) << d.crs;
-  return info.epsg_code;
+  const StatusOr<CrsInfo> info = DescribeCrs(d.crs);
+  EXPECT_TRUE(info.ok()) << d.crs;
+  return info.ok() ? info->epsg_code : 0;
 }
 
 class OgrDatasetTest : public ::testing::Test {

@@ -73,9 +73,9 @@ TEST_F(RasterGridTest, SamplesSitAtPixelCentresWithTheirValues) {
   EXPECT_EQ(grid.SampleAt(2, 1).y, 1992.5);
   EXPECT_THAT(grid.values, ::testing::ElementsAre(1, 2, 3, 4, 5, 6));
   EXPECT_EQ(grid.source, path);
-  CrsInfo crs;
-  ASSERT_TRUE(DescribeCrs(grid.crs, &crs).ok());
-  EXPECT_EQ(crs.epsg_code, 32633);
+  const StatusOr<CrsInfo> crs = DescribeCrs(grid.crs);
+  ASSERT_TRUE(crs.ok()) << crs.status().ToString();
+  EXPECT_EQ(crs->epsg_code, 32633);
   EXPECT_THAT(files, Contains(path));
 }
 
@@ -149,9 +149,9 @@ TEST_F(RasterGridTest, ReadsTheBandItIsAskedForAndAssignsACrs) {
                                 DatasetLimits(), &grid)
                   .ok());
   EXPECT_EQ(grid.ValueAt(0, 0), 1001);
-  CrsInfo crs;
-  ASSERT_TRUE(DescribeCrs(grid.crs, &crs).ok());
-  EXPECT_EQ(crs.epsg_code, 4326);
+  const StatusOr<CrsInfo> crs = DescribeCrs(grid.crs);
+  ASSERT_TRUE(crs.ok()) << crs.status().ToString();
+  EXPECT_EQ(crs->epsg_code, 4326);
 }
 
 TEST_F(RasterGridTest, ReadsARasterLargerThanOneStrip) {

@@ -45,15 +45,13 @@ TEST(RequestCrsPolicyTest, HostileCrssAreRefusedNamingTheFile) {
   const std::string outside = testing::CopyOfBeta2007Grid(dir.path());
   for (const testing::HostileCrs& row :
        testing::HostileCrss(fifo.path(), outside, kMaxRequestCrsBytes + 1)) {
-    PjPtr crs;
-    Status status = CreateRequestCrs(row.crs, &crs);
+    Status status = CreateRequestCrs(row.crs).status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument)
         << row.what << ": " << status.ToString();
     EXPECT_THAT(status.message(), HasSubstr(row.file)) << row.what;
     status = CheckRequestCrs(row.crs);
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << row.what;
-    std::unique_ptr<CrsTransformer> transformer;
-    status = CrsTransformer::Create(row.crs, "EPSG:32633", &transformer);
+    status = CrsTransformer::Create(row.crs, "EPSG:32633").status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << row.what;
     CrsTransformer* cached = nullptr;
     status = CrsTransformer::ForThread(row.crs, "EPSG:32633", &cached);
@@ -73,16 +71,16 @@ TEST(RequestCrsPolicyTest, TheLengthLimitIsNamed) {
 
 TEST(RequestCrsPolicyTest, GridsInProjsDataDirectoriesAreUsed) {
   const std::string request = BesselWithGrid("BETA2007.gsb");
-  PjPtr crs;
-  ASSERT_TRUE(CreateRequestCrs(request, &crs).ok());
-  std::unique_ptr<CrsTransformer> with_grid, without_grid;
-  ASSERT_TRUE(CrsTransformer::Create(request, "EPSG:25832", &with_grid).ok());
-  ASSERT_TRUE(CrsTransformer::Create("+proj=longlat +ellps=bessel",
-                                     "EPSG:25832", &without_grid)
-                  .ok());
+  ASSERT_TRUE(CreateRequestCrs(request).ok());
+  const StatusOr<std::unique_ptr<CrsTransformer>> with_grid =
+      CrsTransformer::Create(request, "EPSG:25832");
+  ASSERT_TRUE(with_grid.ok());
+  const StatusOr<std::unique_ptr<CrsTransformer>> without_grid =
+      CrsTransformer::Create("+proj=longlat +ellps=bessel", "EPSG:25832");
+  ASSERT_TRUE(without_grid.ok());
   std::vector<Point2> shifted = GermanPoints(), unshifted = GermanPoints();
-  ASSERT_TRUE(with_grid->ToDataset(shifted).ok());
-  ASSERT_TRUE(without_grid->ToDataset(unshifted).ok());
+  ASSERT_TRUE((*with_grid)->ToDataset(shifted).ok());
+  ASSERT_TRUE((*without_grid)->ToDataset(unshifted).ok());
   // PROJ itself, in its default context, without the guard.
   PjPtr plain(
       proj_create_crs_to_crs(nullptr, request.c_str(), "EPSG:25832", nullptr));
@@ -108,17 +106,16 @@ TEST(RequestCrsPolicyTest, GridsInProjsDataDirectoriesAreUsed) {
 TEST(RequestCrsPolicyTest, GridsTheDatasetCrsNamesAreUsed) {
   test::ScratchDir dir;
   const std::string copy = testing::CopyOfBeta2007Grid(dir.path());
-  std::unique_ptr<CrsTransformer> to_copy, to_original;
-  const Status status =
-      CrsTransformer::Create("EPSG:4258", BesselWithGrid(copy), &to_copy);
-  ASSERT_TRUE(status.ok()) << status.ToString();
-  ASSERT_TRUE(CrsTransformer::Create(
-                  "EPSG:4258", BesselWithGrid("BETA2007.gsb"), &to_original)
-                  .ok());
+  const StatusOr<std::unique_ptr<CrsTransformer>> to_copy =
+      CrsTransformer::Create("EPSG:4258", BesselWithGrid(copy));
+  ASSERT_TRUE(to_copy.ok()) << to_copy.status().ToString();
+  const StatusOr<std::unique_ptr<CrsTransformer>> to_original =
+      CrsTransformer::Create("EPSG:4258", BesselWithGrid("BETA2007.gsb"));
+  ASSERT_TRUE(to_original.ok());
   std::vector<Point2> through_copy = GermanPoints();
   std::vector<Point2> through_original = GermanPoints();
-  ASSERT_TRUE(to_copy->ToDataset(through_copy).ok());
-  ASSERT_TRUE(to_original->ToDataset(through_original).ok());
+  ASSERT_TRUE((*to_copy)->ToDataset(through_copy).ok());
+  ASSERT_TRUE((*to_original)->ToDataset(through_original).ok());
   for (size_t i = 0; i < through_copy.size(); ++i) {
     EXPECT_EQ(through_copy[i].x, through_original[i].x) << i;
     EXPECT_EQ(through_copy[i].y, through_original[i].y) << i;
@@ -131,8 +128,7 @@ TEST(RequestCrsPolicyTest, OperatorCrssNeverOpenADeviceOrAFifo) {
   test::ScratchDir dir;
   const testing::FifoWatch fifo(dir.path() + "/init.fifo");
   for (const std::string& init : {fifo.path(), std::string("/dev/ptmx")}) {
-    CrsInfo info;
-    const Status status = DescribeCrs("+init=" + init + ":crs", &info);
+    const Status status = DescribeCrs("+init=" + init + ":crs").status();
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << init;
     EXPECT_THAT(status.message(),
                 HasSubstr("'" + init + "' (not a regular file)"));

@@ -18,11 +18,9 @@ namespace {
 using ::testing::HasSubstr;
 
 Status CheckSpec(const std::string& text) {
-  OgrDatasetSpec spec;
-  if (Status status = ParseOgrDatasetSpec(text, &spec); !status.ok()) {
-    return status;
-  }
-  return CheckUntrustedOgrOptions(spec);
+  const StatusOr<OgrDatasetSpec> spec = ParseOgrDatasetSpec(text);
+  if (!spec.ok()) return spec.status();
+  return CheckUntrustedOgrOptions(*spec);
 }
 
 TEST(UntrustedOgrSpecTest, HarmlessOptionsPass) {

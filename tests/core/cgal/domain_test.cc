@@ -63,15 +63,13 @@ Dataset AnisotropicMesh(int k, uint64_t seed) {
 }
 
 std::unique_ptr<Triangulation> BuildOk(const Dataset& d) {
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(d, &t);
-  EXPECT_TRUE(s.ok()) << s.ToString();
-  return t;
+  StatusOr<std::unique_ptr<Triangulation>> t = Triangulation::Build(d);
+  EXPECT_TRUE(t.ok()) << t.status().ToString();
+  return t.ok() ? *std::move(t) : nullptr;
 }
 
 std::string BuildError(const Dataset& d) {
-  std::unique_ptr<Triangulation> t;
-  const Status s = Triangulation::Build(d, &t);
+  const Status s = Triangulation::Build(d).status();
   EXPECT_FALSE(s.ok());
   return s.message();
 }
@@ -100,9 +98,10 @@ void ExpectEveryStrategyAgrees(const Triangulation& t) {
     TuningOptions options;
     options.warmup_queries = 500;
     options.retune_every = 500;
-    std::unique_ptr<PointLocator> locator;
-    ASSERT_TRUE(MakePointLocator(name, t.mesh(), options, &locator).ok());
-    test::ExpectAllAgree(*locator, t, queries);
+    const StatusOr<std::unique_ptr<PointLocator>> locator =
+        MakePointLocator(name, t.mesh(), options);
+    ASSERT_TRUE(locator.ok());
+    test::ExpectAllAgree(**locator, t, queries);
   }
 }
 
@@ -184,16 +183,15 @@ TEST(DomainTest, PolySegmentsWithHolePoint) {
 }
 
 TEST(DomainTest, PolyFileHoleNeverAnswersAValue) {
-  Dataset d;
-  const Status s = ParsePolyText(
+  const StatusOr<Dataset> d = ParsePolyText(
       "8 2 1 0\n"
       "0 0 0 10\n1 4 0 10\n2 4 4 10\n3 0 4 10\n"
       "4 1 1 20\n5 3 1 20\n6 3 3 20\n7 1 3 20\n"
       "8 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 4 5\n5 5 6\n6 6 7\n7 7 4\n"
       "1\n0 2 2\n",
-      "terrain.poly", &d);
-  ASSERT_TRUE(s.ok()) << s.ToString();
-  const auto t = BuildOk(d);
+      "terrain.poly");
+  ASSERT_TRUE(d.ok()) << d.status().ToString();
+  const auto t = BuildOk(*d);
   ASSERT_TRUE(t);
   EXPECT_EQ(t->num_holes(), 1u);
   EXPECT_EQ(t->num_triangles(), 8u);  // the ring between the squares

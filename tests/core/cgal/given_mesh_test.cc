@@ -68,9 +68,9 @@ TEST(GivenMeshTest, IsTheMeshTriangulationServes) {
     SCOPED_TRACE(seed);
     const Dataset d = HoledMesh(3000, seed);
     ASSERT_TRUE(IsGivenMesh(d));
-    BuiltMesh given;
-    const Status s = BuildGivenMesh(d, &given);
-    ASSERT_TRUE(s.ok()) << s.ToString();
+    const StatusOr<BuiltMesh> built = BuildGivenMesh(d);
+    ASSERT_TRUE(built.ok()) << built.status().ToString();
+    const BuiltMesh& given = *built;
     std::unique_ptr<Triangulation> t = test::BuildTriangulation(d);
     ASSERT_NE(t, nullptr);
     const ServingMesh& a = *given.mesh;
@@ -103,8 +103,10 @@ TEST(GivenMeshTest, EngineAnswersAsCgalLocate) {
   const Dataset d = HoledMesh(2000, 4);
   std::unique_ptr<Triangulation> t = test::BuildTriangulation(d);
   ASSERT_NE(t, nullptr);
-  std::unique_ptr<Engine> engine;
-  ASSERT_TRUE(Engine::Create(d, EngineOptions(), &engine).ok());
+  StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(d, EngineOptions());
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<Engine> engine = *std::move(created);
   std::vector<Point2> queries =
       test::UniformQueries(t->bounding_box().Inflated(0.2), 20000, 8);
   for (size_t i = 0; i < 500; ++i) queries.push_back(d.points[i]);
@@ -129,12 +131,10 @@ Dataset Fan(std::vector<std::array<uint32_t, 3>> triangles,
 }
 
 std::string Refusal(const Dataset& d) {
-  BuiltMesh built;
-  const Status s = BuildGivenMesh(d, &built);
+  const Status s = BuildGivenMesh(d).status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument);
   // Triangulation::Build refuses it too.
-  std::unique_ptr<Triangulation> t;
-  EXPECT_FALSE(Triangulation::Build(d, &t).ok());
+  EXPECT_FALSE(Triangulation::Build(d).ok());
   return s.message();
 }
 

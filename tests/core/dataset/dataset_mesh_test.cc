@@ -34,15 +34,15 @@ constexpr std::string_view kLOff =
     "3 0 4 2\n";
 
 std::string OffError(std::string_view text) {
-  Dataset ds;
-  const Status s = ParseOffText(text, "m.off", &ds);
+  const Status s = ParseOffText(text, "m.off").status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
   return s.message();
 }
 
 TEST(ParseOffTextTest, VerticesValuesAndFacesAsWritten) {
-  Dataset ds;
-  ASSERT_TRUE(ParseOffText(kLOff, "m.off", &ds).ok());
+  const StatusOr<Dataset> parsed = ParseOffText(kLOff, "m.off");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const Dataset& ds = *parsed;
   ASSERT_EQ(ds.points.size(), 5u);
   EXPECT_EQ(ds.points[3].x, 2);
   EXPECT_EQ(ds.points[3].y, 1);
@@ -52,10 +52,10 @@ TEST(ParseOffTextTest, VerticesValuesAndFacesAsWritten) {
 }
 
 TEST(ParseOffTextTest, CountsOnTheHeaderLineAndFaceColours) {
-  Dataset ds;
-  ASSERT_TRUE(ParseOffText("OFF 3 1 3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n",
-                           "m.off", &ds)
-                  .ok());
+  const StatusOr<Dataset> parsed = ParseOffText(
+      "OFF 3 1 3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n", "m.off");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const Dataset& ds = *parsed;
   EXPECT_EQ(ds.values, (std::vector<double>{0, 0, 0}));
   EXPECT_EQ(ds.constraints.triangles, (Triangles{{0, 1, 2}}));
 }
@@ -99,15 +99,16 @@ constexpr std::string_view kLEle =
     "3 1 5 3 9 9 9 0.5\n";
 
 std::string EleError(std::string_view ele) {
-  Dataset ds;
-  const Status s = ParseEleText(ele, "m.ele", kLNode, "m.node", &ds);
+  const Status s = ParseEleText(ele, "m.ele", kLNode, "m.node").status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
   return s.message();
 }
 
 TEST(ParseEleTextTest, TrianglesNumberedLikeTheNodeFile) {
-  Dataset ds;
-  ASSERT_TRUE(ParseEleText(kLEle, "m.ele", kLNode, "m.node", &ds).ok());
+  const StatusOr<Dataset> parsed =
+      ParseEleText(kLEle, "m.ele", kLNode, "m.node");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const Dataset& ds = *parsed;
   EXPECT_EQ(ds.points.size(), 5u);
   EXPECT_EQ(ds.values, (std::vector<double>{10, 20, 30, 40, 50}));
   EXPECT_EQ(ds.constraints.triangles,
@@ -129,9 +130,9 @@ TEST(ParseEleTextTest, ErrorsNameFileAndLine) {
             "declared on line 1, got 4");
   EXPECT_EQ(EleError("1 3 0\n1 1 2 4\n2 1 4 5\n"),
             "m.ele:3: unexpected line after the 1 triangles");
-  Dataset ds;
-  const Status node_error = ParseEleText(
-      "1 3 0\n1 1 2 3\n", "m.ele", "3 2 0 0\n1 0 0\n2 1 0\n", "m.node", &ds);
+  const Status node_error = ParseEleText("1 3 0\n1 1 2 3\n", "m.ele",
+                                         "3 2 0 0\n1 0 0\n2 1 0\n", "m.node")
+                                .status();
   EXPECT_EQ(node_error.message(),
             "m.node:3: found only 2 of the 3 points "
             "declared on line 1");
@@ -144,37 +145,37 @@ void WriteFile(const std::string& path, std::string_view text) {
 TEST(LoadDatasetTest, EleReadsTheNodeFileBesideIt) {
   test::ScratchDir dir;
   WriteFile(dir.path() + "/l.ele", kLEle);
-  Dataset ds;
-  const Status missing = LoadDataset(dir.path() + "/l.ele", &ds);
+  const Status missing = LoadDataset(dir.path() + "/l.ele").status();
   EXPECT_EQ(missing.code(), Status::Code::kNotFound);
   EXPECT_NE(missing.message().find("node file of '" + dir.path() + "/l.ele' '" +
                                    dir.path() + "/l.node'"),
             std::string::npos)
       << missing.message();
   WriteFile(dir.path() + "/l.node", kLNode);
-  ASSERT_TRUE(LoadDataset(dir.path() + "/l.ele", &ds).ok());
-  EXPECT_EQ(ds.constraints.triangles.size(), 3u);
-  EXPECT_EQ(ds.source, dir.path() + "/l.ele");
+  const StatusOr<Dataset> ds = LoadDataset(dir.path() + "/l.ele");
+  ASSERT_TRUE(ds.ok()) << ds.status().ToString();
+  EXPECT_EQ(ds->constraints.triangles.size(), 3u);
+  EXPECT_EQ(ds->source, dir.path() + "/l.ele");
 }
 
 // Writes `off` to a scratch file and builds its triangulation.
-Status BuildOff(std::string_view off, std::unique_ptr<Triangulation>* t) {
+StatusOr<std::unique_ptr<Triangulation>> BuildOff(std::string_view off) {
   test::ScratchDir dir;
   const std::string path = dir.path() + "/mesh.off";
   WriteFile(path, off);
-  Dataset ds;
-  const Status loaded = LoadDataset(path, &ds);
-  return loaded.ok() ? Triangulation::Build(ds, t) : loaded;
+  const StatusOr<Dataset> loaded = LoadDataset(path);
+  if (!loaded.ok()) return loaded.status();
+  return Triangulation::Build(*loaded);
 }
 
 TEST(LoadDatasetTest, OffMeshIsServedAsGiven) {
   // An L of four triangles around (0, 0); its notch x > 1, y > 1 is inside
   // the convex hull (bounded by the edge (2 1)-(1 2)) but in no triangle.
-  std::unique_ptr<Triangulation> t;
-  ASSERT_TRUE(BuildOff("OFF\n6 4 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
-                       "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n",
-                       &t)
-                  .ok());
+  const StatusOr<std::unique_ptr<Triangulation>> built = BuildOff(
+      "OFF\n6 4 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
+      "3 0 1 2\n3 0 2 3\n3 0 3 4\n3 0 4 5\n");
+  ASSERT_TRUE(built.ok()) << built.status().ToString();
+  const Triangulation* t = built->get();
   EXPECT_EQ(t->num_triangles(), 4u);
   EXPECT_EQ(t->ReferenceLocate({1.4, 1.4}).type, LocationType::kOutsideDomain);
   EXPECT_EQ(t->ReferenceLocate({1.0, 0.25}).type, LocationType::kFace);
@@ -183,11 +184,10 @@ TEST(LoadDatasetTest, OffMeshIsServedAsGiven) {
 
 TEST(LoadDatasetTest, NonManifoldOffIsRefused) {
   // Three triangles on the edge 0-1.
-  std::unique_ptr<Triangulation> t;
   const Status s = BuildOff(
-      "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 2 0\n"
-      "3 0 1 2\n3 0 1 3\n3 0 1 4\n",
-      &t);
+                       "OFF\n5 3 0\n0 0 0\n1 0 0\n0.5 1 0\n0.5 -1 0\n0.5 2 0\n"
+                       "3 0 1 2\n3 0 1 3\n3 0 1 4\n")
+                       .status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument);
   EXPECT_NE(s.message().find("mesh edge (0 1) is shared by triangles 0, 1 "
                              "and 2 (not a manifold)"),

@@ -20,18 +20,15 @@ std::string InvalidArgumentMessage(const Status& s) {
 }
 
 std::string XyzError(std::string_view text) {
-  Dataset ds;
-  return InvalidArgumentMessage(ParseXyzText(text, "pts.csv", &ds));
+  return InvalidArgumentMessage(ParseXyzText(text, "pts.csv").status());
 }
 
 std::string NodeError(std::string_view text) {
-  Dataset ds;
-  return InvalidArgumentMessage(ParseNodeText(text, "pts.node", &ds));
+  return InvalidArgumentMessage(ParseNodeText(text, "pts.node").status());
 }
 
 std::string SpecError(const std::string& spec) {
-  Dataset ds;
-  return InvalidArgumentMessage(LoadDataset(spec, &ds));
+  return InvalidArgumentMessage(LoadDataset(spec).status());
 }
 
 bool SamePoints(const Dataset& a, const Dataset& b) {
@@ -53,26 +50,25 @@ std::string WriteTempFile(const std::string& name,
 }
 
 TEST(ParseXyzTextTest, TwoColumns) {
-  Dataset ds;
-  ASSERT_TRUE(ParseXyzText("1,2\n3.5,-4\n5e1,6", "pts.csv", &ds).ok());
-  ASSERT_EQ(ds.points.size(), 3u);
-  EXPECT_EQ(ds.points[1].x, 3.5);
-  EXPECT_EQ(ds.points[1].y, -4);
-  EXPECT_EQ(ds.points[2].x, 50);
-  EXPECT_FALSE(ds.has_values());
+  StatusOr<Dataset> ds = ParseXyzText("1,2\n3.5,-4\n5e1,6", "pts.csv");
+  ASSERT_TRUE(ds.ok());
+  ASSERT_EQ(ds->points.size(), 3u);
+  EXPECT_EQ(ds->points[1].x, 3.5);
+  EXPECT_EQ(ds->points[1].y, -4);
+  EXPECT_EQ(ds->points[2].x, 50);
+  EXPECT_FALSE(ds->has_values());
 }
 
 TEST(ParseXyzTextTest, ThreeColumnsFillValues) {
-  Dataset ds;
-  ASSERT_TRUE(ParseXyzText("1,2,10\n3,4,20\n", "pts.csv", &ds).ok());
-  ASSERT_EQ(ds.points.size(), 2u);
-  ASSERT_EQ(ds.values.size(), 2u);
-  EXPECT_EQ(ds.values[0], 10);
-  EXPECT_EQ(ds.values[1], 20);
+  StatusOr<Dataset> ds = ParseXyzText("1,2,10\n3,4,20\n", "pts.csv");
+  ASSERT_TRUE(ds.ok());
+  ASSERT_EQ(ds->points.size(), 2u);
+  ASSERT_EQ(ds->values.size(), 2u);
+  EXPECT_EQ(ds->values[0], 10);
+  EXPECT_EQ(ds->values[1], 20);
 }
 
 TEST(ParseXyzTextTest, SeparatorsCommentsBlankLinesCrlf) {
-  Dataset ds;
   const char* text =
       "# full-line comment\r\n"
       "\r\n"
@@ -81,21 +77,22 @@ TEST(ParseXyzTextTest, SeparatorsCommentsBlankLinesCrlf) {
       "\t\n"
       "7\t\t8 , 9#tight comment\n"
       "+1e1 -2 1e-400\n";
-  ASSERT_TRUE(ParseXyzText(text, "pts.csv", &ds).ok());
-  ASSERT_EQ(ds.points.size(), 4u);
-  EXPECT_EQ(ds.points[1].x, 4);
-  EXPECT_EQ(ds.points[1].y, 5);
-  EXPECT_EQ(ds.values[1], 6);
-  EXPECT_EQ(ds.points[2].x, 7);
-  EXPECT_EQ(ds.values[2], 9);
-  EXPECT_EQ(ds.points[3].x, 10);  // leading '+'
-  EXPECT_EQ(ds.values[3], 0);     // underflow is zero, not an error
+  const StatusOr<Dataset> ds = ParseXyzText(text, "pts.csv");
+  ASSERT_TRUE(ds.ok());
+  ASSERT_EQ(ds->points.size(), 4u);
+  EXPECT_EQ(ds->points[1].x, 4);
+  EXPECT_EQ(ds->points[1].y, 5);
+  EXPECT_EQ(ds->values[1], 6);
+  EXPECT_EQ(ds->points[2].x, 7);
+  EXPECT_EQ(ds->values[2], 9);
+  EXPECT_EQ(ds->points[3].x, 10);  // leading '+'
+  EXPECT_EQ(ds->values[3], 0);     // underflow is zero, not an error
 }
 
 TEST(ParseXyzTextTest, HeaderOnlyAsFirstContentLine) {
-  Dataset ds;
-  ASSERT_TRUE(ParseXyzText("# c\n\nx,y,z\n1,2,3\n", "pts.csv", &ds).ok());
-  EXPECT_EQ(ds.points.size(), 1u);
+  StatusOr<Dataset> ds = ParseXyzText("# c\n\nx,y,z\n1,2,3\n", "pts.csv");
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->points.size(), 1u);
   EXPECT_EQ(XyzError("x,y\nx,y\n1,2\n"), "pts.csv:2: 'x' is not a number");
   EXPECT_EQ(XyzError("1,2\nabc,3\n"), "pts.csv:2: 'abc' is not a number");
   // The first field decides: a number there makes it a data row.
@@ -140,54 +137,44 @@ TEST(ParseXyzTextTest, EmptyDataset) {
 }
 
 TEST(ParseXyzTextTest, FewPointsAreNotTheParsersBusiness) {
-  Dataset ds;
-  EXPECT_TRUE(ParseXyzText("1,2\n", "pts.csv", &ds).ok());
-  EXPECT_EQ(ds.points.size(), 1u);
+  StatusOr<Dataset> ds = ParseXyzText("1,2\n", "pts.csv");
+  EXPECT_TRUE(ds.ok());
+  EXPECT_EQ(ds->points.size(), 1u);
 }
 
 TEST(ParseXyzTextTest, MaxPoints) {
-  Dataset ds;
   const DatasetLimits limits{.max_points = 2};
-  EXPECT_TRUE(ParseXyzText("1,2\n3,4\n", "pts.csv", &ds, limits).ok());
-  const Status s = ParseXyzText("1,2\n3,4\n5,6\n", "pts.csv", &ds, limits);
+  EXPECT_TRUE(ParseXyzText("1,2\n3,4\n", "pts.csv", limits).ok());
+  const Status s = ParseXyzText("1,2\n3,4\n5,6\n", "pts.csv", limits).status();
   EXPECT_EQ(s.code(), Status::Code::kResourceExhausted);
   EXPECT_EQ(s.message(), "pts.csv:3: more than 2 points (max_points limit)");
 }
 
-TEST(ParseXyzTextTest, ErrorLeavesOutputUntouched) {
-  Dataset ds;
-  ds.source = "before";
-  ds.points.push_back({7, 7});
-  EXPECT_FALSE(ParseXyzText("1,2\nbad,3\n", "pts.csv", &ds).ok());
-  EXPECT_EQ(ds.source, "before");
-  EXPECT_EQ(ds.points.size(), 1u);
-}
-
 TEST(ParseNodeTextTest, Plain) {
-  Dataset ds;
-  ASSERT_TRUE(ParseNodeText("# triangle\n3 2 0 0\n1 0 0\n2 1.5 0\n"
-                            "3 0 1 # last\n",
-                            "pts.node", &ds)
-                  .ok());
-  ASSERT_EQ(ds.points.size(), 3u);
-  EXPECT_EQ(ds.points[1].x, 1.5);
-  EXPECT_EQ(ds.points[2].y, 1);
-  EXPECT_FALSE(ds.has_values());
+  StatusOr<Dataset> ds = ParseNodeText(
+      "# triangle\n3 2 0 0\n1 0 0\n2 1.5 0\n"
+      "3 0 1 # last\n",
+      "pts.node");
+  ASSERT_TRUE(ds.ok());
+  ASSERT_EQ(ds->points.size(), 3u);
+  EXPECT_EQ(ds->points[1].x, 1.5);
+  EXPECT_EQ(ds->points[2].y, 1);
+  EXPECT_FALSE(ds->has_values());
 }
 
 TEST(ParseNodeTextTest, FirstAttributeIsValueMarkersIgnored) {
-  Dataset ds;
-  ASSERT_TRUE(ParseNodeText("3 2 2 1\n0 0 0 5.5 9 1\n1 1 0 6.5 9 0\n"
-                            "2 0 1 7.5 9 1\n",
-                            "pts.node", &ds)
-                  .ok());
-  ASSERT_EQ(ds.values.size(), 3u);
-  EXPECT_EQ(ds.values[0], 5.5);
-  EXPECT_EQ(ds.values[2], 7.5);
-  ASSERT_TRUE(
-      ParseNodeText("2 2 0 1\n1 0 0 1\n2 1 1 0\n", "pts.node", &ds).ok());
-  EXPECT_EQ(ds.points.size(), 2u);
-  EXPECT_FALSE(ds.has_values());
+  StatusOr<Dataset> ds = ParseNodeText(
+      "3 2 2 1\n0 0 0 5.5 9 1\n1 1 0 6.5 9 0\n"
+      "2 0 1 7.5 9 1\n",
+      "pts.node");
+  ASSERT_TRUE(ds.ok());
+  ASSERT_EQ(ds->values.size(), 3u);
+  EXPECT_EQ(ds->values[0], 5.5);
+  EXPECT_EQ(ds->values[2], 7.5);
+  ds = ParseNodeText("2 2 0 1\n1 0 0 1\n2 1 1 0\n", "pts.node");
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->points.size(), 2u);
+  EXPECT_FALSE(ds->has_values());
 }
 
 TEST(ParseNodeTextTest, HeaderErrors) {
@@ -224,30 +211,30 @@ TEST(ParseNodeTextTest, PointErrors) {
 }
 
 TEST(ParseNodeTextTest, MaxPointsCheckedAgainstHeader) {
-  Dataset ds;
-  const Status s = ParseNodeText("1000000000 2 0 0\n", "pts.node", &ds,
-                                 DatasetLimits{.max_points = 10});
+  const Status s = ParseNodeText("1000000000 2 0 0\n", "pts.node",
+                                 DatasetLimits{.max_points = 10})
+                       .status();
   EXPECT_EQ(s.code(), Status::Code::kResourceExhausted);
   EXPECT_EQ(s.message(), "pts.node:1: more than 10 points (max_points limit)");
 }
 
 TEST(LoadDatasetTest, CsvFile) {
   const std::string path = WriteTempFile("pts.csv", "x,y,z\n1,2,3\n4,5,6\n");
-  Dataset ds;
-  ASSERT_TRUE(LoadDataset(path, &ds).ok());
-  EXPECT_EQ(ds.source, path);
-  ASSERT_EQ(ds.points.size(), 2u);
-  EXPECT_EQ(ds.points[1].x, 4);
-  EXPECT_EQ(ds.values[1], 6);
+  StatusOr<Dataset> ds = LoadDataset(path);
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->source, path);
+  ASSERT_EQ(ds->points.size(), 2u);
+  EXPECT_EQ(ds->points[1].x, 4);
+  EXPECT_EQ(ds->values[1], 6);
 }
 
 TEST(LoadDatasetTest, NodeFileBySuffix) {
   // As CSV, "3 2 0 0" would be a 4-column error.
   const std::string path =
       WriteTempFile("pts.node", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n");
-  Dataset ds;
-  ASSERT_TRUE(LoadDataset(path, &ds).ok());
-  EXPECT_EQ(ds.points.size(), 3u);
+  StatusOr<Dataset> ds = LoadDataset(path);
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->points.size(), 3u);
 }
 
 TEST(LoadDatasetTest, ParseErrorNamesThePath) {
@@ -257,32 +244,34 @@ TEST(LoadDatasetTest, ParseErrorNamesThePath) {
 
 TEST(LoadDatasetTest, MissingFileAndDirectory) {
   const std::string missing = testing::TempDir() + "/no_such_dataset.csv";
-  Dataset ds;
-  Status s = LoadDataset(missing, &ds);
+  Status s = LoadDataset(missing).status();
   EXPECT_EQ(s.code(), Status::Code::kNotFound);
   EXPECT_NE(s.message().find("'" + missing + "'"), std::string::npos)
       << s.message();
 
   const std::string dir = testing::TempDir() + "/dataset_test_dir";
   std::filesystem::create_directories(dir);
-  s = LoadDataset(dir, &ds);
+  s = LoadDataset(dir).status();
   EXPECT_EQ(s.code(), Status::Code::kIOError);
   EXPECT_NE(s.message().find("'" + dir + "'"), std::string::npos)
       << s.message();
 }
 
 TEST(LoadDatasetTest, GeneratorSpecs) {
-  Dataset ds;
-  ASSERT_TRUE(LoadDataset("uniform:100:7", &ds).ok());
-  EXPECT_EQ(ds.source, "uniform:100:7");
-  EXPECT_TRUE(SamePoints(ds, GenerateUniform(100, 7)));
-  ASSERT_TRUE(LoadDataset("uniform:50", &ds).ok());
-  EXPECT_EQ(ds.points.size(), 50u);
-  ASSERT_TRUE(LoadDataset("clusters:100:3:5", &ds).ok());
-  EXPECT_EQ(ds.source, "clusters:100:3:5");
-  EXPECT_TRUE(SamePoints(ds, GenerateClusters(100, 3, 5)));
-  ASSERT_TRUE(LoadDataset("clusters:100:4", &ds).ok());
-  EXPECT_EQ(ds.points.size(), 100u);
+  StatusOr<Dataset> ds = LoadDataset("uniform:100:7");
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->source, "uniform:100:7");
+  EXPECT_TRUE(SamePoints(*ds, GenerateUniform(100, 7)));
+  ds = LoadDataset("uniform:50");
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->points.size(), 50u);
+  ds = LoadDataset("clusters:100:3:5");
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->source, "clusters:100:3:5");
+  EXPECT_TRUE(SamePoints(*ds, GenerateClusters(100, 3, 5)));
+  ds = LoadDataset("clusters:100:4");
+  ASSERT_TRUE(ds.ok());
+  EXPECT_EQ(ds->points.size(), 100u);
 }
 
 TEST(LoadDatasetTest, BadSpecs) {
@@ -306,13 +295,11 @@ TEST(LoadDatasetTest, BadSpecs) {
 }
 
 TEST(LoadDatasetTest, GeneratorMaxPoints) {
-  Dataset ds;
   const Status s =
-      LoadDataset("uniform:1000", &ds, DatasetLimits{.max_points = 10});
+      LoadDataset("uniform:1000", DatasetLimits{.max_points = 10}).status();
   EXPECT_EQ(s.code(), Status::Code::kResourceExhausted);
   EXPECT_EQ(s.message(),
             "uniform:1000: more than 10 points (max_points limit)");
-  EXPECT_TRUE(ds.points.empty());
 }
 
 TEST(GenerateUniformTest, DeterministicAndPortable) {
@@ -368,26 +355,24 @@ constexpr char kSquareWithHole[] =
     "1 0.5 0.5 7 0.1\n";
 
 std::string PolyError(std::string_view text) {
-  Dataset ds;
-  const Status s = ParsePolyText(text, "t.poly", &ds);
+  const Status s = ParsePolyText(text, "t.poly").status();
   EXPECT_FALSE(s.ok());
   return s.message();
 }
 
 TEST(ParsePolyTextTest, SegmentsHolesAndRegions) {
-  Dataset ds;
-  const Status s = ParsePolyText(kSquareWithHole, "t.poly", &ds);
-  ASSERT_TRUE(s.ok()) << s.ToString();
-  ASSERT_EQ(ds.points.size(), 8u);
-  EXPECT_EQ(ds.values[4], 20);
-  ASSERT_EQ(ds.constraints.segments.size(), 8u);
+  const StatusOr<Dataset> ds = ParsePolyText(kSquareWithHole, "t.poly");
+  ASSERT_TRUE(ds.ok()) << ds.status().ToString();
+  ASSERT_EQ(ds->points.size(), 8u);
+  EXPECT_EQ(ds->values[4], 20);
+  ASSERT_EQ(ds->constraints.segments.size(), 8u);
   // Segment 4 is "5 5 6": points 5 and 6 numbered from 1.
-  EXPECT_EQ(ds.constraints.segments[4].points[0].x, 1);
-  EXPECT_EQ(ds.constraints.segments[4].points[1].x, 3);
-  ASSERT_EQ(ds.constraints.hole_seeds.size(), 1u);
-  EXPECT_EQ(ds.constraints.hole_seeds[0].x, 2);
-  ASSERT_EQ(ds.constraints.regions.size(), 1u);
-  EXPECT_EQ(ds.constraints.regions[0].attribute, 7);
+  EXPECT_EQ(ds->constraints.segments[4].points[0].x, 1);
+  EXPECT_EQ(ds->constraints.segments[4].points[1].x, 3);
+  ASSERT_EQ(ds->constraints.hole_seeds.size(), 1u);
+  EXPECT_EQ(ds->constraints.hole_seeds[0].x, 2);
+  ASSERT_EQ(ds->constraints.regions.size(), 1u);
+  EXPECT_EQ(ds->constraints.regions[0].attribute, 7);
 }
 
 TEST(ParsePolyTextTest, ErrorsNameFileAndLine) {

@@ -25,25 +25,23 @@ std::vector<double> Xs(const Polyline& line) {
 }
 
 std::string WktError(std::string_view text) {
-  DatasetConstraints c;
-  const Status s = ParseWktConstraints(text, "c.wkt", &c);
+  const Status s = ParseWktConstraints(text, "c.wkt").status();
   EXPECT_EQ(s.code(), Status::Code::kInvalidArgument) << s.ToString();
   return s.message();
 }
 
 TEST(ParseWktConstraintsTest, LinesBecomeBreaklinesAndRingsDropTheirClosure) {
-  DatasetConstraints c;
-  ASSERT_TRUE(
-      ParseWktConstraints(
-          "LINESTRING (0 0, 1 1, 2 0)\n"
-          "polygon ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 2 1, 2 2, 1 1));\n"
-          "MULTIPOLYGON (((10 10, 11 10, 11 11, 10 10)),"
-          " ((20 20, 21 20, 21 21, 20 20)))\n"
-          "MULTILINESTRING ((5 5, 6 6), (7 7, 8 8))\n"
-          "GEOMETRYCOLLECTION (LINESTRING (9 9, 9.5 9), POLYGON EMPTY)\n"
-          "LINESTRING EMPTY\n",
-          "c.wkt", &c)
-          .ok());
+  const StatusOr<DatasetConstraints> parsed = ParseWktConstraints(
+      "LINESTRING (0 0, 1 1, 2 0)\n"
+      "polygon ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 2 1, 2 2, 1 1));\n"
+      "MULTIPOLYGON (((10 10, 11 10, 11 11, 10 10)),"
+      " ((20 20, 21 20, 21 21, 20 20)))\n"
+      "MULTILINESTRING ((5 5, 6 6), (7 7, 8 8))\n"
+      "GEOMETRYCOLLECTION (LINESTRING (9 9, 9.5 9), POLYGON EMPTY)\n"
+      "LINESTRING EMPTY\n",
+      "c.wkt");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const DatasetConstraints& c = *parsed;
   ASSERT_EQ(c.breaklines.size(), 4u);
   EXPECT_EQ(Xs(c.breaklines[0]), (std::vector<double>{0, 1, 2}));
   EXPECT_EQ(Xs(c.breaklines[3]), (std::vector<double>{9, 9.5}));
@@ -57,11 +55,12 @@ TEST(ParseWktConstraintsTest, LinesBecomeBreaklinesAndRingsDropTheirClosure) {
 }
 
 TEST(ParseWktConstraintsTest, ZIsTheValueAlongTheLine) {
-  DatasetConstraints c;
-  ASSERT_TRUE(ParseWktConstraints("LINESTRING Z (0 0 5, 1 1 6)\n"
-                                  "LINESTRING (0 1 7, 1 0 8)\n",
-                                  "c.wkt", &c)
-                  .ok());
+  const StatusOr<DatasetConstraints> parsed = ParseWktConstraints(
+      "LINESTRING Z (0 0 5, 1 1 6)\n"
+      "LINESTRING (0 1 7, 1 0 8)\n",
+      "c.wkt");
+  ASSERT_TRUE(parsed.ok()) << parsed.status().ToString();
+  const DatasetConstraints& c = *parsed;
   EXPECT_EQ(c.breaklines[0].values, (std::vector<double>{5, 6}));
   EXPECT_EQ(c.breaklines[1].values, (std::vector<double>{7, 8}));
 }
@@ -138,13 +137,16 @@ TEST(LoadDatasetTest, PointsPlusWktServeTheLakeAsAHole) {
             "POLYGON Z ((0 0 0, 4 0 4, 4 4 8, 0 4 4, 0 0 0),\n"
             "  (1.5 1.5 3, 2.5 1.5 4, 2.5 2.5 5, 1.5 2.5 4, 1.5 1.5 3))\n");
   const std::string spec = dir.path() + "/grid.csv+" + dir.path() + "/lake.wkt";
-  Dataset ds;
-  ASSERT_TRUE(LoadDataset(spec, &ds).ok());
+  const StatusOr<Dataset> loaded = LoadDataset(spec);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().ToString();
+  const Dataset& ds = *loaded;
   EXPECT_EQ(ds.source, spec);
   EXPECT_EQ(ds.points.size(), 25u);
   EXPECT_EQ(ds.constraints.rings.size(), 2u);
-  std::unique_ptr<Triangulation> t;
-  ASSERT_TRUE(Triangulation::Build(ds, &t).ok());
+  const StatusOr<std::unique_ptr<Triangulation>> built =
+      Triangulation::Build(ds);
+  ASSERT_TRUE(built.ok()) << built.status().ToString();
+  const Triangulation* t = built->get();
   EXPECT_EQ(t->ReferenceLocate({2, 2}).type, LocationType::kOutsideDomain);
   const LocateResult land = t->ReferenceLocate({0.5, 0.25});
   ASSERT_EQ(land.type, LocationType::kFace);
@@ -156,8 +158,7 @@ TEST(LoadDatasetTest, PointsPlusWktServeTheLakeAsAHole) {
 }
 
 TEST(LoadDatasetTest, MissingWktFileIsNamed) {
-  Dataset ds;
-  const Status s = LoadDataset("uniform:100:1+/no/such/lake.wkt", &ds);
+  const Status s = LoadDataset("uniform:100:1+/no/such/lake.wkt").status();
   EXPECT_EQ(s.code(), Status::Code::kNotFound) << s.ToString();
   EXPECT_NE(s.message().find("constraints '/no/such/lake.wkt'"),
             std::string::npos)

@@ -37,6 +37,15 @@ namespace {
 
 using ::testing::HasSubstr;
 
+// The engine Engine::Create makes of `dataset`; null, failing the test, if
+// it cannot.
+std::unique_ptr<Engine> CreateEngine(const Dataset& dataset,
+                                     const EngineOptions& options) {
+  StatusOr<std::unique_ptr<Engine>> engine = Engine::Create(dataset, options);
+  EXPECT_TRUE(engine.ok()) << engine.status().ToString();
+  return engine.ok() ? *std::move(engine) : nullptr;
+}
+
 template <class T>
 std::string Bytes(std::span<const T> values) {
   return std::string(reinterpret_cast<const char*>(values.data()),
@@ -137,9 +146,10 @@ TEST_F(MeshFileTest, SecondBuildMapsTheSameMesh) {
 TEST_F(MeshFileTest, EnginesOnBuiltAndMappedMeshesAnswerAlike) {
   EngineOptions options;
   options.mesh_cache_dir = dir_.path();
-  std::unique_ptr<Engine> built, mapped;
-  ASSERT_TRUE(Engine::Create(dataset_, EngineOptions(), &built).ok());
-  ASSERT_TRUE(Engine::Create(dataset_, options, &mapped).ok());
+  const std::unique_ptr<Engine> built = CreateEngine(dataset_, EngineOptions());
+  ASSERT_NE(built, nullptr);
+  const std::unique_ptr<Engine> mapped = CreateEngine(dataset_, options);
+  ASSERT_NE(mapped, nullptr);
   EXPECT_TRUE(mapped->dataset_info().mesh_cache.mapped);
   DatasetInfo a = built->dataset_info(), b = mapped->dataset_info();
   EXPECT_EQ(a.vertices, b.vertices);
@@ -187,8 +197,8 @@ TEST_F(MeshFileTest, TuningStateIsRestoredOntoAMappedMesh) {
   options.mesh_cache_dir = dir_.path();
   options.tuning.state_dir = state_dir.path();
   options.tuning.retune_every = 500;
-  std::unique_ptr<Engine> first, second;
-  ASSERT_TRUE(Engine::Create(dataset_, options, &first).ok());
+  const std::unique_ptr<Engine> first = CreateEngine(dataset_, options);
+  ASSERT_NE(first, nullptr);
   std::mt19937_64 random(5);
   std::normal_distribution<double> near(0.25, 0.02);
   for (int i = 0; i < 3000; ++i) {
@@ -197,7 +207,8 @@ TEST_F(MeshFileTest, TuningStateIsRestoredOntoAMappedMesh) {
   }
   first->Retune();
   ASSERT_TRUE(first->SaveTuningState().ok());
-  ASSERT_TRUE(Engine::Create(dataset_, options, &second).ok());
+  const std::unique_ptr<Engine> second = CreateEngine(dataset_, options);
+  ASSERT_NE(second, nullptr);
   EXPECT_TRUE(second->dataset_info().mesh_cache.mapped);
   const PersistenceSummary p = second->Stats().tuning.persistence;
   EXPECT_TRUE(p.restored_from_state) << p.load_error;
@@ -350,9 +361,9 @@ TEST(MeshFileSeedsTest, AFileOfTheFormerFormatIsRebuilt) {
 
 TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
   const auto key = [](const std::string& spec) {
-    GeneratorSpec g;
-    EXPECT_TRUE(ParseGeneratorSpec(spec, &g).ok()) << spec;
-    return g.CanonicalKey();
+    const StatusOr<GeneratorSpec> g = ParseGeneratorSpec(spec);
+    EXPECT_TRUE(g.ok()) << spec;
+    return g.ok() ? g->CanonicalKey() : std::string();
   };
   EXPECT_EQ(key("uniform:1000"), key("uniform:1000:1"));
   EXPECT_EQ(key("clusters:1000:4"), key("clusters:1000:4:1"));
@@ -360,10 +371,9 @@ TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
   EXPECT_NE(key("uniform:1000:1"), key("uniform:1001:1"));
   EXPECT_NE(key("clusters:1000:4:1"), key("clusters:1000:5:1"));
   EXPECT_NE(key("uniform:1000:1"), key("clusters:1000:1:1"));
-  GeneratorSpec g;
-  EXPECT_THAT(ParseGeneratorSpec("uniform:0", &g).message(),
+  EXPECT_THAT(ParseGeneratorSpec("uniform:0").status().message(),
               HasSubstr("N must be a positive integer"));
-  EXPECT_THAT(ParseGeneratorSpec("clusters:5:9", &g).message(),
+  EXPECT_THAT(ParseGeneratorSpec("clusters:5:9").status().message(),
               HasSubstr("K must not exceed N"));
 }
 
@@ -371,15 +381,17 @@ TEST(GeneratedMeshTest, CanonicalKeysNameTheSamePoints) {
 // points; a missing or malformed key sends the caller to generate them.
 TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
   test::ScratchDir dir;
-  GeneratorSpec spec;
-  ASSERT_TRUE(ParseGeneratorSpec("uniform:500:9", &spec).ok());
+  const StatusOr<GeneratorSpec> parsed = ParseGeneratorSpec("uniform:500:9");
+  ASSERT_TRUE(parsed.ok());
+  const GeneratorSpec& spec = *parsed;
   uint64_t fingerprint = 0;
   EXPECT_EQ(FindGeneratedFingerprint(dir.path(), spec, &fingerprint).code(),
             Status::Code::kNotFound);
   EngineOptions options;
   options.mesh_cache_dir = dir.path();
-  std::unique_ptr<Engine> built, mapped;
-  ASSERT_TRUE(Engine::Create(GenerateUniform(500, 9), options, &built).ok());
+  const std::unique_ptr<Engine> built =
+      CreateEngine(GenerateUniform(500, 9), options);
+  ASSERT_NE(built, nullptr);
   const MeshCacheOutcome& cache = built->dataset_info().mesh_cache;
   ASSERT_TRUE(
       RecordGeneratedFingerprint(dir.path(), spec, cache.fingerprint).ok());
@@ -387,8 +399,10 @@ TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
   EXPECT_EQ(fingerprint, cache.fingerprint);
   DatasetOrigin origin;
   origin.source = "uniform:500:9";
-  ASSERT_TRUE(
-      Engine::CreateFromMeshFile(fingerprint, origin, options, &mapped).ok());
+  const StatusOr<std::unique_ptr<Engine>> from_file =
+      Engine::CreateFromMeshFile(fingerprint, origin, options);
+  ASSERT_TRUE(from_file.ok()) << from_file.status().ToString();
+  const Engine* mapped = from_file->get();
   const DatasetInfo& info = mapped->dataset_info();
   EXPECT_TRUE(info.mesh_cache.mapped);
   EXPECT_EQ(info.source, "uniform:500:9");
@@ -396,10 +410,10 @@ TEST(GeneratedMeshTest, KeyFileLeadsToTheMeshWithoutThePoints) {
   EXPECT_EQ(info.triangles, built->dataset_info().triangles);
   EXPECT_EQ(Bytes(mapped->EdgeSample()), Bytes(built->EdgeSample()));
   // Another fingerprint has no file; a key file that is not one is refused.
-  EXPECT_EQ(
-      Engine::CreateFromMeshFile(fingerprint + 1, origin, options, &mapped)
-          .code(),
-      Status::Code::kNotFound);
+  EXPECT_EQ(Engine::CreateFromMeshFile(fingerprint + 1, origin, options)
+                .status()
+                .code(),
+            Status::Code::kNotFound);
   for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
     if (entry.path().extension() == ".key") {
       WriteMeshBytes(entry.path().string(), "not a key\n");

@@ -243,9 +243,10 @@ void ExpectEveryStrategyAgrees(const Dataset& dataset, const Triangulation& t,
     options.strategy = strategy;
     options.tuning.warmup_queries = 200;
     options.tuning.retune_every = 200;
-    std::unique_ptr<Engine> engine;
-    const Status created = Engine::Create(dataset, options, &engine);
-    ASSERT_TRUE(created.ok()) << created.ToString();
+    const StatusOr<std::unique_ptr<Engine>> created =
+        Engine::Create(dataset, options);
+    ASSERT_TRUE(created.ok()) << created.status().ToString();
+    const Engine* engine = created->get();
     // Twice over: the learning strategies answer the second round from
     // what the first taught them.
     for (int round = 0; round < 2; ++round) {

@@ -34,10 +34,10 @@ std::unique_ptr<Engine> EngineFor(Dataset dataset,
                                   const std::string& strategy = "self-tuning") {
   EngineOptions options;
   options.strategy = strategy;
-  std::unique_ptr<Engine> engine;
-  const Status s = Engine::Create(std::move(dataset), options, &engine);
-  EXPECT_TRUE(s.ok()) << s.ToString();
-  return engine;
+  StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(std::move(dataset), options);
+  EXPECT_TRUE(engine.ok()) << engine.status().ToString();
+  return engine.ok() ? *std::move(engine) : nullptr;
 }
 
 std::vector<double> Render(const Engine& engine, const RasterSpec& spec) {

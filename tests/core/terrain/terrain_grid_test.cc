@@ -125,8 +125,10 @@ TEST(TriangulateGridTest, NodataDiscInsideIsAHole) {
   const SimplificationStats stats =
       BuildAndCertify(grid, WithError(0.01 * Range(grid)), &tin);
   EXPECT_LT(stats.source_samples, grid.samples());
-  std::unique_ptr<Engine> engine;
-  ASSERT_TRUE(Engine::Create(tin, EngineOptions(), &engine).ok());
+  StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(tin, EngineOptions());
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<Engine> engine = *std::move(created);
   EXPECT_EQ(engine->dataset_info().holes, 1u);
   // The disc's centre and points between nodata samples: no value.
   for (const Point2 q :
@@ -202,8 +204,10 @@ TEST(TriangulateGridTest, ZeroErrorKeepsEverySampleInTwoTrianglesPerCell) {
   EXPECT_EQ(stats.triangles, 2 * valid_cells);
   EXPECT_EQ(stats.vertices, stats.source_samples - stats.unserved_samples);
   EXPECT_EQ(stats.max_error, 0);
-  std::unique_ptr<Engine> engine;
-  ASSERT_TRUE(Engine::Create(tin, EngineOptions(), &engine).ok());
+  StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(tin, EngineOptions());
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<Engine> engine = *std::move(created);
   for (uint32_t row = 0; row < grid.height; ++row) {
     for (uint32_t col = 0; col < grid.width; ++col) {
       if (!InGridDomain(grid, col, row)) continue;

@@ -49,10 +49,11 @@ struct ServedErrors {
 inline ServedErrors MeasureServed(const ElevationGrid& grid,
                                   const Dataset& tin) {
   ServedErrors result;
-  std::unique_ptr<Engine> engine;
-  const Status s = Engine::Create(tin, EngineOptions(), &engine);
-  EXPECT_TRUE(s.ok()) << s.ToString();
-  if (!s.ok()) return result;
+  const StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(tin, EngineOptions());
+  EXPECT_TRUE(created.ok()) << created.status().ToString();
+  if (!created.ok()) return result;
+  const Engine* engine = created->get();
   int failures = 0;
   for (uint32_t row = 0; row < grid.height; ++row) {
     for (uint32_t col = 0; col < grid.width; ++col) {
@@ -95,10 +96,11 @@ struct ServedAtPoints {
 inline ServedAtPoints MeasureServedAtPoints(const Dataset& in,
                                             const Dataset& tin) {
   ServedAtPoints served;
-  std::unique_ptr<Engine> engine;
-  const Status s = Engine::Create(tin, EngineOptions(), &engine);
-  EXPECT_TRUE(s.ok()) << s.ToString();
-  if (!s.ok()) return served;
+  const StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(tin, EngineOptions());
+  EXPECT_TRUE(created.ok()) << created.status().ToString();
+  if (!created.ok()) return served;
+  const Engine* engine = created->get();
   for (size_t i = 0; i < in.points.size(); ++i) {
     LocateResult r;
     EXPECT_TRUE(engine->Locate(in.points[i], &r).ok());

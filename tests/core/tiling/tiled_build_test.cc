@@ -178,8 +178,7 @@ TEST(TiledBuildErrorTest, BadPointsFailAsTheCgalBuildDoes) {
       test::PointsDataset({{0, 0}, {1, 1}, {2, 2}, {3, 3}, {1, 1}}),
   };
   for (const Dataset& dataset : bad) {
-    std::unique_ptr<Triangulation> t;
-    const Status cgal = Triangulation::Build(dataset, &t);
+    const Status cgal = Triangulation::Build(dataset).status();
     BuiltMesh built;
     const Status tiled =
         BuildTiledMesh(dataset.points, dataset.values, {}, &built);

@@ -113,8 +113,10 @@ TEST_P(TiledEngineTest, AnswersAgreeWithCgalAtSeamsAndEverywhere) {
   ASSERT_NE(global, nullptr);
   EngineOptions options;
   options.build_threads = 2;
-  std::unique_ptr<Engine> engine;
-  ASSERT_TRUE(Engine::Create(c.dataset, options, &engine).ok());
+  StatusOr<std::unique_ptr<Engine>> created =
+      Engine::Create(c.dataset, options);
+  ASSERT_TRUE(created.ok()) << created.status().ToString();
+  const std::unique_ptr<Engine> engine = *std::move(created);
   TiledBuildOptions tiled;
   tiled.threads = 2;
   std::vector<Point2> queries = TileSeams(c.dataset, tiled, global->mesh());
@@ -174,11 +176,10 @@ TEST(TiledMeshTest, StrategiesAgreeWithCgalOnManySmallTiles) {
     queries.insert(queries.end(), random.begin(), random.end());
     for (const std::string strategy :
          {"walk", "jump-and-walk", "self-tuning"}) {
-      std::unique_ptr<PointLocator> locator;
-      ASSERT_TRUE(
-          MakePointLocator(strategy, *built.mesh, TuningOptions(), &locator)
-              .ok());
-      test::ExpectAllAgree(*locator, *global, queries);
+      const StatusOr<std::unique_ptr<PointLocator>> locator =
+          MakePointLocator(strategy, *built.mesh, TuningOptions());
+      ASSERT_TRUE(locator.ok());
+      test::ExpectAllAgree(**locator, *global, queries);
     }
   }
 }

@@ -44,11 +44,10 @@ EngineOptions Options(const std::string& state_dir) {
 
 std::unique_ptr<Engine> NewEngine(const EngineOptions& options,
                                   uint64_t seed = 42) {
-  std::unique_ptr<Engine> engine;
-  const Status s =
-      Engine::Create(GenerateUniform(kPoints, seed), options, &engine);
-  EXPECT_TRUE(s.ok()) << s.ToString();
-  return engine;
+  StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(GenerateUniform(kPoints, seed), options);
+  EXPECT_TRUE(engine.ok()) << engine.status().ToString();
+  return engine.ok() ? *std::move(engine) : nullptr;
 }
 
 std::vector<Point2> Clustered(const Engine& engine, size_t n, uint64_t seed) {

@@ -25,13 +25,13 @@ int main() {
   locator::Dataset dataset = locator::GenerateUniform(1000, 7);
   const locator::Point2 vertex = dataset.points[kProbe];
 
-  std::unique_ptr<locator::Engine> engine;
-  locator::Status status = locator::Engine::Create(
-      std::move(dataset), locator::EngineOptions(), &engine);
-  if (!status.ok()) return Fail("Create: " + status.ToString());
+  locator::StatusOr<std::unique_ptr<locator::Engine>> created =
+      locator::Engine::Create(std::move(dataset), locator::EngineOptions());
+  if (!created.ok()) return Fail("Create: " + created.status().ToString());
+  const std::unique_ptr<locator::Engine> engine = *std::move(created);
 
   locator::LocateResult result;
-  status = engine->Locate(vertex, &result);
+  locator::Status status = engine->Locate(vertex, &result);
   if (!status.ok()) return Fail("Locate: " + status.ToString());
   if (result.type != locator::LocationType::kVertex ||
       result.vertex_ids[result.feature_index] != kProbe) {

@@ -24,9 +24,9 @@ v1::ReloadRequest Request(const std::string& spec, const std::string& legacy) {
 #pragma GCC diagnostic pop
 
 std::string SpecOf(const v1::ReloadRequest& request) {
-  std::string spec = "unset";
-  EXPECT_TRUE(FromReloadRequest(request, &spec).ok());
-  return spec;
+  const StatusOr<std::string> spec = FromReloadRequest(request);
+  EXPECT_TRUE(spec.ok());
+  return spec.ok() ? *spec : "unset";
 }
 
 TEST(ReloadRequestTest, TheSpecIsWhatToLoad) {
@@ -43,8 +43,7 @@ TEST(ReloadRequestTest, NeitherReloadsTheConfiguredDataset) {
 }
 
 TEST(ReloadRequestTest, TwoDifferentSpecsAreRefusedNamingBoth) {
-  std::string spec;
-  const Status status = FromReloadRequest(Request("a.csv", "b.csv"), &spec);
+  const Status status = FromReloadRequest(Request("a.csv", "b.csv")).status();
   EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << status.ToString();
   EXPECT_NE(status.message().find("'a.csv'"), std::string::npos);
   EXPECT_NE(status.message().find("'b.csv'"), std::string::npos);

@@ -28,11 +28,10 @@ namespace {
 using ::testing::HasSubstr;
 
 std::shared_ptr<Engine> SmallEngine(size_t points, uint64_t seed) {
-  std::unique_ptr<Engine> engine;
-  const Status created =
-      Engine::Create(GenerateUniform(points, seed), EngineOptions(), &engine);
-  EXPECT_TRUE(created.ok()) << created.ToString();
-  return engine;
+  StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(GenerateUniform(points, seed), EngineOptions());
+  EXPECT_TRUE(engine.ok()) << engine.status().ToString();
+  return engine.ok() ? *std::move(engine) : nullptr;
 }
 
 const std::vector<DatasetConfig> kDatasets = {
@@ -51,17 +50,12 @@ class Builds {
       built_[slot.name()].push_back(spec);
       serving_[slot.name()] = serving;
       if (spec == "bad") return Status::InvalidArgument("bad dataset");
-      Dataset dataset;
-      if (Status s = LoadDataset(spec, &dataset, DatasetLimits()); !s.ok()) {
-        return s;
-      }
-      std::unique_ptr<Engine> engine;
-      if (Status s =
-              Engine::Create(std::move(dataset), EngineOptions(), &engine);
-          !s.ok()) {
-        return s;
-      }
-      *built = std::move(engine);
+      StatusOr<Dataset> dataset = LoadDataset(spec, DatasetLimits());
+      if (!dataset.ok()) return dataset.status();
+      StatusOr<std::unique_ptr<Engine>> engine =
+          Engine::Create(*std::move(dataset), EngineOptions());
+      if (!engine.ok()) return engine.status();
+      *built = *std::move(engine);
       return Status::OK();
     };
   }

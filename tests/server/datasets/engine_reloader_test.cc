@@ -19,11 +19,10 @@ namespace locator {
 namespace {
 
 std::shared_ptr<Engine> SmallEngine(uint64_t seed) {
-  std::unique_ptr<Engine> engine;
-  const Status created =
-      Engine::Create(GenerateUniform(200, seed), EngineOptions(), &engine);
-  EXPECT_TRUE(created.ok()) << created.ToString();
-  return engine;
+  StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(GenerateUniform(200, seed), EngineOptions());
+  EXPECT_TRUE(engine.ok()) << engine.status().ToString();
+  return engine.ok() ? *std::move(engine) : nullptr;
 }
 
 // A build that reports when the first build starts and waits for Release()

@@ -25,11 +25,10 @@ namespace {
 using Code = grpc::StatusCode;
 
 std::shared_ptr<Engine> UniformEngine(size_t points, uint64_t seed) {
-  std::unique_ptr<Engine> engine;
-  const Status created =
-      Engine::Create(GenerateUniform(points, seed), EngineOptions(), &engine);
-  EXPECT_TRUE(created.ok()) << created.ToString();
-  return engine;
+  StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(GenerateUniform(points, seed), EngineOptions());
+  EXPECT_TRUE(engine.ok()) << engine.status().ToString();
+  return engine.ok() ? *std::move(engine) : nullptr;
 }
 
 // Whether `response` is `engine`'s own answer for `q`.

@@ -75,10 +75,10 @@ class StatusEndpointsTest : public ::testing::Test {
   }
 
   void Load(Dataset dataset = GenerateUniform(2000, 3)) {
-    std::unique_ptr<Engine> engine;
-    ASSERT_TRUE(
-        Engine::Create(std::move(dataset), EngineOptions(), &engine).ok());
-    engine_ = std::move(engine);
+    StatusOr<std::unique_ptr<Engine>> engine =
+        Engine::Create(std::move(dataset), EngineOptions());
+    ASSERT_TRUE(engine.ok());
+    engine_ = *std::move(engine);
   }
 
   std::shared_ptr<Engine> engine_;

@@ -416,20 +416,21 @@ bool Reference::Agrees(const Point2& q, const LocateResult& got,
 
 Status Reference::Build(const std::string& dataset_path,
                         std::unique_ptr<Reference>* reference) {
-  Dataset dataset;
-  const Status loaded = LoadDataset(dataset_path, &dataset);
-  if (!loaded.ok()) return loaded;
-  return FromDataset(std::move(dataset), reference);
+  StatusOr<Dataset> dataset = LoadDataset(dataset_path);
+  if (!dataset.ok()) return dataset.status();
+  return FromDataset(*std::move(dataset), reference);
 }
 
 Status Reference::FromDataset(Dataset dataset,
                               std::unique_ptr<Reference>* reference) {
   std::unique_ptr<Reference> built(new Reference());
   built->dataset_ = std::move(dataset);
-  const Status status =
-      Triangulation::Build(built->dataset_, &built->triangulation_);
-  if (status.ok()) *reference = std::move(built);
-  return status;
+  StatusOr<std::unique_ptr<Triangulation>> triangulation =
+      Triangulation::Build(built->dataset_);
+  if (!triangulation.ok()) return triangulation.status();
+  built->triangulation_ = *std::move(triangulation);
+  *reference = std::move(built);
+  return Status::OK();
 }
 
 std::string Reference::Disagreements(std::span<const Point2> queries,

@@ -246,11 +246,10 @@ TEST_F(LocatordTest, StreamAnswersMatchReferenceInOrder) {
 }
 
 TEST_F(LocatordTest, GetStatsDescribesDatasetAndCountsQueries) {
-  std::unique_ptr<Engine> engine;
-  Dataset dataset = reference_->dataset();
-  ASSERT_TRUE(
-      Engine::Create(std::move(dataset), EngineOptions(), &engine).ok());
-  const DatasetInfo& want = engine->dataset_info();
+  const StatusOr<std::unique_ptr<Engine>> engine =
+      Engine::Create(reference_->dataset(), EngineOptions());
+  ASSERT_TRUE(engine.ok());
+  const DatasetInfo& want = (*engine)->dataset_info();
 
   const v1::GetStatsResponse before = GetStats(*stub_);
   v1::LocateResponse unary;

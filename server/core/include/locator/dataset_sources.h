@@ -39,6 +39,7 @@
 #include "locator/dataset.h"
 #include "locator/geometry.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 
 namespace locator {
 
@@ -50,20 +51,19 @@ bool IsGeneratorSpec(std::string_view spec);
 std::vector<std::string> DatasetCompanionFiles(const std::string& path);
 
 // Loads a dataset from a file path or a generator spec (see above).
-Status LoadDataset(const std::string& spec, Dataset* out,
-                   const DatasetLimits& limits = DatasetLimits());
+StatusOr<Dataset> LoadDataset(const std::string& spec,
+                              const DatasetLimits& limits = DatasetLimits());
 
 // Parses CSV/XYZ text. `filename` is only used in error messages.
-Status ParseXyzText(std::string_view text, std::string_view filename,
-                    Dataset* out,
-                    const DatasetLimits& limits = DatasetLimits());
+StatusOr<Dataset> ParseXyzText(std::string_view text, std::string_view filename,
+                               const DatasetLimits& limits = DatasetLimits());
 
 // Parses Triangle .node text ("<#points> <dim=2> <#attributes> <#markers>"
 // then "<index> <x> <y> [attributes...] [marker]"); the first attribute, if
 // any, becomes the value.
-Status ParseNodeText(std::string_view text, std::string_view filename,
-                     Dataset* out,
-                     const DatasetLimits& limits = DatasetLimits());
+StatusOr<Dataset> ParseNodeText(std::string_view text,
+                                std::string_view filename,
+                                const DatasetLimits& limits = DatasetLimits());
 
 // Parses Triangle .poly text: a node section as ParseNodeText (the vertex
 // count must not be 0: points in a separate .node are not supported), then
@@ -71,28 +71,28 @@ Status ParseNodeText(std::string_view text, std::string_view filename,
 // "<#holes>" and "<index> <x> <y>" rows, then optionally "<#regions>" and
 // "<index> <x> <y> <attribute> [max area]" rows. Segment endpoints are point
 // indices numbered like the node section (from 0 or 1).
-Status ParsePolyText(std::string_view text, std::string_view filename,
-                     Dataset* out,
-                     const DatasetLimits& limits = DatasetLimits());
+StatusOr<Dataset> ParsePolyText(std::string_view text,
+                                std::string_view filename,
+                                const DatasetLimits& limits = DatasetLimits());
 
 // Parses OFF text: the header "OFF" (its counts may follow on the same
 // line), "<#vertices> <#faces> <#edges>", vertex rows "x y z" and face rows
 // "3 i j k [colour...]" with 0-based vertex indices. z becomes the value, so
 // an OFF dataset always has values (all zero for a flat mesh). A face with
 // another corner count is an error: only triangles are served.
-Status ParseOffText(std::string_view text, std::string_view filename,
-                    Dataset* out,
-                    const DatasetLimits& limits = DatasetLimits());
+StatusOr<Dataset> ParseOffText(std::string_view text, std::string_view filename,
+                               const DatasetLimits& limits = DatasetLimits());
 
 // Parses Triangle's .ele text ("<#triangles> <nodes per triangle: 3 or 6>
 // <#attributes>", then "<index> <n1> <n2> <n3> [more nodes] [attributes]")
 // against the points of the .node text (as ParseNodeText); node indices are
 // numbered like the .node file. Only the first three nodes of a triangle
 // (its corners) are used.
-Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
-                    std::string_view node_text, std::string_view node_filename,
-                    Dataset* out,
-                    const DatasetLimits& limits = DatasetLimits());
+StatusOr<Dataset> ParseEleText(std::string_view ele_text,
+                               std::string_view ele_filename,
+                               std::string_view node_text,
+                               std::string_view node_filename,
+                               const DatasetLimits& limits = DatasetLimits());
 
 // Parses WKT text into constraints: LINESTRING and MULTILINESTRING become
 // breaklines, every ring of a POLYGON and MULTIPOLYGON a domain ring (a
@@ -102,8 +102,8 @@ Status ParseEleText(std::string_view ele_text, std::string_view ele_filename,
 // "LINESTRING Z (...)" or as a third coordinate), z is the value along the
 // line or ring; a vertex without z must then be a dataset point. Keywords
 // are case-insensitive; M coordinates are refused.
-Status ParseWktConstraints(std::string_view text, std::string_view filename,
-                           DatasetConstraints* out);
+StatusOr<DatasetConstraints> ParseWktConstraints(std::string_view text,
+                                                 std::string_view filename);
 
 // Splits "POINTS+PATH.wkt" at its last '+' into the points spec and the WKT
 // path; false (outputs untouched) for any other spec.
@@ -133,7 +133,7 @@ struct GeneratorSpec {
 
 // Parses a spec for which IsGeneratorSpec() holds; InvalidArgument naming
 // what is wrong otherwise.
-Status ParseGeneratorSpec(const std::string& spec, GeneratorSpec* out);
+StatusOr<GeneratorSpec> ParseGeneratorSpec(const std::string& spec);
 
 }  // namespace locator
 

@@ -34,6 +34,7 @@
 #include "locator/profile.h"
 #include "locator/raster.h"
 #include "locator/status.h"
+#include "locator/status_or.h"
 #include "locator/tuning_options.h"
 
 namespace locator {
@@ -73,24 +74,22 @@ class Engine {
   // there (see BuildOrMapMesh). Fails
   // with InvalidArgument for fewer than 3 distinct or all-collinear points,
   // or an unknown strategy.
-  static Status Create(Dataset dataset, const EngineOptions& options,
-                       std::unique_ptr<Engine>* engine);
+  static StatusOr<std::unique_ptr<Engine>> Create(Dataset dataset,
+                                                  const EngineOptions& options);
   // As Create, for `tin`, a TIN simplified from source samples (its mesh
   // as constraints.triangles, see server/core/terrain/) whose certificate
   // is `simplification`: dataset_info() reports it.
-  static Status CreateSimplified(Dataset tin,
-                                 const SimplificationStats& simplification,
-                                 const EngineOptions& options,
-                                 std::unique_ptr<Engine>* engine);
+  static StatusOr<std::unique_ptr<Engine>> CreateSimplified(
+      Dataset tin, const SimplificationStats& simplification,
+      const EngineOptions& options);
   // The engine of the dataset with `fingerprint` from its mesh file in
   // options.mesh_cache_dir, without the dataset itself (see
   // FindGeneratedFingerprint); stats report `origin` as its source, CRS and
   // certificate. NotFound if there is no file, or why the file is unusable
   // (MapCachedMesh); the outcome is in dataset_info().mesh_cache either way
   // when it succeeds.
-  static Status CreateFromMeshFile(uint64_t fingerprint, DatasetOrigin origin,
-                                   const EngineOptions& options,
-                                   std::unique_ptr<Engine>* engine);
+  static StatusOr<std::unique_ptr<Engine>> CreateFromMeshFile(
+      uint64_t fingerprint, DatasetOrigin origin, const EngineOptions& options);
   ~Engine();
 
   Engine(const Engine&) = delete;
@@ -166,16 +165,14 @@ class Engine {
 
   Engine();
   // Create with the certificate `simplification`, if any.
-  static Status Build(Dataset dataset,
-                      std::optional<SimplificationStats> simplification,
-                      const EngineOptions& options,
-                      std::unique_ptr<Engine>* engine);
-  // Sets up the strategy on `built` and fills the dataset facts; `start` is
-  // when the build began.
-  static Status Finish(BuiltMesh built, const EngineOptions& options,
-                       std::chrono::steady_clock::time_point start,
-                       std::unique_ptr<Engine> e,
-                       std::unique_ptr<Engine>* engine);
+  static StatusOr<std::unique_ptr<Engine>> Build(
+      Dataset dataset, std::optional<SimplificationStats> simplification,
+      const EngineOptions& options);
+  // Sets up the strategy of `e` on `built` and fills the dataset facts;
+  // `start` is when the build began.
+  static StatusOr<std::unique_ptr<Engine>> Finish(
+      BuiltMesh built, const EngineOptions& options,
+      std::chrono::steady_clock::time_point start, std::unique_ptr<Engine> e);
   // Counts `queries` answered at total `cost` in the serving statistics.
   void Record(uint64_t queries, uint64_t cost) const;
   // What the strategy is asked to fill for a locate of `detail` whose

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_macros.h"
 #include "server/core/cgal/orientation.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/mesh/serving_mesh.h"
@@ -213,9 +214,8 @@ void ConvertSkeleton(const Triangulation& t, const Skeleton& skeleton,
 Status SimplifyPoints(const Dataset& in, const TinOptions& options,
                       Dataset* out, SimplificationStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  Status s = CheckTinOptions(options);
-  if (s.ok()) s = CheckInput(in);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckTinOptions(options));
+  RETURN_IF_ERROR(CheckInput(in));
   const SortedPoints sorted(in.points);
   const std::vector<uint32_t> hull = HullCorners(in.points, sorted);
   if (hull.size() < 3) {
@@ -225,8 +225,8 @@ Status SimplifyPoints(const Dataset& in, const TinOptions& options,
         "formed");
   }
   const Skeleton skeleton = MakeSkeleton(in, sorted, hull);
-  std::unique_ptr<Triangulation> t;
-  if (s = Triangulation::Build(skeleton.dataset, &t); !s.ok()) return s;
+  ASSIGN_OR_RETURN(std::unique_ptr<Triangulation> t,
+                   Triangulation::Build(skeleton.dataset));
   FirstMesh first;
   ConvertSkeleton(*t, skeleton, &first);
   if (options.max_points > 0 &&
@@ -288,11 +288,11 @@ Status SimplifyPoints(const Dataset& in, const TinOptions& options,
 
   TinProgressReporter progress(options, 1);
   refiner.ScanAll(PointMeasure::kFace);
-  if (s = refiner.Refine(options.max_points, &progress); !s.ok()) return s;
+  RETURN_IF_ERROR(refiner.Refine(options.max_points, &progress));
   // The engine's own interpolation; points it finds beyond the target
   // differ from the build's measure by rounding only.
   refiner.ScanAll(PointMeasure::kServed);
-  if (s = refiner.Refine(options.max_points, &progress); !s.ok()) return s;
+  RETURN_IF_ERROR(refiner.Refine(options.max_points, &progress));
   stats->max_error = refiner.MaxError();
 
   // Kept input points in input order, then the constraints' own points.

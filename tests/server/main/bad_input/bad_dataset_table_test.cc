@@ -327,9 +327,9 @@ std::string MeshCacheCsv() {
 
 // The name of the mesh file of `csv` in a mesh cache.
 std::string MeshFileNameOf(const std::string& csv) {
-  Dataset dataset;
-  EXPECT_TRUE(ParseXyzText(csv, "mesh_cache.csv", &dataset).ok());
-  return MeshFilePath("", DatasetFingerprint(dataset));
+  const StatusOr<Dataset> dataset = ParseXyzText(csv, "mesh_cache.csv");
+  EXPECT_TRUE(dataset.ok());
+  return dataset.ok() ? MeshFilePath("", DatasetFingerprint(*dataset)) : "";
 }
 
 // A row serving MeshCacheCsv() with --mesh-cache beside a mesh file holding

@@ -84,17 +84,18 @@ std::unique_ptr<HostileServer> HostileServer::Create() {
   for (char& c : garbage) c = static_cast<char>(rng());
   gis::testing::WriteFile(s.reload_dir_ + "/garbage.gpkg", garbage);
 
-  Dataset plain, hill;
-  if (Status loaded = LoadDataset(s.csv_.path(), &plain); !loaded.ok()) {
-    ADD_FAILURE() << loaded.ToString();
+  StatusOr<Dataset> plain = LoadDataset(s.csv_.path());
+  if (!plain.ok()) {
+    ADD_FAILURE() << plain.status().ToString();
     return nullptr;
   }
+  Dataset hill;
   if (Status loaded = gis::LoadOgrDataset(s.gpkg_, &hill); !loaded.ok()) {
     ADD_FAILURE() << loaded.ToString();
     return nullptr;
   }
   s.plain_ = std::make_unique<DatasetOracle>(
-      "plain", ReferenceOf(std::move(plain)), /*plane=*/true);
+      "plain", ReferenceOf(*std::move(plain)), /*plane=*/true);
   s.utm_ = std::make_unique<DatasetOracle>("utm", ReferenceOf(std::move(hill)),
                                            /*plane=*/false);
   s.request_crs_ =
