@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "common/gis/crs_verdicts.h"
@@ -179,6 +180,22 @@ Status CrsTransformer::ToDataset(std::span<Point2> points,
     }
   }
   return Status::OK();
+}
+
+void CrsTransformer::ToDatasetWhereDefined(std::span<Point2> points) const {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (Point2& p : points) {
+    if (!IsFinite(p)) continue;
+    Point2 lon_lat = p;
+    const bool inside =
+        Transform(request_to_lon_lat_.get(), PJ_FWD, &lon_lat) &&
+        std::all_of(areas_.begin(), areas_.end(), [&](const AreaOfUse& a) {
+          return a.Contains(lon_lat.x, lon_lat.y);
+        });
+    if (!inside || !Transform(request_to_dataset_.get(), PJ_FWD, &p)) {
+      p = Point2{kNaN, kNaN};
+    }
+  }
 }
 
 Status CrsTransformer::ToRequest(std::span<Point2> points) const {

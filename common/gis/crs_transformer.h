@@ -65,6 +65,11 @@ class CrsTransformer {
   // name.
   Status ToDataset(std::span<Point2> points, size_t first_index = 0) const;
 
+  // Maps `points` (request CRS) to the dataset CRS in place, as ToDataset,
+  // but a point outside the area of use of either CRS, or that PROJ cannot
+  // transform, becomes NaN instead of failing the call: for a map tile,
+  // whose pixels may lie anywhere on Earth, such pixels are simply empty.
+  void ToDatasetWhereDefined(std::span<Point2> points) const;
   // Maps `points` (dataset CRS) back to the request CRS in place;
   // InvalidArgument naming the first point PROJ cannot transform.
   Status ToRequest(std::span<Point2> points) const;

@@ -12,6 +12,7 @@
 #define LOCATOR_CORE_RASTER_RENDER_H_
 
 #include <cstdint>
+#include <span>
 
 #include "locator/raster.h"
 #include "server/core/mesh/serving_mesh.h"
@@ -25,6 +26,16 @@ namespace locator {
 // the mesh's dataset.
 void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
                 uint32_t first_row, uint32_t rows, double* out);
+
+// Renders the value at each of `points` into `out` (points.size() values)
+// as RenderRows renders cells, each walk starting from the previous point's
+// triangle: points in scan order (a raster's cell centres mapped to another
+// CRS) cost about what the cells of a raster do. A non-finite point gets
+// `nodata`. Preconditions: CheckInterpolation(how) is OK for the mesh's
+// dataset.
+void RenderPoints(const ServingMesh& mesh, uint32_t hint,
+                  std::span<const Point2> points, Interpolation how,
+                  double nodata, double* out);
 
 }  // namespace locator
 

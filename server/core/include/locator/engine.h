@@ -137,6 +137,15 @@ class Engine {
   Status RenderRows(const RasterSpec& spec, uint32_t first_row, uint32_t rows,
                     double* out) const;
 
+  // Renders the value at each of `points` into `out` (points.size()
+  // values) with RenderRows' scan coherence, each walk starting from the
+  // previous point's triangle, for points in scan order that are not a
+  // raster of this dataset's CRS (a map tile's pixel centres mapped here).
+  // A non-finite point, or one outside the hull or the domain, gets
+  // `nodata`. InvalidArgument as CheckInterpolation(how).
+  Status RenderPoints(std::span<const Point2> points, Interpolation how,
+                      double nodata, double* out) const;
+
   // Re-tunes the strategy now (no-op for fixed strategies).
   void Retune();
 
