@@ -149,6 +149,15 @@ INSTANTIATE_TEST_SUITE_P(Encodings, TerrainTileTest,
                          ::testing::Values(TerrainEncoding::kTerrarium,
                                            TerrainEncoding::kMapbox));
 
+TEST(TerrainTileSourceTest, OnlyTilesWithinTheZoneSkipThePixelCheck) {
+  std::unique_ptr<gis::CrsTransformer> to_utm;
+  ASSERT_TRUE(gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_utm).ok());
+  EXPECT_TRUE(to_utm->SeparableBoxInAreaOfUse(TileAtSouthWestCorner(13).Box()));
+  // UTM 33N is used from 12°E to 18°E, north of the equator.
+  EXPECT_FALSE(to_utm->SeparableBoxInAreaOfUse(TileAddress{0, 0, 0}.Box()));
+  EXPECT_FALSE(to_utm->SeparableBoxInAreaOfUse(TileAddress{3, 4, 2}.Box()));
+}
+
 TEST(TerrainTileSourceTest, ADatasetWithoutACrsGetsNoTiles) {
   const std::unique_ptr<Engine> engine = UtmTerrain(100, "");
   const StatusOr<std::string> png = RenderTerrainTile(
