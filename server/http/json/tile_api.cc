@@ -10,9 +10,11 @@
 // If-None-Match that names the ETag. Tiles of a server that wants a token
 // are "private", so that no shared cache hands them to someone without one.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "server/http/api_error.h"
 #include "server/http/json/api_answers.h"
