@@ -77,9 +77,13 @@ Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,
   return Status::OK();
 }
 
-Status Engine::RenderPoints(std::span<const Point2> points, Interpolation how,
-                            double nodata, double* out) const {
+Status Engine::RenderPoints(std::span<const Point2> points, size_t row_length,
+                            Interpolation how, double nodata,
+                            double* out) const {
   if (Status s = CheckInterpolation(how); !s.ok()) return s;
+  if (row_length == 0) {
+    return Status::InvalidArgument("RenderPoints: row_length must be >= 1");
+  }
   const auto first = std::find_if(points.begin(), points.end(),
                                   [](const Point2& p) { return IsFinite(p); });
   if (first == points.end()) {
@@ -87,8 +91,8 @@ Status Engine::RenderPoints(std::span<const Point2> points, Interpolation how,
     return Status::OK();
   }
   const ServingMesh& mesh = *mesh_;
-  ::locator::RenderPoints(mesh, StartNear(mesh, *locator_, *first), points, how,
-                          nodata, out);
+  ::locator::RenderPoints(mesh, StartNear(mesh, *locator_, *first), points,
+                          row_length, how, nodata, out);
   return Status::OK();
 }
 

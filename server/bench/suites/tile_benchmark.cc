@@ -99,7 +99,8 @@ Status RunTileBenchmark(const TileBenchOptions& options, std::ostream& out) {
       RETURN_IF_ERROR(TilePixelsInDatasetCrs(*engine, tile, &pixels));
       proj += watch.Seconds();
       watch.Restart();
-      RETURN_IF_ERROR(engine->RenderPoints(pixels, Interpolation::kLinear, 0,
+      RETURN_IF_ERROR(engine->RenderPoints(pixels, TileAddress::kPixels,
+                                           Interpolation::kLinear, 0,
                                            heights.data()));
       walk += watch.Seconds();
     }

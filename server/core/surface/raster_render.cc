@@ -90,16 +90,27 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
 }
 
 void RenderPoints(const ServingMesh& mesh, uint32_t hint,
-                  std::span<const Point2> points, Interpolation how,
-                  double nodata, double* out) {
+                  std::span<const Point2> points, size_t row_length,
+                  Interpolation how, double nodata, double* out) {
+  uint32_t row_start = hint;
   uint32_t face = hint;
-  for (const Point2& q : points) {
+  bool row_started = false;
+  for (size_t i = 0; i < points.size(); ++i) {
+    // A row's first point is next to the previous row's, not to that row's
+    // last point a tile's width away.
+    if (i % row_length == 0) {
+      face = row_start;
+      row_started = false;
+    }
+    const Point2& q = points[i];
     if (!IsFinite(q)) {
       *out++ = nodata;
       continue;
     }
     const MeshWalkOutcome w = Walk(mesh, face, q);
     face = w.face;
+    if (!row_started) row_start = face;
+    row_started = true;
     *out++ = CellValue(mesh, how, nodata, w, q);
   }
 }
