@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
@@ -53,6 +54,62 @@ StatusOr<BoundingBox> DatasetBoxIn(const Engine& engine, std::string_view crs) {
   return box;
 }
 
+// The approximate transform of a row of pixel centres, as GDAL's
+// GDALApproxTransform: the row's two ends and its middle are transformed
+// exactly; where the linear interpolation of the ends is within
+// `tolerance` (dataset units, in x and in y) of the exact middle, the
+// pixels between are interpolated, otherwise the span is split at the
+// middle and each half is treated alike. PROJ's map from Web Mercator to a
+// dataset's CRS is smooth, so over a span short enough to pass the test it
+// is close to a quadratic, whose distance from its chord peaks at the
+// middle: the middle's error bounds the span's. A span with a point PROJ
+// cannot map is transformed exactly, point by point.
+class RowTransform {
+ public:
+  RowTransform(const gis::CrsTransformer& transformer, double tolerance)
+      : transformer_(transformer), tolerance_(tolerance) {}
+
+  // Maps row[first..last] in place; row[first] and row[last] are mapped
+  // already, the others are still in the request CRS.
+  void Span(std::span<Point2> row, size_t first, size_t last) const {
+    if (last - first < 2) return;
+    const size_t middle = first + (last - first) / 2;
+    const Point2 a = row[first], b = row[last];
+    Exact(row.subspan(middle, 1));
+    const Point2 m = row[middle];
+    if (!IsFinite(a) || !IsFinite(b) || !IsFinite(m)) {
+      Exact(row.subspan(first + 1, middle - first - 1));
+      Exact(row.subspan(middle + 1, last - middle - 1));
+      return;
+    }
+    const Point2 chord = At(a, b, first, last, middle);
+    if (std::abs(chord.x - m.x) > tolerance_ ||
+        std::abs(chord.y - m.y) > tolerance_) {
+      Span(row, first, middle);
+      Span(row, middle, last);
+      return;
+    }
+    for (size_t i = first + 1; i < last; ++i) {
+      if (i != middle) row[i] = At(a, b, first, last, i);
+    }
+  }
+
+  void Exact(std::span<Point2> points) const {
+    transformer_.ToDatasetWhereDefined(points, /*known_inside=*/true);
+  }
+
+ private:
+  // The point of index i on the chord from a (index first) to b (last).
+  static Point2 At(const Point2& a, const Point2& b, size_t first, size_t last,
+                   size_t i) {
+    const double t = static_cast<double>(i - first) / (last - first);
+    return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  }
+
+  const gis::CrsTransformer& transformer_;
+  const double tolerance_;
+};
+
 }  // namespace
 
 Status CheckTileSource(const Engine& engine, std::string_view name) {
@@ -83,9 +140,25 @@ Status TilePixelsInDatasetCrs(const Engine& engine, const TileAddress& tile,
   RETURN_IF_ERROR(gis::CrsTransformer::ForThread(
       std::string(kTileCrs), engine.dataset_info().crs, &transformer));
   // Web Mercator's longitude depends on x alone and its latitude on y
-  // alone, so a tile inside the area of use needs no check per pixel.
-  transformer->ToDatasetWhereDefined(
-      *pixels, transformer->SeparableBoxInAreaOfUse(tile.Box()));
+  // alone, so a tile inside the area of use needs no check per pixel; a
+  // tile reaching outside is transformed exactly, pixel by pixel, with it.
+  if (!transformer->SeparableBoxInAreaOfUse(tile.Box())) {
+    transformer->ToDatasetWhereDefined(*pixels);
+    return Status::OK();
+  }
+  const size_t last = raster.width - 1;
+  for (uint32_t row = 0; row < raster.height; ++row) {
+    const std::span<Point2> line(pixels->data() + size_t{row} * raster.width,
+                                 raster.width);
+    transformer->ToDatasetWhereDefined(line.first(1), /*known_inside=*/true);
+    transformer->ToDatasetWhereDefined(line.last(1), /*known_inside=*/true);
+    // The bound: kTilePositionTolerance of the row's pixel width in the
+    // dataset's CRS (NaN if an end is undefined: then no span passes).
+    const double pixel =
+        std::hypot(line[last].x - line[0].x, line[last].y - line[0].y) / last;
+    RowTransform(*transformer, kTilePositionTolerance * pixel)
+        .Span(line, 0, last);
+  }
   return Status::OK();
 }
 
@@ -97,9 +170,9 @@ StatusOr<std::string> RenderTerrainTile(const Engine& engine,
   std::vector<Point2> pixels;
   RETURN_IF_ERROR(TilePixelsInDatasetCrs(engine, tile, &pixels));
   std::vector<double> heights(pixels.size());
-  RETURN_IF_ERROR(engine.RenderPoints(pixels, Interpolation::kLinear,
-                                      std::numeric_limits<double>::quiet_NaN(),
-                                      heights.data()));
+  RETURN_IF_ERROR(engine.RenderPoints(
+      pixels, TileAddress::kPixels, Interpolation::kLinear,
+      std::numeric_limits<double>::quiet_NaN(), heights.data()));
   std::vector<uint8_t> rgba(heights.size() * 4);
   for (size_t i = 0; i < heights.size(); ++i) {
     // NaN is the nodata: outside the hull, the domain or the CRS's area.

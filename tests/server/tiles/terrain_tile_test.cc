@@ -1,16 +1,22 @@
 // Terrain tiles of a TIN in UTM zone 33N: every pixel of a tile half over
 // the data decodes to the value LocateBatch gives at the pixel's centre
-// (transformed from EPSG:3857 by a CrsTransformer of the test's own) within
-// half the encoding's quantum (a quantum and a half on an edge), and is
-// transparent exactly where LocateBatch finds no value. Tiles far away or
-// of the whole world are transparent where PROJ cannot go, a dataset
-// without a CRS or values gets none, and TileJSON names the right zooms.
+// (transformed exactly from EPSG:3857 by a CrsTransformer of the test's
+// own) within half the encoding's quantum (a quantum and a half on an
+// edge), plus the facet's slope times the distance from the renderer's
+// approximate centre, which is within kTilePositionTolerance of the exact
+// one; on facets of slope <= 1 that shift moves no value by half a quantum.
+// It is transparent exactly where LocateBatch finds no value. Tiles
+// far away or of the whole world are transparent where PROJ cannot go, a
+// dataset without a CRS or values gets none, and TileJSON names the right
+// zooms.
 
 #include "server/tiles/terrain_tile.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -34,6 +40,19 @@ double Height(const Point2& p) {
   return 400 +
          120 * std::sin((p.x - kWest) / 700) * std::cos((p.y - kSouth) / 500) +
          0.01 * (p.y - kSouth);
+}
+
+// The slope (|gradient|) of the facet `r` found: the plane through its
+// corners at their Heights.
+double Slope(const LocateResult& r) {
+  const std::array<Point2, 3>& v = r.vertices;
+  const double h0 = Height(v[0]), h1 = Height(v[1]), h2 = Height(v[2]);
+  const double ax = v[1].x - v[0].x, ay = v[1].y - v[0].y;
+  const double bx = v[2].x - v[0].x, by = v[2].y - v[0].y;
+  const double det = ax * by - ay * bx;
+  const double gx = ((h1 - h0) * by - (h2 - h0) * ay) / det;
+  const double gy = ((h2 - h0) * ax - (h1 - h0) * bx) / det;
+  return std::hypot(gx, gy);
 }
 
 std::unique_ptr<Engine> UtmTerrain(size_t n, const std::string& crs) {
@@ -105,12 +124,31 @@ TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
     ASSERT_EQ(image.width, 256u);
     ASSERT_EQ(image.height, 256u);
 
+    // The renderer's centres are approximate (kTilePositionTolerance): each
+    // lies within the bound of its exact transform, in pixels of its row.
     const std::vector<Point2> centres = PixelCentres(tile);
-    std::vector<LocateResult> located;
+    std::vector<Point2> rendered;
+    ASSERT_TRUE(TilePixelsInDatasetCrs(*engine_, tile, &rendered).ok());
+    ASSERT_EQ(rendered.size(), centres.size());
+    double worst_position = 0;  // in pixels
+    for (size_t i = 0; i < centres.size(); ++i) {
+      const Point2& first = centres[i / 256 * 256];
+      const Point2& last = centres[i / 256 * 256 + 255];
+      const double pixel = std::hypot(last.x - first.x, last.y - first.y) / 255;
+      worst_position = std::max(
+          {worst_position, std::abs(rendered[i].x - centres[i].x) / pixel,
+           std::abs(rendered[i].y - centres[i].y) / pixel});
+    }
+    EXPECT_LE(worst_position, kTilePositionTolerance) << "z " << z;
+
+    std::vector<LocateResult> located, at_rendered;
     ASSERT_TRUE(engine_->LocateBatch(centres, &located).ok());
-    size_t opaque = 0, on_edges = 0;
+    ASSERT_TRUE(engine_->LocateBatch(rendered, &at_rendered).ok());
+    size_t opaque = 0, on_edges = 0, shifted_on_gentle_facets = 0;
     for (size_t i = 0; i < centres.size(); ++i) {
       const LocateResult& r = located[i];
+      // Exact: no exact centre of these tiles lies within the bound of the
+      // hull, so the approximation moves none across it.
       ASSERT_EQ(image.Alpha(i), r.has_value ? 255 : 0)
           << "z " << z << " pixel " << i % 256 << "," << i / 256;
       if (!r.has_value) continue;
@@ -118,10 +156,27 @@ TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
       const bool on_edge =
           r.type == LocationType::kEdge || r.type == LocationType::kVertex;
       on_edges += on_edge;
-      ASSERT_NEAR(DecodeHeight(encoding, image.Rgb(i)), r.value,
+      // The renderer draws the TIN at its centre: half a quantum of
+      // rounding (a quantum more on an edge).
+      ASSERT_TRUE(at_rendered[i].has_value);
+      const double decoded = DecodeHeight(encoding, image.Rgb(i));
+      ASSERT_NEAR(decoded, at_rendered[i].value,
                   (on_edge ? 1.5 : 0.5) * q + 1e-9)
           << "z " << z << " pixel " << i % 256 << "," << i / 256;
+      // Against the exact centre, plus what the centre's shift costs: the
+      // steeper facet's slope times the shift. The hull's sliver facets of
+      // a random TIN are steep (slopes past 10), gentle ones move less than
+      // half a quantum.
+      const double slope = std::max(Slope(r), Slope(at_rendered[i]));
+      const double shift = std::hypot(rendered[i].x - centres[i].x,
+                                      rendered[i].y - centres[i].y);
+      ASSERT_NEAR(decoded, r.value,
+                  (on_edge ? 1.5 : 0.5) * q + slope * shift + 1e-9)
+          << "z " << z << " pixel " << i % 256 << "," << i / 256;
+      shifted_on_gentle_facets +=
+          slope <= 1 && std::abs(at_rendered[i].value - r.value) >= 0.5 * q;
     }
+    EXPECT_EQ(shifted_on_gentle_facets, 0u) << "z " << z;
     // Partly over the data, so both kinds of pixel are checked.
     EXPECT_GT(opaque, 1000u) << "z " << z;
     EXPECT_LT(opaque, centres.size()) << "z " << z;
