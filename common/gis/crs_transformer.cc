@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "common/gis/crs_verdicts.h"
@@ -176,6 +177,38 @@ Status CrsTransformer::ToDataset(std::span<Point2> points,
     }
   }
   return Status::OK();
+}
+
+void CrsTransformer::ToDatasetWhereDefined(std::span<Point2> points,
+                                           bool known_inside) const {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (Point2& p : points) {
+    if (!IsFinite(p)) continue;
+    Point2 lon_lat = p;
+    const bool inside =
+        known_inside ||
+        (Transform(request_to_lon_lat_.get(), PJ_FWD, &lon_lat) &&
+         std::all_of(areas_.begin(), areas_.end(), [&](const AreaOfUse& a) {
+           return a.Contains(lon_lat.x, lon_lat.y);
+         }));
+    if (!inside || !Transform(request_to_dataset_.get(), PJ_FWD, &p)) {
+      p = Point2{kNaN, kNaN};
+    }
+  }
+}
+
+bool CrsTransformer::SeparableBoxInAreaOfUse(const BoundingBox& box) const {
+  Point2 low{box.min_x, box.min_y}, high{box.max_x, box.max_y};
+  if (!Transform(request_to_lon_lat_.get(), PJ_FWD, &low) ||
+      !Transform(request_to_lon_lat_.get(), PJ_FWD, &high)) {
+    return false;
+  }
+  // Both corners inside an area that does not cross 180° put the whole
+  // box of longitudes and latitudes between them inside it.
+  return std::all_of(areas_.begin(), areas_.end(), [&](const AreaOfUse& a) {
+    return a.west <= a.east && a.Contains(low.x, low.y) &&
+           a.Contains(high.x, high.y);
+  });
 }
 
 Status CrsTransformer::ToRequest(std::span<Point2> points) const {

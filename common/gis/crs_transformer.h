@@ -65,6 +65,21 @@ class CrsTransformer {
   // name.
   Status ToDataset(std::span<Point2> points, size_t first_index = 0) const;
 
+  // Maps `points` (request CRS) to the dataset CRS in place, as ToDataset,
+  // but a point outside the area of use of either CRS, or that PROJ cannot
+  // transform, becomes NaN instead of failing the call: for a map tile,
+  // whose pixels may lie anywhere on Earth, such pixels are simply empty.
+  // With `known_inside`, the caller vouches that every point lies in the
+  // area of use (SeparableBoxInAreaOfUse of a box holding them), and the
+  // per-point check is skipped.
+  void ToDatasetWhereDefined(std::span<Point2> points,
+                             bool known_inside = false) const;
+  // Whether all of `box` (request CRS) lies in the area of use of both
+  // CRSs, for a request CRS whose longitude depends on x alone and latitude
+  // on y alone, each monotonically (Web Mercator): then the box's corners
+  // bound its longitudes and latitudes. False when unsure (an area across
+  // 180°, a corner PROJ cannot map).
+  bool SeparableBoxInAreaOfUse(const BoundingBox& box) const;
   // Maps `points` (dataset CRS) back to the request CRS in place;
   // InvalidArgument naming the first point PROJ cannot transform.
   Status ToRequest(std::span<Point2> points) const;

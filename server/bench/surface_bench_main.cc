@@ -9,6 +9,7 @@
 //   locator-surface-bench --dem [--dem-sizes 1187,2373,4745,9490]
 //                         [--dem-errors 0.01,0.001,0.0005,0.0001]
 //                         [--dem-repeats 1] [--dem-reference 1]
+//   locator-surface-bench --tiles [--points 1000000] [--tiles-per-zoom 16]
 //
 // A program that prints figures, never a test: every comparison is made
 // within one run (the machine is shared and noisy).
@@ -21,6 +22,7 @@
 #include "server/bench/suites/dem_benchmark.h"
 #include "server/bench/suites/grid_benchmark.h"
 #include "server/bench/suites/profile_benchmark.h"
+#include "server/bench/suites/tile_benchmark.h"
 
 namespace {
 
@@ -32,9 +34,11 @@ struct SurfaceBenchRun {
   bool profile = false;
   bool interpolation = false;
   bool dem = false;
+  bool tiles = false;
   locator::bench::GridBenchOptions grid_options;
   locator::bench::SurfaceBenchOptions surface_options;
   locator::bench::DemBenchOptions dem_options;
+  locator::bench::TileBenchOptions tile_options;
 };
 
 // Declares the flags on `flags`, into `run`.
@@ -51,6 +55,10 @@ void AddSurfaceBenchFlags(SurfaceBenchRun* run, locator::FlagSet* flags) {
              "ns per point: linear, nearest, natural neighbour");
   flags->Add("dem", flag::Switch(&run->dem),
              "TIN builds of fractal DEMs, in hmm's shape");
+  flags->Add("tiles", flag::Switch(&run->tiles),
+             "ms per 256x256 terrain tile (PROJ, walk, PNG) by zoom");
+  flags->Add("tiles-per-zoom", flag::Count(&run->tile_options.tiles, 1, 1024),
+             "--tiles: tiles rendered per zoom");
   flags->Add("dem-sizes", flag::Counts(&dem.sizes, 2, 1u << 16),
              "--dem: DEM widths (= heights)");
   flags->Add("dem-errors", flag::Numbers(&dem.errors, 0, /*above=*/true),
@@ -81,21 +89,23 @@ void AddSurfaceBenchFlags(SurfaceBenchRun* run, locator::FlagSet* flags) {
 int main(int argc, char** argv) {
   SurfaceBenchRun run;
   locator::FlagSet flags(
-      "Usage: locator-surface-bench --grid|--profile|--interpolation|--dem "
+      "Usage: locator-surface-bench "
+      "--grid|--profile|--interpolation|--dem|--tiles "
       "[flags]\n\n"
       "Grid, profile and interpolation benchmarks: figures, not tests.");
   AddSurfaceBenchFlags(&run, &flags);
   locator::Status parsed = flags.Parse(argc, argv);
   if (parsed.ok() && !flags.help_requested() && !run.grid && !run.profile &&
-      !run.interpolation && !run.dem) {
+      !run.interpolation && !run.dem && !run.tiles) {
     parsed = locator::Status::InvalidArgument(
-        "give --grid, --profile, --interpolation or --dem");
+        "give --grid, --profile, --interpolation, --dem or --tiles");
   }
   if (std::optional<int> exit_code = locator::ExitCodeForFlags(
           kProgram, parsed, flags.help_requested() ? flags.Help() : "")) {
     return *exit_code;
   }
   run.grid_options.points = run.surface_options.points;
+  run.tile_options.points = run.surface_options.points;
   locator::Status result;
   if (run.grid) {
     result = locator::bench::RunGridBenchmark(run.grid_options, std::cout);
@@ -110,6 +120,9 @@ int main(int argc, char** argv) {
   }
   if (result.ok() && run.dem) {
     result = locator::bench::RunDemBenchmark(run.dem_options, std::cout);
+  }
+  if (result.ok() && run.tiles) {
+    result = locator::bench::RunTileBenchmark(run.tile_options, std::cout);
   }
   if (!result.ok()) {
     std::cerr << kProgram << ": " << result.ToString() << "\n";

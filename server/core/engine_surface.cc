@@ -1,5 +1,6 @@
 // Engine's surface queries: interpolation, profiles and rasters.
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -74,6 +75,25 @@ Status Engine::RenderRows(const RasterSpec& spec, uint32_t first_row,
   ::locator::RenderRows(
       mesh, StartNear(mesh, *locator_, spec.CellCentre(0, first_row)), spec,
       first_row, rows, out);
+  return Status::OK();
+}
+
+Status Engine::RenderPoints(std::span<const Point2> points, size_t row_length,
+                            Interpolation how, double nodata,
+                            double* out) const {
+  if (Status s = CheckInterpolation(how); !s.ok()) return s;
+  if (row_length == 0) {
+    return Status::InvalidArgument("RenderPoints: row_length must be >= 1");
+  }
+  const auto first = std::find_if(points.begin(), points.end(),
+                                  [](const Point2& p) { return IsFinite(p); });
+  if (first == points.end()) {
+    std::fill_n(out, points.size(), nodata);
+    return Status::OK();
+  }
+  const ServingMesh& mesh = *mesh_;
+  ::locator::RenderPoints(mesh, StartNear(mesh, *locator_, *first), points,
+                          row_length, how, nodata, out);
   return Status::OK();
 }
 

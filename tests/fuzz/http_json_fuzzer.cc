@@ -3,7 +3,9 @@
 // body) -> JSON parsing, admission, the service's Locate, LocateBatch,
 // Profile or Grid on a small fixed dataset (or on "utm", the same points
 // in UTM zone 33N with a CRS, so that request CRS strings reach PROJ) ->
-// the JSON answer.
+// the JSON answer. The tile routes take the input as the rest of their
+// path (and query) instead: /v1/datasets/utm/tiles/{input}, answered with
+// a PNG (or TileJSON) or an ApiError.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
@@ -65,12 +67,38 @@ constexpr Route kRoutes[] = {
     {"POST", "/v1/datasets/utm:locate"},
     {"POST", "/v1/datasets/utm:locateBatch"},
     {"POST", "/v1/datasets/utm:profile"},
+    // The input is the rest of the path (see FuzzOneInput).
+    {"GET", "/v1/datasets/utm/tiles/"},
+    {"GET", "/v1/datasets/utm/tiles"},
+    {"GET", "/v1/datasets/default/tiles/"},
 };
 
 [[noreturn]] void Fail(const std::string& what, const std::string& body) {
   std::fprintf(stderr, "http_json_fuzzer: %s\nanswer: %s\n", what.c_str(),
                body.c_str());
   std::abort();
+}
+
+// Whether `route` takes the input as the rest of its path.
+bool IsTileRoute(const Route& route) {
+  return std::string_view(route.path).find("/tiles") != std::string_view::npos;
+}
+
+// Checks a 200 answer of a tile route: a PNG, or TileJSON for tiles.json.
+void CheckTileAnswer(const HttpResponse& response) {
+  if (response.content_type == "image/png") {
+    if (!response.body.starts_with("\x89PNG\r\n\x1a\n")) {
+      Fail("a tile that is not a PNG", response.body.substr(0, 64));
+    }
+    return;
+  }
+  google::protobuf::Struct tile_json;
+  if (response.content_type != "application/json" ||
+      !google::protobuf::util::JsonStringToMessage(response.body, &tile_json)
+           .ok() ||
+      !tile_json.fields().contains("tiles")) {
+    Fail("a tile route answered neither a PNG nor TileJSON", response.body);
+  }
 }
 
 // An error message longer than this is a defect (issue 26: messages quote a
@@ -231,6 +259,22 @@ void FuzzOneInput(const uint8_t* data, size_t size) {
   request.path = route.path;
   request.body = body;
   request.headers = {{"content-type", "application/json"}};
+  if (IsTileRoute(route)) {
+    // The input goes into the path and the query, as the server hands
+    // them over (split at the first '?').
+    const size_t query = body.find('?');
+    request.path += body.substr(0, query);
+    request.query = query == std::string::npos ? "" : body.substr(query + 1);
+    request.body.clear();
+    request.headers.clear();
+    const HttpResponse response = Call(*fixture->api, request);
+    if (response.status == 200) {
+      CheckTileAnswer(response);
+    } else {
+      CheckError(response);
+    }
+    return;
+  }
   const HttpResponse response = Call(*fixture->api, request);
   if (response.content_type != "application/json") {
     Fail("not JSON: " + response.content_type, response.body);

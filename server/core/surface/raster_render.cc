@@ -64,12 +64,12 @@ namespace {
 // The value at the cell centre q that the walk `w` located, or nodata
 // outside the hull or the domain (a centre on the domain's boundary edge or
 // vertex takes the in-domain side).
-double CellValue(const ServingMesh& mesh, const RasterSpec& spec,
+double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
                  const MeshWalkOutcome& w, const Point2& q) {
-  if (!mesh.has_values()) return spec.nodata;
+  if (!mesh.has_values()) return nodata;
   const uint32_t f = ClosedDomainFace(mesh, w);
-  if (f == ServingMesh::kNoFace) return spec.nodata;
-  return ValueAt(mesh, f, q, spec.interpolation);
+  if (f == ServingMesh::kNoFace) return nodata;
+  return ValueAt(mesh, f, q, how);
 }
 
 }  // namespace
@@ -84,8 +84,34 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
       const MeshWalkOutcome w = Walk(mesh, face, q);
       face = w.face;
       if (col == 0) row_start = face;
-      *out++ = CellValue(mesh, spec, w, q);
+      *out++ = CellValue(mesh, spec.interpolation, spec.nodata, w, q);
     }
+  }
+}
+
+void RenderPoints(const ServingMesh& mesh, uint32_t hint,
+                  std::span<const Point2> points, size_t row_length,
+                  Interpolation how, double nodata, double* out) {
+  uint32_t row_start = hint;
+  uint32_t face = hint;
+  bool row_started = false;
+  for (size_t i = 0; i < points.size(); ++i) {
+    // A row's first point is next to the previous row's, not to that row's
+    // last point a tile's width away.
+    if (i % row_length == 0) {
+      face = row_start;
+      row_started = false;
+    }
+    const Point2& q = points[i];
+    if (!IsFinite(q)) {
+      *out++ = nodata;
+      continue;
+    }
+    const MeshWalkOutcome w = Walk(mesh, face, q);
+    face = w.face;
+    if (!row_started) row_start = face;
+    row_started = true;
+    *out++ = CellValue(mesh, how, nodata, w, q);
   }
 }
 

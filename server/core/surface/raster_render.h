@@ -12,6 +12,7 @@
 #define LOCATOR_CORE_RASTER_RENDER_H_
 
 #include <cstdint>
+#include <span>
 
 #include "locator/raster.h"
 #include "server/core/mesh/serving_mesh.h"
@@ -25,6 +26,18 @@ namespace locator {
 // the mesh's dataset.
 void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
                 uint32_t first_row, uint32_t rows, double* out);
+
+// Renders the value at each of `points` into `out` (points.size() values)
+// as RenderRows renders cells: the points come in rows of `row_length`
+// (the last may be shorter), each walk starts from the previous point's
+// triangle and each row's first from the previous row's first triangle, so
+// points in scan order (a raster's cell centres mapped to another CRS) cost
+// about what the cells of a raster do. A non-finite point gets `nodata`.
+// Preconditions: CheckInterpolation(how) is OK for the mesh's dataset;
+// row_length >= 1.
+void RenderPoints(const ServingMesh& mesh, uint32_t hint,
+                  std::span<const Point2> points, size_t row_length,
+                  Interpolation how, double nodata, double* out);
 
 }  // namespace locator
 

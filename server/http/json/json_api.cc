@@ -13,6 +13,7 @@
 #include "common/proto_json.h"
 #include "server/app/surface_convert.h"
 #include "server/http/api_error.h"
+#include "server/http/json/api_answers.h"
 #include "server/http/json/grid_json.h"
 
 namespace locator {
@@ -22,29 +23,6 @@ constexpr std::string_view kDatasetsPath = "/v1/datasets";
 // The most of protobuf's complaint about a body that an error shows: room
 // for the field's path and a quoted prefix of the value.
 constexpr size_t kParseErrorBytes = 2 * kQuotedInputBytes;
-
-HttpResponse JsonAnswer(const google::protobuf::Message& message) {
-  return HttpResponse{.content_type = kJsonContentType,
-                      .body = ProtoJson(message)};
-}
-
-HttpResponse NoRoute(const HttpRequest& request) {
-  return ApiError(Status::NotFound(
-      "no API method " + QuotedInput(request.method + " " + request.path) +
-      " (GET /v1/datasets, POST /v1/datasets/{name}:locate, :locateBatch, "
-      ":profile or :grid)"));
-}
-
-HttpResponse MethodNotAllowed(const HttpRequest& request,
-                              std::string_view allowed) {
-  HttpResponse response = ApiError(
-      Status::Unimplemented(QuotedInput(request.method) +
-                            " is not allowed on " + QuotedInput(request.path) +
-                            "; use " + std::string(allowed)),
-      405);
-  response.headers.emplace_back("Allow", std::string(allowed));
-  return response;
-}
 
 // Parses the body of a request for dataset `dataset` (the path's) into
 // *out, whose `dataset` field it sets. INVALID_ARGUMENT naming the parse
@@ -141,9 +119,22 @@ void JsonApi::Handle(HttpRequest request, HttpReply reply) {
     return;
   }
   const std::string_view prefix = "/v1/datasets/";
+  if (!path.starts_with(prefix)) {
+    reply(NoRoute(request));
+    return;
+  }
+  // Dataset names have neither '/' nor ':', so a '/' after the name starts
+  // the path of one of its resources (the tiles).
+  if (const size_t slash = path.find('/', prefix.size());
+      slash != std::string_view::npos) {
+    std::string name(path.substr(prefix.size(), slash - prefix.size()));
+    std::string rest(path.substr(slash));
+    ServeTiles(std::move(request), std::move(name), std::move(rest),
+               std::move(reply));
+    return;
+  }
   const size_t colon = path.rfind(':');
-  if (!path.starts_with(prefix) || colon == std::string_view::npos ||
-      colon < prefix.size()) {
+  if (colon == std::string_view::npos || colon < prefix.size()) {
     reply(NoRoute(request));
     return;
   }
@@ -189,25 +180,35 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
     }
     ApiLane& lane =
         request.body.size() <= route.cheap_up_to_bytes ? cheap_ : expensive_;
-    lane.Submit([this, &lane, serve = route.serve, deadline,
-                 call = *std::move(call), request = std::move(request),
-                 reply = std::move(reply)](bool admitted) mutable {
-      if (!admitted) {
-        reply(BusyError("the " + lane.name() + " lane of this server's " +
-                        "HTTP API has " + std::to_string(lane.max_waiting()) +
-                        " calls waiting, its limit "
-                        "(--http-max-waiting-calls); retry"));
-        return;
-      }
-      if (deadline.Passed()) {
-        reply(ApiError(deadline.ExceededStatus("waiting for a thread")));
-        return;
-      }
-      (this->*serve)(std::move(call), deadline, request, std::move(reply));
-    });
+    RunInLane(lane, deadline, std::move(reply),
+              [this, serve = route.serve, deadline, call = *std::move(call),
+               request = std::move(request)](HttpReply reply) mutable {
+                (this->*serve)(std::move(call), deadline, request,
+                               std::move(reply));
+              });
     return;
   }
   reply(NoRoute(request));
+}
+
+void JsonApi::RunInLane(ApiLane& lane, const CallDeadline& deadline,
+                        HttpReply reply,
+                        std::function<void(HttpReply reply)> serve) {
+  lane.Submit([&lane, deadline, reply = std::move(reply),
+               serve = std::move(serve)](bool admitted) mutable {
+    if (!admitted) {
+      reply(BusyError("the " + lane.name() + " lane of this server's " +
+                      "HTTP API has " + std::to_string(lane.max_waiting()) +
+                      " calls waiting, its limit "
+                      "(--http-max-waiting-calls); retry"));
+      return;
+    }
+    if (deadline.Passed()) {
+      reply(ApiError(deadline.ExceededStatus("waiting for a thread")));
+      return;
+    }
+    serve(std::move(reply));
+  });
 }
 
 template <typename Request, typename Response, auto run>

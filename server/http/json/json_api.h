@@ -11,6 +11,11 @@
 //                                          holding the header and every row
 //                                          (the gRPC call streams them)
 //
+//   GET  /v1/datasets/{name}/tiles/{z}/{x}/{y}.png?encoding=terrarium|mapbox
+//                                          a terrain tile (see tile_api.cc)
+//   GET  /v1/datasets/{name}/tiles.json?encoding=...
+//                                          its TileJSON 3.0.0
+//
 // Bodies are the proto messages in protobuf's JSON mapping (JsonFormat):
 // requests are parsed with JsonStringToMessage (field names as in the proto
 // or lowerCamelCase; an empty body is {}; unknown fields are errors) and
@@ -50,7 +55,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "server/app/locator_app.h"
@@ -124,6 +131,14 @@ class JsonApi {
                           std::string method, HttpReply reply);
   // GET /v1/datasets.
   void ServeListDatasets(const HttpRequest& request, HttpReply reply);
+  // GET /v1/datasets/{name}/{rest}: the terrain tiles and their TileJSON
+  // (tile_api.cc).
+  void ServeTiles(HttpRequest request, std::string name, std::string rest,
+                  HttpReply reply);
+  // Runs `serve` in `lane` with `reply`, unless the lane is full (503) or
+  // `deadline` passed while it waited (504).
+  void RunInLane(ApiLane& lane, const CallDeadline& deadline, HttpReply reply,
+                 std::function<void(HttpReply reply)> serve);
 
   // The method table: one line per API method of a dataset. A call whose
   // body has at most cheap_up_to_bytes runs in the cheap lane.

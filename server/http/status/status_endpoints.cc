@@ -6,6 +6,7 @@
 #include "common/proto_json.h"
 #include "server/http/api_error.h"
 #include "server/http/embedded_files.h"
+#include "server/http/query_string.h"
 
 namespace locator {
 namespace {
@@ -22,22 +23,6 @@ HttpResponse Failed(const Status& status) {
     return HttpResponse{503, kJsonContentType, R"({"state":"loading"})"};
   }
   return ApiError(status);
-}
-
-// The value of parameter `name` in the query string `query` ("" if absent).
-// Dataset names need no percent-decoding: they are [A-Za-z0-9_.-].
-std::string_view QueryParameter(std::string_view query, std::string_view name) {
-  while (!query.empty()) {
-    const size_t amp = query.find('&');
-    const std::string_view pair = query.substr(0, amp);
-    if (pair.size() > name.size() && pair.starts_with(name) &&
-        pair[name.size()] == '=') {
-      return pair.substr(name.size() + 1);
-    }
-    if (amp == std::string_view::npos) break;
-    query.remove_prefix(amp + 1);
-  }
-  return {};
 }
 
 std::string HistoryJson(const std::vector<StatsSample>& history) {

@@ -151,6 +151,40 @@ TEST(RasterTest, RowsRenderedInPiecesEqualTheWhole) {
   EXPECT_EQ(whole, pieces);
 }
 
+// RenderPoints over a raster's cell centres (a box wider than the data, so
+// rows start outside the hull too) renders what RenderRows does; a point
+// that is not finite gets nodata, and rows of no points are refused.
+TEST(RasterTest, PointsInRowsRenderAsTheRaster) {
+  const auto engine = EngineFor(test::PlaneDataset(2000, 3), "jump-and-walk");
+  ASSERT_NE(engine, nullptr);
+  const RasterSpec spec{.box = BoundingBox{-0.2, -0.1, 1.1, 1.2},
+                        .width = 64,
+                        .height = 48,
+                        .nodata = kNodata};
+  std::vector<Point2> centres;
+  for (uint32_t row = 0; row < spec.height; ++row) {
+    for (uint32_t col = 0; col < spec.width; ++col) {
+      centres.push_back(spec.CellCentre(col, row));
+    }
+  }
+  centres[70] = Point2{NAN, 0.5};
+  std::vector<double> points(centres.size());
+  ASSERT_TRUE(engine
+                  ->RenderPoints(centres, spec.width, Interpolation::kLinear,
+                                 kNodata, points.data())
+                  .ok());
+  const std::vector<double> cells = Render(*engine, spec);
+  for (size_t i = 0; i < cells.size(); ++i) {
+    if (i == 70) continue;
+    ASSERT_NEAR(points[i], cells[i], 1e-12) << "cell " << i;
+  }
+  EXPECT_EQ(points[70], kNodata);
+  const Status no_rows = engine->RenderPoints(
+      centres, 0, Interpolation::kLinear, kNodata, points.data());
+  EXPECT_EQ(no_rows.code(), Status::Code::kInvalidArgument);
+  EXPECT_NE(no_rows.message().find("row_length"), std::string::npos);
+}
+
 TEST(RasterTest, BadSpecsAreInvalidArgument) {
   const auto engine = EngineFor(test::PlaneDataset(500, 3));
   ASSERT_NE(engine, nullptr);

@@ -136,6 +136,17 @@ class Engine {
   Status RenderRows(const RasterSpec& spec, uint32_t first_row, uint32_t rows,
                     double* out) const;
 
+  // Renders the value at each of `points` into `out` (points.size()
+  // values) with RenderRows' scan coherence, for points in rows of
+  // `row_length` in scan order that are not a raster of this dataset's CRS
+  // (a map tile's pixel centres mapped here): each walk starts from the
+  // previous point's triangle, each row's first from the previous row's
+  // first. A non-finite point, or one outside the hull or the domain, gets
+  // `nodata`. InvalidArgument as CheckInterpolation(how), or if row_length
+  // is 0.
+  Status RenderPoints(std::span<const Point2> points, size_t row_length,
+                      Interpolation how, double nodata, double* out) const;
+
   // Re-tunes the strategy now (no-op for fixed strategies).
   void Retune();
 

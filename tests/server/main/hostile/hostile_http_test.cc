@@ -14,14 +14,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "tests/server/main/hostile/hostile_calls.h"
+#include "tests/server/main/hostile/hostile_http_rows.h"
 #include "tests/server/main/hostile/hostile_run.h"
-#include "tests/server/http/json_value.h"
-#include "tests/server/http/prometheus_text.h"
 
 namespace locator::test {
 namespace {
@@ -29,77 +27,7 @@ namespace {
 constexpr char kLocate[] = "/v1/datasets/plain:locate";
 constexpr char kProfile[] = "/v1/datasets/plain:profile";
 constexpr char kGrid[] = "/v1/datasets/plain:grid";
-constexpr size_t kMaxMetricsBytes = size_t{1} << 20;
 constexpr size_t kDeepNesting = 100000;
-
-struct HttpRow {
-  std::string label;
-  std::string method, target, body;
-  HttpHeaders headers;
-  // Sent as is on a fresh connection instead, when not empty.
-  std::string raw;
-  std::vector<unsigned> statuses;
-  // More checks of the reply; "" when it is right.
-  std::function<std::string(const HttpReply&)> check = nullptr;
-};
-
-// Splits what RawExchange received into a reply; status 0 if it is none.
-HttpReply ParseRawReply(const std::string& received) {
-  HttpReply reply;
-  if (received.rfind("HTTP/1.1 ", 0) != 0 || received.size() < 12) return reply;
-  reply.status = static_cast<unsigned>(std::stoi(received.substr(9, 3)));
-  const size_t end = received.find("\r\n\r\n");
-  if (end != std::string::npos) reply.body = received.substr(end + 4);
-  return reply;
-}
-
-std::string Header(const HttpReply& reply, const std::string& name) {
-  const auto it = reply.headers.find(name);
-  return it == reply.headers.end() ? "" : it->second;
-}
-
-std::string IsHtml(const HttpReply& reply) {
-  return Header(reply, "content-type").rfind("text/html", 0) == 0
-             ? ""
-             : "content type " + Header(reply, "content-type");
-}
-
-std::string NoSecrets(const HttpReply& reply) {
-  return reply.body.find("root:") == std::string::npos &&
-                 reply.body.find("the secret") == std::string::npos
-             ? ""
-             : "the reply holds a file's contents";
-}
-
-std::string SmallParsedMetrics(const HttpReply& reply) {
-  if (reply.body.size() >= kMaxMetricsBytes) {
-    return "/metrics is " + std::to_string(reply.body.size()) + " bytes";
-  }
-  PrometheusText parsed;
-  const Status parses = ParsePrometheusText(reply.body, &parsed);
-  return parses.ok() ? "" : parses.ToString();
-}
-
-std::string IsJson(const HttpReply& reply) {
-  JsonValue json;
-  return ParseJson(reply.body, &json).ok() ? "" : "not JSON";
-}
-
-std::function<std::string(const HttpReply&)> AllowsOrigin(
-    const std::string& origin) {
-  return [origin](const HttpReply& reply) {
-    const std::string allowed = Header(reply, "access-control-allow-origin");
-    return allowed == origin ? ""
-                             : "Access-Control-Allow-Origin '" + allowed +
-                                   "', want '" + origin + "'";
-  };
-}
-
-std::string NoCors(const HttpReply& reply) {
-  return Header(reply, "access-control-allow-origin").empty()
-             ? ""
-             : "Access-Control-Allow-Origin for an origin not allowed";
-}
 
 std::vector<HttpRow> Rows() {
   const std::string ok = HostileServer::kCorsOrigin;
@@ -363,6 +291,8 @@ std::vector<HttpRow> Rows() {
        raw_post + "Transfer-Encoding: chunked\r\n\r\nffffffffffffffff\r\nx",
        refused},
   };
+  const std::vector<HttpRow> tiles = TileRows();
+  rows.insert(rows.end(), tiles.begin(), tiles.end());
   return rows;
 }
 

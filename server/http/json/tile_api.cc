@@ -1,0 +1,165 @@
+// The HTTP routes of the terrain tiles (server/tiles/terrain_tile.h):
+//
+//   GET /v1/datasets/{name}/tiles/{z}/{x}/{y}.png?encoding=terrarium|mapbox
+//   GET /v1/datasets/{name}/tiles.json?encoding=terrarium|mapbox
+//
+// admitted as every dataset method is (LocatorApp::Admit: the drain, the
+// data token, the dataset) and run in the expensive lane (a tile walks
+// 65536 pixels). Both carry an ETag (TileETag: the dataset's generation and
+// the encoding) and Cache-Control, and answer 304 without rendering to an
+// If-None-Match that names the ETag. Tiles of a server that wants a token
+// are "private", so that no shared cache hands them to someone without one.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "server/http/api_error.h"
+#include "server/http/json/api_answers.h"
+#include "server/http/json/json_api.h"
+#include "server/http/query_string.h"
+#include "server/tiles/terrain_tile.h"
+
+namespace locator {
+namespace {
+
+constexpr std::string_view kTilesPrefix = "/tiles/";
+constexpr std::string_view kTileJsonPath = "/tiles.json";
+constexpr std::string_view kPngSuffix = ".png";
+// How long a browser may use a tile without asking again: a reload shows
+// within a minute, and a map panning back and forth does not ask twice.
+constexpr std::string_view kMaxAge = "max-age=60";
+
+// Whether the If-None-Match value `header` names `etag` (or is "*"); weak
+// tags (W/"...") compare by their tag, as RFC 9110 says for GET.
+bool NamesETag(std::string_view header, std::string_view etag) {
+  while (!header.empty()) {
+    const size_t comma = header.find(',');
+    std::string_view tag = header.substr(0, comma);
+    while (!tag.empty() && (tag.front() == ' ' || tag.front() == '\t')) {
+      tag.remove_prefix(1);
+    }
+    while (!tag.empty() && (tag.back() == ' ' || tag.back() == '\t')) {
+      tag.remove_suffix(1);
+    }
+    if (tag.starts_with("W/")) tag.remove_prefix(2);
+    if (tag == "*" || tag == etag) return true;
+    if (comma == std::string_view::npos) break;
+    header.remove_prefix(comma + 1);
+  }
+  return false;
+}
+
+// The URL template of the tiles of dataset `name` that a TileJSON fetched
+// by `request` points to: absolute when the request names a plausible Host
+// (behind a proxy that says X-Forwarded-Proto: https, an https one), else
+// the path alone, which a page of the same origin resolves.
+std::string TilesUrl(const HttpRequest& request, std::string_view name,
+                     std::string_view encoding) {
+  std::string url = std::string(JsonApi::kPathPrefix) + "datasets/" +
+                    std::string(name) +
+                    "/tiles/{z}/{x}/{y}.png?encoding=" + std::string(encoding);
+  const std::optional<std::string_view> host = request.Header("host");
+  constexpr std::string_view kHostCharacters =
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.-:[]";
+  if (!host.has_value() || host->empty() || host->size() > 255 ||
+      host->find_first_not_of(kHostCharacters) != std::string_view::npos) {
+    return url;
+  }
+  const bool https = request.Header("x-forwarded-proto") == "https";
+  return (https ? "https://" : "http://") + std::string(*host) + url;
+}
+
+}  // namespace
+
+void JsonApi::ServeTiles(HttpRequest request, std::string name,
+                         std::string rest, HttpReply reply) {
+  const bool tile_json = rest == kTileJsonPath;
+  if (!tile_json &&
+      !(rest.starts_with(kTilesPrefix) && rest.ends_with(kPngSuffix))) {
+    reply(NoRoute(request));
+    return;
+  }
+  if (request.method != "GET") {
+    reply(MethodNotAllowed(request, "GET"));
+    return;
+  }
+  const CallDeadline deadline = app_->DefaultDeadline();
+  StatusOr<LocatorApp::Admission> call = app_->Admit(
+      request.Header("authorization"), AccessPolicy::Scope::kData, name);
+  if (!call.ok()) {
+    reply(ApiError(call.status()));
+    return;
+  }
+  const StatusOr<TerrainEncoding> encoding =
+      ParseTerrainEncoding(QueryParameter(request.query, "encoding"));
+  if (!encoding.ok()) {
+    reply(ApiError(encoding.status()));
+    return;
+  }
+  TileAddress tile;
+  if (!tile_json) {
+    // "/tiles/{z}/{x}/{y}.png": three segments between the prefix and the
+    // suffix.
+    const std::string_view zxy = std::string_view(rest).substr(
+        kTilesPrefix.size(),
+        rest.size() - kTilesPrefix.size() - kPngSuffix.size());
+    const size_t first = zxy.find('/');
+    const size_t second = first == std::string_view::npos
+                              ? std::string_view::npos
+                              : zxy.find('/', first + 1);
+    if (second == std::string_view::npos ||
+        zxy.find('/', second + 1) != std::string_view::npos) {
+      reply(NoRoute(request));
+      return;
+    }
+    StatusOr<TileAddress> parsed = ParseTileAddress(
+        zxy.substr(0, first), zxy.substr(first + 1, second - first - 1),
+        zxy.substr(second + 1));
+    if (!parsed.ok()) {
+      reply(ApiError(parsed.status()));
+      return;
+    }
+    tile = *parsed;
+  }
+  std::vector<std::pair<std::string, std::string>> headers = {
+      {"ETag", TileETag(call->generation, *encoding)},
+      {"Cache-Control",
+       std::string(
+           app_->access_policy()
+                   .CheckAuthorization(std::nullopt, AccessPolicy::Scope::kData)
+                   .ok()
+               ? "public, "
+               : "private, ") +
+           std::string(kMaxAge)}};
+  if (const std::optional<std::string_view> match =
+          request.Header("if-none-match");
+      match.has_value() && NamesETag(*match, headers[0].second)) {
+    reply(HttpResponse{.status = 304, .body = "", .headers = headers});
+    return;
+  }
+  RunInLane(tile_json ? cheap_ : expensive_, deadline, std::move(reply),
+            [call = *std::move(call), request = std::move(request),
+             name = std::move(name), encoding = *encoding, tile, tile_json,
+             headers = std::move(headers)](HttpReply reply) mutable {
+              const Engine& engine = *call.engine;
+              StatusOr<std::string> body =
+                  tile_json ? TileJson(engine, name,
+                                       TilesUrl(request, name,
+                                                TerrainEncodingName(encoding)),
+                                       encoding)
+                            : RenderTerrainTile(engine, name, tile, encoding);
+              if (!body.ok()) {
+                reply(ApiError(body.status()));
+                return;
+              }
+              reply(HttpResponse{
+                  .content_type = tile_json ? kJsonContentType : "image/png",
+                  .body = *std::move(body),
+                  .headers = std::move(headers)});
+            });
+}
+
+}  // namespace locator

@@ -1,0 +1,74 @@
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tests/server/main/hostile/hostile_http_rows.h"
+
+namespace locator::test {
+
+std::vector<HttpRow> TileRows() {
+  const HttpHeaders json = {{"Content-Type", "application/json"}};
+  const std::vector<unsigned> bad = {400};
+  std::vector<HttpRow> rows;
+  const std::string tiles = "/v1/datasets/utm/tiles/";
+  const std::vector<std::pair<std::string, std::string>> bad_tiles = {
+      {"a tile at zoom 2^64", tiles + "18446744073709551616/0/0.png"},
+      {"a tile x of 5000 digits",
+       tiles + "3/" + std::string(5000, '7') + "/0.png"},
+      {"a tile y of -1", tiles + "3/0/-1.png"},
+      {"a tile zoom of NaN", tiles + "nan/0/0.png"},
+      {"a 6 KiB encoding",
+       tiles + "0/0/0.png?encoding=" + std::string(6000, 'e')},
+      {"a tile of a dataset without a CRS",
+       "/v1/datasets/plain/tiles/0/0/0.png"},
+  };
+  for (const auto& [label, target] : bad_tiles) {
+    rows.push_back({label, "GET", target, "", {}, "", bad});
+  }
+  const std::vector<HttpRow> tile_rows = {
+      {"a tile", "GET", tiles + "0/0/0.png", "", {}, "", {200}, IsPng},
+      {"a tile of a NUL dataset",
+       "GET",
+       "/v1/datasets/%00/tiles/0/0/0.png",
+       "",
+       {},
+       "",
+       {404}},
+      {"a tile path too deep",
+       "GET",
+       tiles + "1/1/1/1/1/1/1.png",
+       "",
+       {},
+       "",
+       {404}},
+      {"a 6 KiB If-None-Match",
+       "GET",
+       tiles + "0/0/0.png",
+       "",
+       {{"If-None-Match", std::string(6000, ',')}},
+       "",
+       {200},
+       IsPng},
+      {"POST a tile", "POST", tiles + "0/0/0.png", "{}", json, "", {405}},
+      {"TileJSON",
+       "GET",
+       "/v1/datasets/utm/tiles.json",
+       "",
+       {},
+       "",
+       {200},
+       IsJson},
+      {"TileJSON for a Host that is none",
+       "GET",
+       "/v1/datasets/utm/tiles.json",
+       "",
+       {{"Host", "evil\"}, {\"x\":\"<script>"}},
+       "",
+       {200, 400},
+       IsJson},
+  };
+  rows.insert(rows.end(), tile_rows.begin(), tile_rows.end());
+  return rows;
+}
+
+}  // namespace locator::test

@@ -1,0 +1,251 @@
+// Terrain tiles of a TIN in UTM zone 33N: every pixel of a tile half over
+// the data decodes to the value LocateBatch gives at the pixel's centre
+// (transformed exactly from EPSG:3857 by a CrsTransformer of the test's
+// own) within half the encoding's quantum (a quantum and a half on an
+// edge), plus the facet's slope times the distance from the renderer's
+// approximate centre, which is within kTilePositionTolerance of the exact
+// one; on facets of slope <= 1 that shift moves no value by half a quantum.
+// It is transparent exactly where LocateBatch finds no value. Tiles
+// far away or of the whole world are transparent where PROJ cannot go, a
+// dataset without a CRS or values gets none, and TileJSON names the right
+// zooms.
+
+#include "server/tiles/terrain_tile.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/gis/crs_transformer.h"
+#include "locator/dataset_sources.h"
+#include "locator/engine.h"
+#include "tests/server/tiles/png_decode.h"
+
+namespace locator {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr char kUtm33[] = "EPSG:32633";
+// The data: a 3 km square of the zone, near 15°E 49.6°N.
+constexpr double kWest = 500000, kSouth = 5500000, kSide = 3000;
+
+double Height(const Point2& p) {
+  return 400 +
+         120 * std::sin((p.x - kWest) / 700) * std::cos((p.y - kSouth) / 500) +
+         0.01 * (p.y - kSouth);
+}
+
+// The slope (|gradient|) of the facet `r` found: the plane through its
+// corners at their Heights.
+double Slope(const LocateResult& r) {
+  const std::array<Point2, 3>& v = r.vertices;
+  const double h0 = Height(v[0]), h1 = Height(v[1]), h2 = Height(v[2]);
+  const double ax = v[1].x - v[0].x, ay = v[1].y - v[0].y;
+  const double bx = v[2].x - v[0].x, by = v[2].y - v[0].y;
+  const double det = ax * by - ay * bx;
+  const double gx = ((h1 - h0) * by - (h2 - h0) * ay) / det;
+  const double gy = ((h2 - h0) * ax - (h1 - h0) * bx) / det;
+  return std::hypot(gx, gy);
+}
+
+std::unique_ptr<Engine> UtmTerrain(size_t n, const std::string& crs) {
+  Dataset d = GenerateUniform(n, 17);
+  for (Point2& p : d.points) {
+    p = Point2{kWest + p.x * kSide, kSouth + p.y * kSide};
+    d.values.push_back(Height(p));
+  }
+  d.crs = crs;
+  std::unique_ptr<Engine> engine;
+  const Status built = Engine::Create(std::move(d), EngineOptions(), &engine);
+  EXPECT_TRUE(built.ok()) << built.ToString();
+  return engine;
+}
+
+// The tile of zoom `z` holding the data's south-west corner, so that it is
+// partly over the data.
+TileAddress TileAtSouthWestCorner(uint32_t z) {
+  std::unique_ptr<gis::CrsTransformer> to_mercator;
+  EXPECT_TRUE(
+      gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_mercator).ok());
+  std::vector<Point2> corner = {{kWest + 10, kSouth + 10}};
+  EXPECT_TRUE(to_mercator->ToRequest(corner).ok());
+  const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, z);
+  return TileAddress{
+      z, static_cast<uint32_t>((corner[0].x + TileAddress::kHalfWorld) / side),
+      static_cast<uint32_t>((TileAddress::kHalfWorld - corner[0].y) / side)};
+}
+
+// The centres of `tile`'s pixels in the dataset's CRS, computed here from
+// the scheme's definition and transformed with a transformer of the test's.
+std::vector<Point2> PixelCentres(const TileAddress& tile) {
+  const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, tile.z);
+  std::vector<Point2> centres;
+  for (int row = 0; row < 256; ++row) {
+    for (int col = 0; col < 256; ++col) {
+      centres.push_back(
+          {-TileAddress::kHalfWorld + (tile.x + (col + 0.5) / 256) * side,
+           TileAddress::kHalfWorld - (tile.y + (row + 0.5) / 256) * side});
+    }
+  }
+  std::unique_ptr<gis::CrsTransformer> to_utm;
+  EXPECT_TRUE(gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_utm).ok());
+  const Status moved = to_utm->ToDataset(centres);
+  EXPECT_TRUE(moved.ok()) << moved.ToString();
+  return centres;
+}
+
+class TerrainTileTest : public ::testing::TestWithParam<TerrainEncoding> {
+ protected:
+  static void SetUpTestSuite() {
+    engine_ = UtmTerrain(20000, kUtm33).release();
+  }
+  static void TearDownTestSuite() { delete engine_; }
+  static Engine* engine_;
+};
+Engine* TerrainTileTest::engine_ = nullptr;
+
+TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
+  const TerrainEncoding encoding = GetParam();
+  const double q = TerrainQuantum(encoding);
+  for (uint32_t z : {13u, 15u}) {
+    const TileAddress tile = TileAtSouthWestCorner(z);
+    const StatusOr<std::string> png =
+        RenderTerrainTile(*engine_, "utm", tile, encoding);
+    ASSERT_TRUE(png.ok()) << png.status().ToString();
+    test::RgbaImage image;
+    ASSERT_TRUE(test::DecodeRgbaPng(*png, &image).ok());
+    ASSERT_EQ(image.width, 256u);
+    ASSERT_EQ(image.height, 256u);
+
+    // The renderer's centres are approximate (kTilePositionTolerance): each
+    // lies within the bound of its exact transform, in pixels of its row.
+    const std::vector<Point2> centres = PixelCentres(tile);
+    std::vector<Point2> rendered;
+    ASSERT_TRUE(TilePixelsInDatasetCrs(*engine_, tile, &rendered).ok());
+    ASSERT_EQ(rendered.size(), centres.size());
+    double worst_position = 0;  // in pixels
+    for (size_t i = 0; i < centres.size(); ++i) {
+      const Point2& first = centres[i / 256 * 256];
+      const Point2& last = centres[i / 256 * 256 + 255];
+      const double pixel = std::hypot(last.x - first.x, last.y - first.y) / 255;
+      worst_position = std::max(
+          {worst_position, std::abs(rendered[i].x - centres[i].x) / pixel,
+           std::abs(rendered[i].y - centres[i].y) / pixel});
+    }
+    EXPECT_LE(worst_position, kTilePositionTolerance) << "z " << z;
+
+    std::vector<LocateResult> located, at_rendered;
+    ASSERT_TRUE(engine_->LocateBatch(centres, &located).ok());
+    ASSERT_TRUE(engine_->LocateBatch(rendered, &at_rendered).ok());
+    size_t opaque = 0, on_edges = 0, shifted_on_gentle_facets = 0;
+    for (size_t i = 0; i < centres.size(); ++i) {
+      const LocateResult& r = located[i];
+      // Exact: no exact centre of these tiles lies within the bound of the
+      // hull, so the approximation moves none across it.
+      ASSERT_EQ(image.Alpha(i), r.has_value ? 255 : 0)
+          << "z " << z << " pixel " << i % 256 << "," << i / 256;
+      if (!r.has_value) continue;
+      ++opaque;
+      const bool on_edge =
+          r.type == LocationType::kEdge || r.type == LocationType::kVertex;
+      on_edges += on_edge;
+      // The renderer draws the TIN at its centre: half a quantum of
+      // rounding (a quantum more on an edge).
+      ASSERT_TRUE(at_rendered[i].has_value);
+      const double decoded = DecodeHeight(encoding, image.Rgb(i));
+      ASSERT_NEAR(decoded, at_rendered[i].value,
+                  (on_edge ? 1.5 : 0.5) * q + 1e-9)
+          << "z " << z << " pixel " << i % 256 << "," << i / 256;
+      // Against the exact centre, plus what the centre's shift costs: the
+      // steeper facet's slope times the shift. The hull's sliver facets of
+      // a random TIN are steep (slopes past 10), gentle ones move less than
+      // half a quantum.
+      const double slope = std::max(Slope(r), Slope(at_rendered[i]));
+      const double shift = std::hypot(rendered[i].x - centres[i].x,
+                                      rendered[i].y - centres[i].y);
+      ASSERT_NEAR(decoded, r.value,
+                  (on_edge ? 1.5 : 0.5) * q + slope * shift + 1e-9)
+          << "z " << z << " pixel " << i % 256 << "," << i / 256;
+      shifted_on_gentle_facets +=
+          slope <= 1 && std::abs(at_rendered[i].value - r.value) >= 0.5 * q;
+    }
+    EXPECT_EQ(shifted_on_gentle_facets, 0u) << "z " << z;
+    // Partly over the data, so both kinds of pixel are checked.
+    EXPECT_GT(opaque, 1000u) << "z " << z;
+    EXPECT_LT(opaque, centres.size()) << "z " << z;
+  }
+}
+
+TEST_P(TerrainTileTest, TilesWithoutDataAreTransparent) {
+  // The whole world (mostly outside the zone's area of use) and a tile in
+  // the Pacific.
+  for (const TileAddress& tile :
+       {TileAddress{0, 0, 0}, TileAddress{6, 2, 30}}) {
+    const StatusOr<std::string> png =
+        RenderTerrainTile(*engine_, "utm", tile, GetParam());
+    ASSERT_TRUE(png.ok()) << png.status().ToString();
+    test::RgbaImage image;
+    ASSERT_TRUE(test::DecodeRgbaPng(*png, &image).ok());
+    size_t opaque = 0;
+    for (size_t i = 0; i < 256 * 256; ++i) opaque += image.Alpha(i) != 0;
+    // The 3 km of data fall within one pixel of the world or none.
+    EXPECT_LE(opaque, 1u) << tile.z;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, TerrainTileTest,
+                         ::testing::Values(TerrainEncoding::kTerrarium,
+                                           TerrainEncoding::kMapbox));
+
+TEST(TerrainTileSourceTest, OnlyTilesWithinTheZoneSkipThePixelCheck) {
+  std::unique_ptr<gis::CrsTransformer> to_utm;
+  ASSERT_TRUE(gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_utm).ok());
+  EXPECT_TRUE(to_utm->SeparableBoxInAreaOfUse(TileAtSouthWestCorner(13).Box()));
+  // UTM 33N is used from 12°E to 18°E, north of the equator.
+  EXPECT_FALSE(to_utm->SeparableBoxInAreaOfUse(TileAddress{0, 0, 0}.Box()));
+  EXPECT_FALSE(to_utm->SeparableBoxInAreaOfUse(TileAddress{3, 4, 2}.Box()));
+}
+
+TEST(TerrainTileSourceTest, ADatasetWithoutACrsGetsNoTiles) {
+  const std::unique_ptr<Engine> engine = UtmTerrain(100, "");
+  const StatusOr<std::string> png = RenderTerrainTile(
+      *engine, "plain", TileAddress{0, 0, 0}, TerrainEncoding::kTerrarium);
+  ASSERT_FALSE(png.ok());
+  EXPECT_EQ(png.status().code(), Status::Code::kFailedPrecondition);
+  EXPECT_THAT(png.status().message(),
+              HasSubstr("dataset 'plain' has no CRS, so its terrain has no "
+                        "place on a web map's tiles (EPSG:3857)"));
+  EXPECT_EQ(
+      TileJson(*engine, "plain", "u", TerrainEncoding::kMapbox).status().code(),
+      Status::Code::kFailedPrecondition);
+}
+
+TEST(TerrainTileSourceTest, TileJsonBoundsAndZooms) {
+  const std::unique_ptr<Engine> engine = UtmTerrain(20000, kUtm33);
+  const StatusOr<std::string> json =
+      TileJson(*engine, "utm", "http://h/t/{z}/{x}/{y}.png?encoding=mapbox",
+               TerrainEncoding::kMapbox);
+  ASSERT_TRUE(json.ok()) << json.status().ToString();
+  EXPECT_THAT(*json, HasSubstr(R"("tilejson":"3.0.0")"));
+  EXPECT_THAT(
+      *json,
+      HasSubstr(R"("tiles":["http://h/t/{z}/{x}/{y}.png?encoding=mapbox"])"));
+  EXPECT_THAT(*json, HasSubstr(R"("encoding":"mapbox")"));
+  // 3 km at 49.6°N is ~4.6 km of Mercator: one tile spans it from zoom 13
+  // (4.9 km at the equator, 7.5 km of Mercator metres... per tile at 13 is
+  // 4892 m), and 20000 points ~21 m apart in the field, ~33 Mercator metres,
+  // want the zoom whose pixels are below that: 13 (19 m).
+  EXPECT_THAT(*json, HasSubstr(R"("minzoom":13)"));
+  EXPECT_THAT(*json, HasSubstr(R"("maxzoom":13)"));
+  EXPECT_THAT(*json, HasSubstr(R"("bounds":[15.)"));
+}
+
+}  // namespace
+}  // namespace locator
