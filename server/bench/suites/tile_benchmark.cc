@@ -23,8 +23,8 @@ constexpr char kCrs[] = "EPSG:32633";
 
 // The terrain's centre in EPSG:3857.
 StatusOr<Point2> MercatorCentre() {
-  std::unique_ptr<gis::CrsTransformer> transformer;
-  RETURN_IF_ERROR(gis::CrsTransformer::Create("EPSG:3857", kCrs, &transformer));
+  ASSIGN_OR_RETURN(std::unique_ptr<gis::CrsTransformer> transformer,
+                   gis::CrsTransformer::Create("EPSG:3857", kCrs));
   const BoundingBox box = TerrainBox();
   std::vector<Point2> centre = {{kEasting + (box.min_x + box.max_x) / 2,
                                  kNorthing + (box.min_y + box.max_y) / 2}};
@@ -64,9 +64,9 @@ Status RunTileBenchmark(const TileBenchOptions& options, std::ostream& out) {
   Dataset terrain = TerrainDataset(options.points, 42);
   for (Point2& p : terrain.points) p = Point2{p.x + kEasting, p.y + kNorthing};
   terrain.crs = kCrs;
-  std::unique_ptr<Engine> engine;
   // The default strategy, self-tuning, as locatord serves.
-  RETURN_IF_ERROR(Engine::Create(std::move(terrain), EngineOptions(), &engine));
+  ASSIGN_OR_RETURN(std::unique_ptr<Engine> engine,
+                   Engine::Create(std::move(terrain), EngineOptions()));
   StatusOr<Point2> centre = MercatorCentre();
   if (!centre.ok()) return centre.status();
   // The first tile made on a thread also makes its PROJ transformer.

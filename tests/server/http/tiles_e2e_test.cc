@@ -17,6 +17,7 @@
 #include <memory>
 #include <string>
 #include <variant>
+#include <utility>
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
@@ -24,9 +25,9 @@
 #include "server/tiles/tile_address.h"
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
-#include "tests/server/main/e2e_support.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/server/main/e2e_support.h"
 #include "tests/server/tiles/png_decode.h"
 
 namespace locator::test {
@@ -37,6 +38,15 @@ using Code = grpc::StatusCode;
 
 constexpr int kHillSide = 30;  // 900 points, 400 m apart: ~12 km
 constexpr char kUtm33[] = "EPSG:32633";
+
+// The transformer between EPSG:3857 (its request side) and UTM 33N.
+std::unique_ptr<gis::CrsTransformer> MercatorUtmTransformer() {
+  StatusOr<std::unique_ptr<gis::CrsTransformer>> created =
+      gis::CrsTransformer::Create("EPSG:3857", kUtm33);
+  EXPECT_TRUE(created.ok()) << created.status().ToString();
+  return created.ok() ? *std::move(created) : nullptr;
+}
+
 // Its tiles at zoom 12 are ~6 km of ground at the hill's latitude.
 constexpr uint32_t kZoom = 12;
 
@@ -67,9 +77,8 @@ class TilesE2eTest : public ::testing::Test {
   // The zoom-kZoom tile holding the hill's south-west corner (the hill's
   // first point), so that it is partly over the data.
   static TileAddress CornerTile() {
-    std::unique_ptr<gis::CrsTransformer> to_mercator;
-    EXPECT_TRUE(
-        gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_mercator).ok());
+    const std::unique_ptr<gis::CrsTransformer> to_mercator =
+        MercatorUtmTransformer();
     std::vector<Point2> corner = {{1e300, 1e300}};
     for (const gis::testing::PointZ& p : gis::testing::UtmHill(kHillSide)) {
       corner[0] = Point2{std::min(corner[0].x, p.x + 100),
@@ -101,8 +110,7 @@ TEST_F(TilesE2eTest, PixelsAreGrpcLocateBatchValuesAtTheirCentres) {
            TileAddress::kHalfWorld - (tile.y + (row + 0.5) / 256) * side});
     }
   }
-  std::unique_ptr<gis::CrsTransformer> to_utm;
-  ASSERT_TRUE(gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_utm).ok());
+  const std::unique_ptr<gis::CrsTransformer> to_utm = MercatorUtmTransformer();
   ASSERT_TRUE(to_utm->ToDataset(centres).ok());
   std::unique_ptr<v1::Locator::Stub> stub = server_->NewStub();
   const std::vector<LocateResult> located =

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
@@ -33,6 +34,15 @@ namespace {
 using ::testing::HasSubstr;
 
 constexpr char kUtm33[] = "EPSG:32633";
+
+// The transformer between EPSG:3857 (its request side) and UTM 33N.
+std::unique_ptr<gis::CrsTransformer> MercatorUtmTransformer() {
+  StatusOr<std::unique_ptr<gis::CrsTransformer>> created =
+      gis::CrsTransformer::Create("EPSG:3857", kUtm33);
+  EXPECT_TRUE(created.ok()) << created.status().ToString();
+  return created.ok() ? *std::move(created) : nullptr;
+}
+
 // The data: a 3 km square of the zone, near 15°E 49.6°N.
 constexpr double kWest = 500000, kSouth = 5500000, kSide = 3000;
 
@@ -62,18 +72,17 @@ std::unique_ptr<Engine> UtmTerrain(size_t n, const std::string& crs) {
     d.values.push_back(Height(p));
   }
   d.crs = crs;
-  std::unique_ptr<Engine> engine;
-  const Status built = Engine::Create(std::move(d), EngineOptions(), &engine);
-  EXPECT_TRUE(built.ok()) << built.ToString();
-  return engine;
+  StatusOr<std::unique_ptr<Engine>> built =
+      Engine::Create(std::move(d), EngineOptions());
+  EXPECT_TRUE(built.ok()) << built.status().ToString();
+  return built.ok() ? *std::move(built) : nullptr;
 }
 
 // The tile of zoom `z` holding the data's south-west corner, so that it is
 // partly over the data.
 TileAddress TileAtSouthWestCorner(uint32_t z) {
-  std::unique_ptr<gis::CrsTransformer> to_mercator;
-  EXPECT_TRUE(
-      gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_mercator).ok());
+  const std::unique_ptr<gis::CrsTransformer> to_mercator =
+      MercatorUtmTransformer();
   std::vector<Point2> corner = {{kWest + 10, kSouth + 10}};
   EXPECT_TRUE(to_mercator->ToRequest(corner).ok());
   const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, z);
@@ -94,8 +103,7 @@ std::vector<Point2> PixelCentres(const TileAddress& tile) {
            TileAddress::kHalfWorld - (tile.y + (row + 0.5) / 256) * side});
     }
   }
-  std::unique_ptr<gis::CrsTransformer> to_utm;
-  EXPECT_TRUE(gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_utm).ok());
+  const std::unique_ptr<gis::CrsTransformer> to_utm = MercatorUtmTransformer();
   const Status moved = to_utm->ToDataset(centres);
   EXPECT_TRUE(moved.ok()) << moved.ToString();
   return centres;
@@ -205,8 +213,7 @@ INSTANTIATE_TEST_SUITE_P(Encodings, TerrainTileTest,
                                            TerrainEncoding::kMapbox));
 
 TEST(TerrainTileSourceTest, OnlyTilesWithinTheZoneSkipThePixelCheck) {
-  std::unique_ptr<gis::CrsTransformer> to_utm;
-  ASSERT_TRUE(gis::CrsTransformer::Create("EPSG:3857", kUtm33, &to_utm).ok());
+  const std::unique_ptr<gis::CrsTransformer> to_utm = MercatorUtmTransformer();
   EXPECT_TRUE(to_utm->SeparableBoxInAreaOfUse(TileAtSouthWestCorner(13).Box()));
   // UTM 33N is used from 12°E to 18°E, north of the equator.
   EXPECT_FALSE(to_utm->SeparableBoxInAreaOfUse(TileAddress{0, 0, 0}.Box()));
