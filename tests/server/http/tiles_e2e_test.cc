@@ -16,8 +16,8 @@
 #include <fstream>
 #include <memory>
 #include <string>
-#include <variant>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
@@ -29,6 +29,7 @@
 #include "tests/server/http/status_e2e_support.h"
 #include "tests/server/main/e2e_support.h"
 #include "tests/server/tiles/png_decode.h"
+#include "tests/server/tiles/tile_test_support.h"
 
 namespace locator::test {
 namespace {
@@ -37,15 +38,6 @@ using ::testing::HasSubstr;
 using Code = grpc::StatusCode;
 
 constexpr int kHillSide = 30;  // 900 points, 400 m apart: ~12 km
-constexpr char kUtm33[] = "EPSG:32633";
-
-// The transformer between EPSG:3857 (its request side) and UTM 33N.
-std::unique_ptr<gis::CrsTransformer> MercatorUtmTransformer() {
-  StatusOr<std::unique_ptr<gis::CrsTransformer>> created =
-      gis::CrsTransformer::Create("EPSG:3857", kUtm33);
-  EXPECT_TRUE(created.ok()) << created.status().ToString();
-  return created.ok() ? *std::move(created) : nullptr;
-}
 
 // Its tiles at zoom 12 are ~6 km of ground at the hill's latitude.
 constexpr uint32_t kZoom = 12;
@@ -101,17 +93,8 @@ std::unique_ptr<LocatordWithHttp> TilesE2eTest::server_;
 TEST_F(TilesE2eTest, PixelsAreGrpcLocateBatchValuesAtTheirCentres) {
   const TileAddress tile = CornerTile();
   // The pixel centres from the scheme's definition, in the dataset's CRS.
-  const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, tile.z);
-  std::vector<Point2> centres;
-  for (int row = 0; row < 256; ++row) {
-    for (int col = 0; col < 256; ++col) {
-      centres.push_back(
-          {-TileAddress::kHalfWorld + (tile.x + (col + 0.5) / 256) * side,
-           TileAddress::kHalfWorld - (tile.y + (row + 0.5) / 256) * side});
-    }
-  }
-  const std::unique_ptr<gis::CrsTransformer> to_utm = MercatorUtmTransformer();
-  ASSERT_TRUE(to_utm->ToDataset(centres).ok());
+  const std::vector<Point2> centres = PixelCentresInUtm33(tile);
+  ASSERT_EQ(centres.size(), 256u * 256u);
   std::unique_ptr<v1::Locator::Stub> stub = server_->NewStub();
   const std::vector<LocateResult> located =
       LocateInBatches(*stub, centres, 8192);

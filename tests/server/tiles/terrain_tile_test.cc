@@ -27,21 +27,16 @@
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
 #include "tests/server/tiles/png_decode.h"
+#include "tests/server/tiles/tile_test_support.h"
 
 namespace locator {
 namespace {
 
+using test::kUtm33;
+using test::MercatorUtmTransformer;
+using test::PixelCentresInUtm33;
+
 using ::testing::HasSubstr;
-
-constexpr char kUtm33[] = "EPSG:32633";
-
-// The transformer between EPSG:3857 (its request side) and UTM 33N.
-std::unique_ptr<gis::CrsTransformer> MercatorUtmTransformer() {
-  StatusOr<std::unique_ptr<gis::CrsTransformer>> created =
-      gis::CrsTransformer::Create("EPSG:3857", kUtm33);
-  EXPECT_TRUE(created.ok()) << created.status().ToString();
-  return created.ok() ? *std::move(created) : nullptr;
-}
 
 // The data: a 3 km square of the zone, near 15°E 49.6°N.
 constexpr double kWest = 500000, kSouth = 5500000, kSide = 3000;
@@ -91,24 +86,6 @@ TileAddress TileAtSouthWestCorner(uint32_t z) {
       static_cast<uint32_t>((TileAddress::kHalfWorld - corner[0].y) / side)};
 }
 
-// The centres of `tile`'s pixels in the dataset's CRS, computed here from
-// the scheme's definition and transformed with a transformer of the test's.
-std::vector<Point2> PixelCentres(const TileAddress& tile) {
-  const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, tile.z);
-  std::vector<Point2> centres;
-  for (int row = 0; row < 256; ++row) {
-    for (int col = 0; col < 256; ++col) {
-      centres.push_back(
-          {-TileAddress::kHalfWorld + (tile.x + (col + 0.5) / 256) * side,
-           TileAddress::kHalfWorld - (tile.y + (row + 0.5) / 256) * side});
-    }
-  }
-  const std::unique_ptr<gis::CrsTransformer> to_utm = MercatorUtmTransformer();
-  const Status moved = to_utm->ToDataset(centres);
-  EXPECT_TRUE(moved.ok()) << moved.ToString();
-  return centres;
-}
-
 class TerrainTileTest : public ::testing::TestWithParam<TerrainEncoding> {
  protected:
   static void SetUpTestSuite() {
@@ -134,7 +111,7 @@ TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
 
     // The renderer's centres are approximate (kTilePositionTolerance): each
     // lies within the bound of its exact transform, in pixels of its row.
-    const std::vector<Point2> centres = PixelCentres(tile);
+    const std::vector<Point2> centres = PixelCentresInUtm33(tile);
     std::vector<Point2> rendered;
     ASSERT_TRUE(TilePixelsInDatasetCrs(*engine_, tile, &rendered).ok());
     ASSERT_EQ(rendered.size(), centres.size());
