@@ -61,8 +61,9 @@ std::string ClientAddress(const tcp::socket& socket) {
 // server's connection table from Read() on (a refused one never is) and
 // idle there while it waits for a request header. Its members are only
 // touched on the server's thread.
-class HttpServer::Connection : public std::enable_shared_from_this<Connection>,
-                               public ConnectionTable::Member {
+class HttpServer::Connection final
+    : public std::enable_shared_from_this<Connection>,
+      public ConnectionTable::Member {
  public:
   Connection(HttpServer* server, tcp::socket socket, std::string address)
       : server_(server),
