@@ -181,7 +181,8 @@ StatusOr<std::string> RenderTerrainTile(const Engine& engine,
     std::copy(rgb.begin(), rgb.end(), rgba.begin() + 4 * i);
     rgba[4 * i + 3] = 255;
   }
-  return EncodeRgbaPng(rgba, TileAddress::kPixels, TileAddress::kPixels);
+  return EncodePng(rgba, TileAddress::kPixels, TileAddress::kPixels,
+                   PngColor::kRgba);
 }
 
 StatusOr<std::string> TileJson(const Engine& engine, std::string_view name,
@@ -241,7 +242,7 @@ StatusOr<std::string> TileJson(const Engine& engine, std::string_view name,
   return out.TakeText();
 }
 
-std::string TileETag(uint64_t generation, TerrainEncoding encoding) {
+std::string TileETag(uint64_t generation, std::string_view variant) {
   static const uint64_t run = [] {
     std::random_device random;
     return uint64_t{random()} << 32 | random();
@@ -250,7 +251,7 @@ std::string TileETag(uint64_t generation, TerrainEncoding encoding) {
   std::snprintf(text, sizeof text, "\"%016llx-%llu-",
                 static_cast<unsigned long long>(run),
                 static_cast<unsigned long long>(generation));
-  return text + std::string(TerrainEncodingName(encoding)) + "\"";
+  return text + std::string(variant) + "\"";
 }
 
 }  // namespace locator

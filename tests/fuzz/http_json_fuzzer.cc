@@ -4,8 +4,8 @@
 // Profile or Grid on a small fixed dataset (or on "utm", the same points
 // in UTM zone 33N with a CRS, so that request CRS strings reach PROJ) ->
 // the JSON answer. The tile routes take the input as the rest of their
-// path (and query) instead: /v1/datasets/utm/tiles/{input}, answered with
-// a PNG (or TileJSON) or an ApiError.
+// path (and query) instead: /v1/datasets/utm/tiles/{input} or
+// .../hillshade/{input}, answered with a PNG (or TileJSON) or an ApiError.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
@@ -71,6 +71,7 @@ constexpr Route kRoutes[] = {
     {"GET", "/v1/datasets/utm/tiles/"},
     {"GET", "/v1/datasets/utm/tiles"},
     {"GET", "/v1/datasets/default/tiles/"},
+    {"GET", "/v1/datasets/utm/hillshade/"},
 };
 
 [[noreturn]] void Fail(const std::string& what, const std::string& body) {
@@ -81,7 +82,9 @@ constexpr Route kRoutes[] = {
 
 // Whether `route` takes the input as the rest of its path.
 bool IsTileRoute(const Route& route) {
-  return std::string_view(route.path).find("/tiles") != std::string_view::npos;
+  const std::string_view path = route.path;
+  return path.find("/tiles") != std::string_view::npos ||
+         path.find("/hillshade/") != std::string_view::npos;
 }
 
 // Checks a 200 answer of a tile route: a PNG, or TileJSON for tiles.json.
