@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package that locator's build, tests and benchmarks
-# need. Idempotent: when all packages are present it changes nothing and does
-# not touch the network. Prints one line per step; apt's own output goes to
+# need, then the npm packages pinned by the lockfiles in NPM_DIRS (with
+# Debian's npm). Idempotent: when all packages are present it changes
+# nothing and does not touch the network. Prints one line per step; apt's own output goes to
 # a log file ($LOCATOR_DEPS_LOG, default /tmp/locator-install-deps.log) that
 # is shown if a step fails.
 set -euo pipefail
@@ -23,6 +24,10 @@ PACKAGES=(
 )
 
 LOG="${LOCATOR_DEPS_LOG:-/tmp/locator-install-deps.log}"
+REPO="$(cd "$(dirname "$0")/.." && pwd)"
+# The JavaScript locator embeds or runs, each directory's package-lock.json
+# installed into its node_modules by `npm ci`: MapLibre GL JS for the web map.
+NPM_DIRS=(client/web)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do
@@ -30,11 +35,9 @@ for pkg in "${PACKAGES[@]}"; do
     missing+=("$pkg")
   fi
 done
-
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#PACKAGES[@]} packages present"
-  exit 0
-fi
+# Debian's npm, unless an npm is installed already (a nodejs package from
+# elsewhere, such as NodeSource's, bundles one and conflicts with Debian's).
+if ! command -v npm > /dev/null; then missing+=(npm); fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -56,8 +59,26 @@ step() {
   fi
 }
 
-step "updating the package lists" $SUDO apt-get update
-step "installing ${#missing[@]} packages (${missing[*]})" \
-  env DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y \
-  --no-install-recommends "${missing[@]}"
-echo "install-deps: done; apt's output is in $LOG"
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+else
+  step "updating the package lists" $SUDO apt-get update
+  step "installing ${#missing[@]} packages (${missing[*]})" \
+    env DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y \
+    --no-install-recommends "${missing[@]}"
+fi
+
+# npm_ci DIR: installs DIR's lockfile; a copy of the lockfile in
+# node_modules marks an install that is up to date.
+npm_ci() {
+  local dir=$REPO/$1
+  if cmp -s "$dir/package-lock.json" "$dir/node_modules/.locator-lock.json"; then
+    echo "install-deps: $1/node_modules is up to date"
+    return
+  fi
+  step "npm ci in $1" npm ci --prefix "$dir" --no-audit --no-fund \
+    --ignore-scripts
+  cp "$dir/package-lock.json" "$dir/node_modules/.locator-lock.json"
+}
+for dir in "${NPM_DIRS[@]}"; do npm_ci "$dir"; done
+echo "install-deps: done; the installers' output is in $LOG"
