@@ -131,6 +131,7 @@ class WktReader {
     RETURN_IF_ERROR(ReadCoordinate(&p.x));
     RETURN_IF_ERROR(ReadCoordinate(&p.y));
     const char next = Peek();
+    if (pos_ == text_.size()) return Error("expected ')'");
     if (next != ',' && next != ')') {
       return Error("a point has two coordinates, x y");
     }
