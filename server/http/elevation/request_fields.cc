@@ -52,6 +52,32 @@ std::string JsonNumberText(double value) {
   return NumberText(value);
 }
 
+// Whether `json` nests objects and arrays (outside strings) deeper than
+// `limit`. Protobuf's JSON parser recurses once per level into a Struct,
+// so a body nested 10^5 deep would overflow the stack; a body of fields
+// that are strings or numbers nests once.
+bool NestsDeeperThan(std::string_view json, size_t limit) {
+  size_t depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (in_string) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '{' || c == '[') {
+      if (++depth > limit) return true;
+    } else if ((c == '}' || c == ']') && depth > 0) {
+      --depth;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 StatusOr<std::string> PercentDecoded(std::string_view text,
@@ -117,6 +143,12 @@ StatusOr<RequestFields> RequestFields::Of(const HttpRequest& request) {
         "a POST body must be application/json or "
         "application/x-www-form-urlencoded; Content-Type is " +
         QuotedInput(type.value_or("absent")));
+  }
+  if (NestsDeeperThan(request.body, 1)) {
+    return Status::InvalidArgument(
+        "Invalid JSON: the body must be one object whose fields are strings "
+        "or numbers, as {\"locations\": \"lat,lng|lat,lng\"}; it nests "
+        "deeper");
   }
   google::protobuf::Struct object;
   google::protobuf::util::JsonParseOptions options;

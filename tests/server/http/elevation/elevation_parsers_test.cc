@@ -111,11 +111,22 @@ TEST(RequestFieldsTest, ReadsPostBodiesAsOpenTopoDataDoes) {
            {"application/json", "{\"locations\": \"1,2\"", "Invalid JSON"},
            {"application/json", std::string(200, '[') + std::string(200, ']'),
             "Invalid JSON"},
+           // Deep enough to overflow the stack of a recursive parser.
+           {"application/json",
+            "{\"locations\":" + std::string(100000, '[') +
+                std::string(100000, ']') + "}",
+            "nests deeper"},
        }) {
     const StatusOr<RequestFields> refused = RequestFields::Of(Post(type, body));
-    ASSERT_FALSE(refused.ok()) << body;
-    EXPECT_THAT(refused.status().message(), HasSubstr(problem)) << body;
+    ASSERT_FALSE(refused.ok()) << body.substr(0, 80);
+    EXPECT_THAT(refused.status().message(), HasSubstr(problem))
+        << body.substr(0, 80);
   }
+  // Brackets and escaped quotes inside strings do not nest.
+  const StatusOr<RequestFields> strings = RequestFields::Of(
+      Post("application/json", R"({"a": "[[[[", "b": "\"{{", "c": "]]"})"));
+  ASSERT_TRUE(strings.ok()) << strings.status().ToString();
+  EXPECT_EQ(strings->Get("b"), "\"{{");
 }
 
 TEST(OpenTopoDataQueryTest, ReadsOpenTopoDatasDocumentedQueries) {
