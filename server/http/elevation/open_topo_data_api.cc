@@ -104,6 +104,13 @@ void ServeOpenTopoData(LocatorApp* app, LocatorApp::Admission call,
       });
 }
 
+// The query `request` asks for.
+StatusOr<OpenTopoDataQuery> QueryOf(const HttpRequest& request) {
+  StatusOr<RequestFields> fields = RequestFields::Of(request);
+  if (!fields.ok()) return fields.status();
+  return ParseOpenTopoDataQuery(*fields);
+}
+
 }  // namespace
 
 void OpenTopoDataApi::Handle(HttpRequest request, HttpReply reply) {
@@ -148,12 +155,26 @@ void OpenTopoDataApi::Handle(HttpRequest request, HttpReply reply) {
         call->dataset->name() + ":locateBatch")));
     return;
   }
-  StatusOr<RequestFields> fields = RequestFields::Of(request);
-  if (!fields.ok()) {
-    reply(OpenTopoDataError(fields.status()));
+  // A large body is read in the expensive lane, as the JSON API reads its
+  // bodies in its lanes, so that the HTTP server's threads never parse more
+  // than kCheapBatchBodyBytes.
+  if (request.body.size() > JsonApi::kCheapBatchBodyBytes) {
+    lanes_->RunCall(
+        /*expensive=*/true, deadline, std::move(reply),
+        [app = app_, call = *std::move(call), request = std::move(request),
+         deadline](const Status& admitted, HttpReply reply) mutable {
+          StatusOr<OpenTopoDataQuery> query =
+              admitted.ok() ? QueryOf(request) : admitted;
+          if (!query.ok()) {
+            reply(OpenTopoDataError(query.status()));
+            return;
+          }
+          ServeOpenTopoData(app, std::move(call), *query, deadline,
+                            std::move(reply));
+        });
     return;
   }
-  StatusOr<OpenTopoDataQuery> query = ParseOpenTopoDataQuery(*fields);
+  StatusOr<OpenTopoDataQuery> query = QueryOf(request);
   if (!query.ok()) {
     reply(OpenTopoDataError(query.status()));
     return;

@@ -257,8 +257,9 @@ TEST_F(ElevationE2eTest, OpenTopoDataGetIsGrpcLocateBatchInLatLng) {
 }
 
 TEST_F(ElevationE2eTest, OpenTopoDataPostsAreGrpcLocateBatchInLatLng) {
-  // More points than a URL holds: the JSON body Open Topo Data documents.
-  const std::vector<Point2> points = LngLatGrid(40);
+  // More points than a URL holds, in a body large enough to be read in the
+  // expensive lane: the JSON body Open Topo Data documents.
+  const std::vector<Point2> points = LngLatGrid(45);
   const std::vector<double> expected = GrpcValues(points, "EPSG:4326");
   const HttpReply json = Post(port(), "/opentopodata/v1/terrain",
                               R"({"locations": ")" + LatLngs(points) +
