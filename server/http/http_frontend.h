@@ -34,10 +34,10 @@
 
 #include "server/app/locator_app.h"
 #include "server/http/cors_policy.h"
-#include "server/http/elevation/edr_api.h"
-#include "server/http/elevation/open_topo_data_api.h"
+#include "server/http/edr/edr_api.h"
 #include "server/http/http_server.h"
 #include "server/http/json/json_api.h"
+#include "server/http/opentopodata/open_topo_data_api.h"
 #include "server/http/status/stats_history.h"
 #include "server/http/status/status_endpoints.h"
 #include "server/metrics/engine_collector.h"

@@ -11,11 +11,11 @@
 #include <string>
 #include <variant>
 
-#include "server/http/elevation/edr_parameters.h"
-#include "server/http/elevation/encoded_polyline.h"
-#include "server/http/elevation/open_topo_data_query.h"
+#include "server/http/edr/edr_parameters.h"
+#include "server/http/opentopodata/encoded_polyline.h"
+#include "server/http/opentopodata/open_topo_data_query.h"
 #include "server/http/elevation/request_fields.h"
-#include "server/http/elevation/wkt_coordinates.h"
+#include "server/http/edr/wkt_coordinates.h"
 
 namespace locator {
 namespace {

@@ -15,8 +15,8 @@
 //
 // Thread-safety: a pure function.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_WKT_COORDINATES_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_WKT_COORDINATES_H_
+#ifndef LOCATOR_SERVER_HTTP_EDR_WKT_COORDINATES_H_
+#define LOCATOR_SERVER_HTTP_EDR_WKT_COORDINATES_H_
 
 #include <cstddef>
 #include <string_view>
@@ -39,4 +39,4 @@ StatusOr<WktCoordinates> ParseWktCoordinates(std::string_view text,
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_WKT_COORDINATES_H_
+#endif  // LOCATOR_SERVER_HTTP_EDR_WKT_COORDINATES_H_

@@ -12,15 +12,15 @@
 //
 // Thread-safety: pure functions.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_COVERAGE_JSON_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_COVERAGE_JSON_H_
+#ifndef LOCATOR_SERVER_HTTP_EDR_COVERAGE_JSON_H_
+#define LOCATOR_SERVER_HTTP_EDR_COVERAGE_JSON_H_
 
 #include <string>
 #include <vector>
 
 #include "common/json_writer.h"
 #include "locator/geometry.h"
-#include "server/http/elevation/edr_parameters.h"
+#include "server/http/edr/edr_parameters.h"
 
 namespace locator {
 
@@ -47,4 +47,4 @@ std::string CoverageText(const CoveragePoints& points, const EdrCrs& crs,
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_COVERAGE_JSON_H_
+#endif  // LOCATOR_SERVER_HTTP_EDR_COVERAGE_JSON_H_

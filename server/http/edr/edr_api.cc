@@ -1,4 +1,4 @@
-#include "server/http/elevation/edr_api.h"
+#include "server/http/edr/edr_api.h"
 
 #include <algorithm>
 #include <charconv>
@@ -14,11 +14,11 @@
 #include "common/status_macros.h"
 #include "server/app/request_crs.h"
 #include "server/http/api_error.h"
-#include "server/http/elevation/coverage_json.h"
-#include "server/http/elevation/edr_metadata.h"
-#include "server/http/elevation/edr_parameters.h"
+#include "server/http/edr/coverage_json.h"
+#include "server/http/edr/edr_metadata.h"
+#include "server/http/edr/edr_parameters.h"
+#include "server/http/edr/wkt_coordinates.h"
 #include "server/http/elevation/elevation_calls.h"
-#include "server/http/elevation/wkt_coordinates.h"
 #include "server/http/json/api_answers.h"
 
 namespace locator {

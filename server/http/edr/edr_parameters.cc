@@ -1,4 +1,4 @@
-#include "server/http/elevation/edr_parameters.h"
+#include "server/http/edr/edr_parameters.h"
 
 #include <cctype>
 #include <string>

@@ -1,4 +1,4 @@
-#include "server/http/elevation/open_topo_data_query.h"
+#include "server/http/opentopodata/open_topo_data_query.h"
 
 #include <algorithm>
 #include <charconv>
@@ -10,7 +10,7 @@
 #include "common/input_text.h"
 #include "common/status_macros.h"
 #include "common/text_fields.h"
-#include "server/http/elevation/encoded_polyline.h"
+#include "server/http/opentopodata/encoded_polyline.h"
 
 namespace locator {
 namespace {

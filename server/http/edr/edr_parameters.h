@@ -11,8 +11,8 @@
 //
 // Thread-safety: plain values and pure functions.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_EDR_PARAMETERS_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_EDR_PARAMETERS_H_
+#ifndef LOCATOR_SERVER_HTTP_EDR_EDR_PARAMETERS_H_
+#define LOCATOR_SERVER_HTTP_EDR_EDR_PARAMETERS_H_
 
 #include <optional>
 #include <string>
@@ -62,4 +62,4 @@ StatusOr<EdrCrs> ParseEdrCrs(std::optional<std::string_view> crs,
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_EDR_PARAMETERS_H_
+#endif  // LOCATOR_SERVER_HTTP_EDR_EDR_PARAMETERS_H_

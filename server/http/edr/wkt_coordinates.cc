@@ -1,4 +1,4 @@
-#include "server/http/elevation/wkt_coordinates.h"
+#include "server/http/edr/wkt_coordinates.h"
 
 #include <cctype>
 #include <string>

@@ -23,8 +23,8 @@
 //
 // Thread-safety: plain values and a pure function.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_OPEN_TOPO_DATA_QUERY_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_OPEN_TOPO_DATA_QUERY_H_
+#ifndef LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_QUERY_H_
+#define LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_QUERY_H_
 
 #include <cstdint>
 #include <variant>
@@ -53,4 +53,4 @@ StatusOr<OpenTopoDataQuery> ParseOpenTopoDataQuery(const RequestFields& fields);
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_OPEN_TOPO_DATA_QUERY_H_
+#endif  // LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_QUERY_H_

@@ -13,8 +13,8 @@
 //
 // Thread-safety: a pure function.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_ENCODED_POLYLINE_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_ENCODED_POLYLINE_H_
+#ifndef LOCATOR_SERVER_HTTP_OPENTOPODATA_ENCODED_POLYLINE_H_
+#define LOCATOR_SERVER_HTTP_OPENTOPODATA_ENCODED_POLYLINE_H_
 
 #include <string_view>
 #include <vector>
@@ -29,4 +29,4 @@ StatusOr<std::vector<Point2>> DecodePolyline(std::string_view encoded);
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_ENCODED_POLYLINE_H_
+#endif  // LOCATOR_SERVER_HTTP_OPENTOPODATA_ENCODED_POLYLINE_H_

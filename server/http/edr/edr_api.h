@@ -28,8 +28,8 @@
 //
 // Thread-safety: Handle() may be called from any thread.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_EDR_API_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_EDR_API_H_
+#ifndef LOCATOR_SERVER_HTTP_EDR_EDR_API_H_
+#define LOCATOR_SERVER_HTTP_EDR_EDR_API_H_
 
 #include <string>
 
@@ -68,4 +68,4 @@ class EdrApi {
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_EDR_API_H_
+#endif  // LOCATOR_SERVER_HTTP_EDR_EDR_API_H_

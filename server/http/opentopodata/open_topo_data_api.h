@@ -31,8 +31,8 @@
 //
 // Thread-safety: Handle() may be called from any thread.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_OPEN_TOPO_DATA_API_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_OPEN_TOPO_DATA_API_H_
+#ifndef LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_API_H_
+#define LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_API_H_
 
 #include <string_view>
 
@@ -61,4 +61,4 @@ class OpenTopoDataApi {
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_OPEN_TOPO_DATA_API_H_
+#endif  // LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_API_H_

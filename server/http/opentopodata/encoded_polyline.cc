@@ -1,4 +1,4 @@
-#include "server/http/elevation/encoded_polyline.h"
+#include "server/http/opentopodata/encoded_polyline.h"
 
 #include <cstdint>
 #include <string>

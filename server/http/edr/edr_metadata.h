@@ -6,8 +6,8 @@
 //
 // Thread-safety: pure functions.
 
-#ifndef LOCATOR_SERVER_HTTP_ELEVATION_EDR_METADATA_H_
-#define LOCATOR_SERVER_HTTP_ELEVATION_EDR_METADATA_H_
+#ifndef LOCATOR_SERVER_HTTP_EDR_EDR_METADATA_H_
+#define LOCATOR_SERVER_HTTP_EDR_EDR_METADATA_H_
 
 #include <optional>
 #include <string>
@@ -42,4 +42,4 @@ void WriteEdrCollection(const EdrCollectionFacts& facts, JsonWriter* json);
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_HTTP_ELEVATION_EDR_METADATA_H_
+#endif  // LOCATOR_SERVER_HTTP_EDR_EDR_METADATA_H_

@@ -1,10 +1,10 @@
-#include "server/http/elevation/edr_metadata.h"
+#include "server/http/edr/edr_metadata.h"
 
 #include <string>
 #include <vector>
 
-#include "server/http/elevation/coverage_json.h"
-#include "server/http/elevation/edr_parameters.h"
+#include "server/http/edr/coverage_json.h"
+#include "server/http/edr/edr_parameters.h"
 
 namespace locator {
 namespace {

@@ -1,4 +1,4 @@
-#include "server/http/elevation/open_topo_data_api.h"
+#include "server/http/opentopodata/open_topo_data_api.h"
 
 #include <cmath>
 #include <memory>
@@ -11,8 +11,8 @@
 #include "common/json_writer.h"
 #include "server/http/api_error.h"
 #include "server/http/elevation/elevation_calls.h"
-#include "server/http/elevation/open_topo_data_query.h"
 #include "server/http/elevation/request_fields.h"
+#include "server/http/opentopodata/open_topo_data_query.h"
 
 namespace locator {
 namespace {

@@ -1,4 +1,4 @@
-#include "server/http/elevation/coverage_json.h"
+#include "server/http/edr/coverage_json.h"
 
 namespace locator {
 namespace {
