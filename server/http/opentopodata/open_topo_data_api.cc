@@ -1,6 +1,8 @@
 #include "server/http/opentopodata/open_topo_data_api.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -45,25 +47,39 @@ void WriteElevation(double value, const OpenTopoDataQuery& query,
   }
 }
 
-// 200 with one result per point: `where` (x = longitude) and its value.
-HttpResponse Answer(const std::vector<Point2>& where,
-                    const std::vector<double>& values,
-                    const OpenTopoDataQuery& query, std::string_view dataset) {
+// One call's answer as it is filled, dataset after dataset (Open Topo
+// Data's multi-dataset requests): each point takes its value from the first
+// dataset that has one there.
+struct Lookup {
+  // One per dataset named, in order.
+  std::vector<LocatorApp::Admission> calls;
+  OpenTopoDataQuery query;
+  CallDeadline deadline;
+  HttpReply reply;
+  // Each result's location (x = longitude) and value (NaN: none yet).
+  std::vector<Point2> where;
+  std::vector<double> values;
+  // The dataset each result names: the one that answered it, or the last.
+  std::vector<size_t> answered_by;
+};
+
+// 200 with one result per point of `lookup`.
+HttpResponse Answer(const Lookup& lookup) {
   JsonWriter json;
-  json.Reserve(where.size() * 96 + 64);
+  json.Reserve(lookup.where.size() * 96 + 64);
   json.BeginObject().Key("results").BeginArray();
-  for (size_t i = 0; i < where.size(); ++i) {
+  for (size_t i = 0; i < lookup.where.size(); ++i) {
     json.BeginObject().Key("elevation");
-    WriteElevation(values[i], query, &json);
+    WriteElevation(lookup.values[i], lookup.query, &json);
     json.Key("location")
         .BeginObject()
         .Key("lat")
-        .Number(where[i].y)
+        .Number(lookup.where[i].y)
         .Key("lng")
-        .Number(where[i].x)
+        .Number(lookup.where[i].x)
         .EndObject()
         .Key("dataset")
-        .String(dataset)
+        .String(lookup.calls[lookup.answered_by[i]].dataset->name())
         .EndObject();
   }
   json.EndArray().Key("status").String("OK").EndObject();
@@ -71,37 +87,97 @@ HttpResponse Answer(const std::vector<Point2>& where,
                       .body = json.TakeText()};
 }
 
-// Answers `query` on the admitted `call` (on a lane thread).
-void ServeOpenTopoData(LocatorApp* app, LocatorApp::Admission call,
-                       const OpenTopoDataQuery& query,
-                       const CallDeadline& deadline, HttpReply reply) {
-  const ElevationQuery points{.points = query.points,
-                              .crs = kLonLatCrs,
-                              .interpolation = query.interpolation};
-  const std::string dataset = call.dataset->name();
-  if (query.samples > 0) {
-    StatusOr<std::vector<LinePoint>> line =
-        LineValues(*app, call, points, query.samples);
-    if (!line.ok()) {
-      reply(OpenTopoDataError(line.status()));
-      return;
-    }
-    std::vector<Point2> where;
-    std::vector<double> values;
-    for (const LinePoint& p : *line) {
-      where.push_back(p.point);
-      values.push_back(p.value);
-    }
-    reply(Answer(where, values, query, dataset));
+// Asks dataset `k` of `lookup` for the points still without a value, then
+// the next dataset, and answers after the last or once every point has a
+// value.
+void FillFrom(LocatorApp* app, std::shared_ptr<Lookup> lookup, size_t k) {
+  std::vector<size_t> missing;
+  for (size_t i = 0; i < lookup->values.size(); ++i) {
+    if (std::isnan(lookup->values[i])) missing.push_back(i);
+  }
+  if (k == lookup->calls.size() || missing.empty()) {
+    lookup->reply(Answer(*lookup));
     return;
   }
-  LocateValues(
-      app, std::move(call), points, deadline,
-      [query, dataset,
-       reply = std::move(reply)](StatusOr<std::vector<double>> values) {
-        reply(values.ok() ? Answer(query.points, *values, query, dataset)
-                          : OpenTopoDataError(values.status()));
-      });
+  ElevationQuery points{.points = {},
+                        .crs = kLonLatCrs,
+                        .interpolation = lookup->query.interpolation};
+  for (const size_t i : missing) points.points.push_back(lookup->where[i]);
+  LocateValues(app, lookup->calls[k], points, lookup->deadline,
+               [app, lookup, k, missing = std::move(missing)](
+                   StatusOr<std::vector<double>> values) {
+                 if (!values.ok()) {
+                   lookup->reply(OpenTopoDataError(values.status()));
+                   return;
+                 }
+                 for (size_t j = 0; j < missing.size(); ++j) {
+                   if (std::isnan((*values)[j])) continue;
+                   lookup->values[missing[j]] = (*values)[j];
+                   lookup->answered_by[missing[j]] = k;
+                 }
+                 FillFrom(app, lookup, k + 1);
+               });
+}
+
+// Answers `lookup->query` (on a lane thread): a path's samples come from
+// the first dataset's profile, and every point without a value there from
+// the datasets after it.
+void ServeOpenTopoData(LocatorApp* app, std::shared_ptr<Lookup> lookup) {
+  const OpenTopoDataQuery& query = lookup->query;
+  if (query.samples == 0) {
+    lookup->where = query.points;
+    lookup->values.assign(query.points.size(),
+                          std::numeric_limits<double>::quiet_NaN());
+    lookup->answered_by.assign(query.points.size(), lookup->calls.size() - 1);
+    FillFrom(app, std::move(lookup), 0);
+    return;
+  }
+  StatusOr<std::vector<LinePoint>> line =
+      LineValues(*app, lookup->calls[0],
+                 ElevationQuery{.points = query.points,
+                                .crs = kLonLatCrs,
+                                .interpolation = query.interpolation},
+                 query.samples);
+  if (!line.ok()) {
+    lookup->reply(OpenTopoDataError(line.status()));
+    return;
+  }
+  lookup->answered_by.assign(line->size(), lookup->calls.size() - 1);
+  for (size_t i = 0; i < line->size(); ++i) {
+    lookup->where.push_back((*line)[i].point);
+    lookup->values.push_back((*line)[i].value);
+    if (!std::isnan((*line)[i].value)) lookup->answered_by[i] = 0;
+  }
+  FillFrom(app, std::move(lookup), 1);
+}
+
+// The dataset names of a path's `{dataset}`, as Open Topo Data reads them:
+// comma-separated, spaces and empty names dropped, none twice.
+StatusOr<std::vector<std::string>> DatasetNames(std::string_view text) {
+  std::vector<std::string> names;
+  while (true) {
+    const size_t comma = text.find(',');
+    std::string_view name = text.substr(0, comma);
+    while (name.starts_with(' ')) name.remove_prefix(1);
+    while (name.ends_with(' ')) name.remove_suffix(1);
+    if (!name.empty()) {
+      if (std::find(names.begin(), names.end(), name) != names.end()) {
+        return Status::InvalidArgument("Duplicate dataset names provided.");
+      }
+      if (names.size() == OpenTopoDataApi::kMaxDatasets) {
+        return Status::InvalidArgument(
+            "More than " + std::to_string(OpenTopoDataApi::kMaxDatasets) +
+            " dataset names provided.");
+      }
+      names.emplace_back(name);
+    }
+    if (comma == std::string_view::npos) break;
+    text.remove_prefix(comma + 1);
+  }
+  if (names.empty()) {
+    return Status::InvalidArgument("No valid dataset names provided.");
+  }
+  return names;
 }
 
 // The query `request` asks for.
@@ -138,39 +214,50 @@ void OpenTopoDataApi::Handle(HttpRequest request, HttpReply reply) {
     reply(std::move(answer));
     return;
   }
-  // The deadline runs from the call's arrival: time queued counts.
-  const CallDeadline deadline = app_->DefaultDeadline();
-  StatusOr<LocatorApp::Admission> call = app_->Admit(
-      request.Header("authorization"), AccessPolicy::Scope::kData, name);
-  if (!call.ok()) {
-    reply(OpenTopoDataError(call.status()));
+  StatusOr<std::vector<std::string>> names = DatasetNames(name);
+  if (!names.ok()) {
+    reply(OpenTopoDataError(names.status()));
     return;
   }
-  if (call->engine->dataset_info().crs.empty()) {
-    reply(OpenTopoDataError(Status::InvalidArgument(
-        "Dataset " + QuotedInput(call->dataset->name()) +
-        " has no coordinate reference system, so it cannot be queried by "
-        "latitude and longitude; query it in its own coordinates with POST "
-        "/v1/datasets/" +
-        call->dataset->name() + ":locateBatch")));
-    return;
+  // The deadline runs from the call's arrival: time queued counts.
+  auto lookup = std::make_shared<Lookup>();
+  lookup->deadline = app_->DefaultDeadline();
+  for (const std::string& dataset : *names) {
+    StatusOr<LocatorApp::Admission> call = app_->Admit(
+        request.Header("authorization"), AccessPolicy::Scope::kData, dataset);
+    if (!call.ok()) {
+      reply(OpenTopoDataError(call.status()));
+      return;
+    }
+    if (call->engine->dataset_info().crs.empty()) {
+      reply(OpenTopoDataError(Status::InvalidArgument(
+          "Dataset " + QuotedInput(dataset) +
+          " has no coordinate reference system, so it cannot be queried by "
+          "latitude and longitude; query it in its own coordinates with POST "
+          "/v1/datasets/" +
+          dataset + ":locateBatch")));
+      return;
+    }
+    lookup->calls.push_back(*std::move(call));
   }
   // A large body is read in the expensive lane, as the JSON API reads its
   // bodies in its lanes, so that the HTTP server's threads never parse more
   // than kCheapBatchBodyBytes.
   if (request.body.size() > JsonApi::kCheapBatchBodyBytes) {
+    const CallDeadline deadline = lookup->deadline;
     lanes_->RunCall(
         /*expensive=*/true, deadline, std::move(reply),
-        [app = app_, call = *std::move(call), request = std::move(request),
-         deadline](const Status& admitted, HttpReply reply) mutable {
+        [app = app_, lookup = std::move(lookup), request = std::move(request)](
+            const Status& admitted, HttpReply reply) mutable {
           StatusOr<OpenTopoDataQuery> query =
               admitted.ok() ? QueryOf(request) : admitted;
           if (!query.ok()) {
             reply(OpenTopoDataError(query.status()));
             return;
           }
-          ServeOpenTopoData(app, std::move(call), *query, deadline,
-                            std::move(reply));
+          lookup->query = *std::move(query);
+          lookup->reply = std::move(reply);
+          ServeOpenTopoData(app, std::move(lookup));
         });
     return;
   }
@@ -180,17 +267,18 @@ void OpenTopoDataApi::Handle(HttpRequest request, HttpReply reply) {
     return;
   }
   const bool expensive = IsExpensive(query->points.size(), query->samples > 0);
-  lanes_->RunCall(
-      expensive, deadline, std::move(reply),
-      [app = app_, call = *std::move(call), query = *std::move(query),
-       deadline](const Status& admitted, HttpReply reply) mutable {
-        if (!admitted.ok()) {
-          reply(OpenTopoDataError(admitted));
-          return;
-        }
-        ServeOpenTopoData(app, std::move(call), query, deadline,
-                          std::move(reply));
-      });
+  lookup->query = *std::move(query);
+  const CallDeadline deadline = lookup->deadline;
+  lanes_->RunCall(expensive, deadline, std::move(reply),
+                  [app = app_, lookup = std::move(lookup)](
+                      const Status& admitted, HttpReply reply) mutable {
+                    if (!admitted.ok()) {
+                      reply(OpenTopoDataError(admitted));
+                      return;
+                    }
+                    lookup->reply = std::move(reply);
+                    ServeOpenTopoData(app, std::move(lookup));
+                  });
 }
 
 }  // namespace locator

@@ -24,16 +24,21 @@
 // LocatorApp::Profile's evenly spaced samples (straight in the dataset's
 // CRS), its location mapped back to latitude/longitude.
 //
-// Every call is admitted as the JSON API's (LocatorApp::Admit: the drain,
-// the data token, the dataset) and runs in its lanes (JsonApi::RunCall),
-// the expensive one for paths and large batches. Errors have Open Topo
-// Data's shape and statuses (OpenTopoDataError).
+// `{dataset}` may name several datasets, comma-separated, as Open Topo
+// Data's multi-dataset requests do (at most kMaxDatasets): each point takes
+// its value from the first of them that has one there, and its result
+// names that dataset (the last one when none has); a path is sampled on
+// the first. Every call is admitted as the JSON API's (LocatorApp::Admit: the
+// drain, the data token, each dataset) and runs in its lanes
+// (JsonApi::RunCall), the expensive one for paths and large batches. Errors
+// have Open Topo Data's shape and statuses (OpenTopoDataError).
 //
 // Thread-safety: Handle() may be called from any thread.
 
 #ifndef LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_API_H_
 #define LOCATOR_SERVER_HTTP_OPENTOPODATA_OPEN_TOPO_DATA_API_H_
 
+#include <cstddef>
 #include <string_view>
 
 #include "server/app/locator_app.h"
@@ -46,6 +51,8 @@ class OpenTopoDataApi {
  public:
   // Where the API's paths start.
   static constexpr std::string_view kPathPrefix = "/opentopodata";
+  // The most datasets one request may name.
+  static constexpr size_t kMaxDatasets = 8;
 
   // Serves `app` in `lanes`' lanes; neither is owned, and both must outlive
   // the API's calls.

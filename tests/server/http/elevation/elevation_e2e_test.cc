@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -113,10 +114,19 @@ class ElevationE2eTest : public ::testing::Test {
     dir_ = new ScratchDir();
     const std::string gpkg =
         gis::testing::UtmHillGeoPackage(kElevationHillSide, dir_->path());
-    const Status started = LocatordWithHttp::Start(
-        "terrain=" + gpkg, {"--dataset", "plain=uniform:3000:5"}, &server_);
+    // A smaller hill (4 km across) over the same middle, for the
+    // multi-dataset requests.
+    std::filesystem::create_directory(dir_->path() + "/small");
+    const std::string small_gpkg =
+        gis::testing::UtmHillGeoPackage(10, dir_->path() + "/small");
+    const Status started =
+        LocatordWithHttp::Start("terrain=" + gpkg,
+                                {"--dataset", "plain=uniform:3000:5",
+                                 "--dataset", "small=" + small_gpkg},
+                                &server_);
     ASSERT_TRUE(started.ok()) << started.ToString();
     ASSERT_TRUE(server_->WaitUntilServes("plain").ok());
+    ASSERT_TRUE(server_->WaitUntilServes("small").ok());
   }
   static void TearDownTestSuite() {
     server_.reset();
@@ -147,9 +157,10 @@ class ElevationE2eTest : public ::testing::Test {
   // gRPC LocateBatch's values at `points` in `crs`.
   std::vector<double> GrpcValues(
       const std::vector<Point2>& points, const std::string& crs,
-      v1::Interpolation interpolation = v1::INTERPOLATION_LINEAR) const {
+      v1::Interpolation interpolation = v1::INTERPOLATION_LINEAR,
+      const std::string& dataset = "terrain") const {
     v1::LocateBatchRequest request;
-    request.set_dataset("terrain");
+    request.set_dataset(dataset);
     request.set_crs(crs);
     request.set_include_values(true);
     request.set_interpolation(interpolation);
@@ -334,6 +345,43 @@ TEST_F(ElevationE2eTest, OpenTopoDataSamplesArePathProfileSamples) {
   }
 }
 
+TEST_F(ElevationE2eTest, OpenTopoDataTakesEachPointFromTheFirstDataset) {
+  const std::vector<Point2> points = LngLatGrid(8);
+  const std::vector<double> small =
+      GrpcValues(points, "EPSG:4326", v1::INTERPOLATION_LINEAR, "small");
+  const std::vector<double> terrain = GrpcValues(points, "EPSG:4326");
+  HttpReply reply;
+  ASSERT_TRUE(
+      HttpGet(port(),
+              "/opentopodata/v1/small,terrain?locations=" + LatLngs(points),
+              &reply)
+          .ok());
+  ASSERT_EQ(reply.status, 200u) << reply.body;
+  JsonValue answer;
+  ASSERT_TRUE(ParseJson(reply.body, &answer).ok()) << reply.body;
+  const JsonArray& results = answer["results"].array();
+  ASSERT_EQ(results.size(), points.size());
+  size_t from_small = 0;
+  size_t from_terrain = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const JsonValue& result = results[i];
+    if (!std::isnan(small[i])) {
+      ++from_small;
+      EXPECT_EQ(result["elevation"].number(), small[i]) << i;
+      EXPECT_EQ(result["dataset"].string(), "small") << i;
+    } else if (!std::isnan(terrain[i])) {
+      ++from_terrain;
+      EXPECT_EQ(result["elevation"].number(), terrain[i]) << i;
+      EXPECT_EQ(result["dataset"].string(), "terrain") << i;
+    } else {
+      EXPECT_TRUE(result["elevation"].is_null()) << i;
+      EXPECT_EQ(result["dataset"].string(), "terrain") << i;
+    }
+  }
+  EXPECT_GT(from_small, 0u);
+  EXPECT_GT(from_terrain, 0u);
+}
+
 TEST_F(ElevationE2eTest, OpenTopoDataRefusesInItsOwnShape) {
   const auto expect = [this](const std::string& target, unsigned http,
                              const std::string& status,
@@ -360,6 +408,12 @@ TEST_F(ElevationE2eTest, OpenTopoDataRefusesInItsOwnShape) {
          400, "INVALID_REQUEST", "--max-profile-samples");
   expect("/opentopodata/v1/", 404, "INVALID_REQUEST",
          "No dataset name provided.");
+  expect("/opentopodata/v1/small,small?locations=49.6,15", 400,
+         "INVALID_REQUEST", "Duplicate dataset names provided.");
+  expect("/opentopodata/v1/,,?locations=49.6,15", 400, "INVALID_REQUEST",
+         "No valid dataset names provided.");
+  expect("/opentopodata/v1/small,plain?locations=49.6,15", 400,
+         "INVALID_REQUEST", "Dataset 'plain' has no coordinate reference");
   expect("/opentopodata/v1/terrain/x", 404, "INVALID_REQUEST", "no such path");
 }
 
@@ -488,7 +542,7 @@ TEST_F(ElevationE2eTest, EdrMetadataDescribesEachDataset) {
             "Parameter");
 
   const JsonValue collections = GetJson(port(), "/edr/collections");
-  ASSERT_EQ(collections["collections"].array().size(), 2u);
+  ASSERT_EQ(collections["collections"].array().size(), 3u);
   const JsonValue& plain = collections["collections"].array()[1];
   EXPECT_EQ(plain["id"].string(), "plain");
   ASSERT_EQ(plain["crs"].array().size(), 1u);
