@@ -224,7 +224,13 @@ int CheckError(const HttpResponse& response) {
 
 // Checks an Open Topo Data answer: OK with a result per location, or an
 // error of its shape that is the caller's, with a short message.
-void CheckOpenTopoDataAnswer(const HttpResponse& response) {
+void CheckOpenTopoDataAnswer(HttpResponse response) {
+  // nodata_value=nan writes NaN, as Open Topo Data does: not JSON.
+  for (size_t at = response.body.find("\"elevation\":NaN");
+       at != std::string::npos;
+       at = response.body.find("\"elevation\":NaN", at)) {
+    response.body.replace(at + 12, 3, "null");
+  }
   const auto answer = ParseAnswer<google::protobuf::Struct>(response);
   const auto& fields = answer.fields();
   const auto status = fields.find("status");
