@@ -45,8 +45,12 @@
 // with 503 UNAVAILABLE and Retry-After, as a connection over the server's
 // limits is.
 //
-// Owns its lanes. Thread-safety: Handle() and Shutdown() may be called from
-// any thread.
+// The server's other HTTP APIs (Open Topo Data, OGC API - EDR) run their
+// calls in the same lanes through RunCall(), so that the limits, gauges and
+// the drain at Shutdown() cover them too.
+//
+// Owns its lanes. Thread-safety: Handle(), RunCall() and Shutdown() may be
+// called from any thread.
 
 #ifndef LOCATOR_SERVER_HTTP_JSON_API_H_
 #define LOCATOR_SERVER_HTTP_JSON_API_H_
