@@ -127,7 +127,8 @@ Status LocatorApp::Locate(const Admission& call,
 void LocatorApp::LocateBatch(Admission call,
                              const v1::LocateBatchRequest& request,
                              BatchLocator::CallControl control,
-                             v1::LocateBatchResponse* response) {
+                             v1::LocateBatchResponse* response,
+                             OutsideAreaOfUse outside) {
   StatusOr<QueryOptions> options = QueryOptionsOf(request);
   if (!options.ok()) {
     control.finish(options.status());
@@ -139,10 +140,14 @@ void LocatorApp::LocateBatch(Admission call,
   // Each block is transformed where it is located, on its shard's thread.
   batch_locator_.Run(
       request,
-      [call = std::move(call), options = *std::move(options)](
+      [call = std::move(call), options = *std::move(options), outside](
           std::span<Point2> points, size_t first_index,
           std::vector<LocateResult>* results,
           const std::function<bool()>& keep_going) {
+        if (outside == OutsideAreaOfUse::kNoValue) {
+          return LocateBatchWhereDefined(*call.engine, options, points, results,
+                                         keep_going);
+        }
         RETURN_IF_ERROR(
             PointsInDatasetCrs(*call.engine, options.crs, points, first_index));
         return call.engine->LocateBatch(points, results, keep_going,

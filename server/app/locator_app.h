@@ -152,11 +152,17 @@ class LocatorApp {
   // the stream with Resolve()).
   Status LocateOn(const Engine& engine, const v1::LocateRequest& request,
                   LocateResult* result) const;
+  // What LocateBatch does with a point outside the area of use of the
+  // request's CRS: fail the call (INVALID_ARGUMENT naming the point, the
+  // locator.v1 contract), or answer it OUTSIDE_CONVEX_HULL without a value,
+  // as the elevation APIs (Open Topo Data, OGC API EDR) answer null there.
+  enum class OutsideAreaOfUse { kFail, kNoValue };
   // LocateBatch on an admitted call, finished through control.finish (see
   // BatchLocator::Run); `request` and `response` must live until then.
   void LocateBatch(Admission call, const v1::LocateBatchRequest& request,
                    BatchLocator::CallControl control,
-                   v1::LocateBatchResponse* response);
+                   v1::LocateBatchResponse* response,
+                   OutsideAreaOfUse outside = OutsideAreaOfUse::kFail);
   // ListDatasets.
   void ListDatasets(v1::ListDatasetsResponse* response) const;
   // GetStats on an admitted call.

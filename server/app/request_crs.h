@@ -20,8 +20,10 @@
 #define LOCATOR_SERVER_REQUEST_CRS_H_
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "locator/engine.h"
 #include "locator/geometry.h"
@@ -41,6 +43,24 @@ Status CheckRequestCrs(const Engine& engine, const std::string& crs);
 // `first_index`, as an error names it.
 Status PointsInDatasetCrs(const Engine& engine, const std::string& crs,
                           std::span<Point2> points, size_t first_index = 0);
+
+// Transforms `points` from the engine's dataset CRS back to `crs` in place
+// (nothing when it is empty): the answers of a request whose points were in
+// `crs`, e.g. a profile's samples. InvalidArgument naming the first point
+// PROJ cannot map.
+Status PointsInRequestCrs(const Engine& engine, const std::string& crs,
+                          std::span<Point2> points);
+
+// Locates `points` (in options.crs) on `engine` into `results`, polling
+// `keep_going`, as Engine::LocateBatch does, but a point outside the area
+// of use of options.crs or the dataset's CRS (or one PROJ cannot map) is
+// answered kOutsideConvexHull without a value instead of failing the call:
+// the elevation APIs answer null there. `points` are transformed in place.
+Status LocateBatchWhereDefined(const Engine& engine,
+                               const QueryOptions& options,
+                               std::span<Point2> points,
+                               std::vector<LocateResult>* results,
+                               const std::function<bool()>& keep_going);
 
 // Locates `point` (in options.crs) on `engine` as `options` say; with
 // options.vertices_in_request_crs the result's vertices are returned in

@@ -102,6 +102,41 @@ HttpResponse ApiError(const Status& status, unsigned http_status) {
       .body = json.text()};
 }
 
+HttpResponse OpenTopoDataError(const Status& status) {
+  unsigned http_status = HttpStatusFor(status.code());
+  std::string_view name = "SERVER_ERROR";
+  switch (status.code()) {
+    case Status::Code::kInvalidArgument:
+    case Status::Code::kFailedPrecondition:
+    case Status::Code::kNotFound:
+    case Status::Code::kResourceExhausted:
+      http_status = 400;
+      name = "INVALID_REQUEST";
+      break;
+    case Status::Code::kUnauthenticated:
+    case Status::Code::kPermissionDenied:
+      name = "REQUEST_DENIED";
+      break;
+    default:
+      break;
+  }
+  JsonWriter json;
+  json.BeginObject()
+      .Key("error")
+      .String(TruncatedMessage(status.message(), kMaxStatusMessageBytes))
+      .Key("status")
+      .String(name)
+      .EndObject();
+  HttpResponse answer{.status = http_status,
+                      .content_type = kJsonContentType,
+                      .body = json.text()};
+  if (status.code() == Status::Code::kUnavailable) {
+    answer.headers.emplace_back("Retry-After",
+                                std::to_string(kRetryAfterSeconds));
+  }
+  return answer;
+}
+
 HttpResponse BusyError(const std::string& message) {
   HttpResponse answer = ApiError(Status::Unavailable(message), 503);
   answer.headers.emplace_back("Retry-After",

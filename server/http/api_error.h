@@ -51,6 +51,18 @@ inline constexpr int kRetryAfterSeconds = 1;
 // Retry-After.
 HttpResponse BusyError(const std::string& message);
 
+// The answer to a failed Open Topo Data call (Google Elevation's shape):
+//
+//   {"error": "<the status's message>", "status": "<STATUS>"}
+//
+// Open Topo Data answers every client error 400 INVALID_REQUEST, an unknown
+// dataset and too many locations included, so INVALID_ARGUMENT,
+// FAILED_PRECONDITION, NOT_FOUND and RESOURCE_EXHAUSTED are
+// 400 INVALID_REQUEST; a refused token keeps its 401 or 403 with Google's
+// REQUEST_DENIED; the rest keep HttpStatusFor()'s status with
+// SERVER_ERROR, and UNAVAILABLE adds Retry-After as BusyError() does.
+HttpResponse OpenTopoDataError(const Status& status);
+
 }  // namespace locator
 
 #endif  // LOCATOR_SERVER_HTTP_API_ERROR_H_

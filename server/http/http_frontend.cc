@@ -85,7 +85,9 @@ HttpFrontend::HttpFrontend(LocatorApp* app, HttpOptions options,
                 return MetricsText({registry_, engine_collector_});
               }}),
       cors_(options_.cors_origins),
-      api_(app, options_.api, registry_.get()) {
+      api_(app, options_.api, registry_.get()),
+      open_topo_data_(app, &api_),
+      edr_(app, &api_) {
   for (const auto& slot : app->datasets().slots()) {
     histories_.try_emplace(slot->name());
   }
@@ -119,6 +121,18 @@ void HttpFrontend::Route(HttpRequest request, HttpReply reply) {
   };
   if (request.problem != HttpRequest::Problem::kNone) {
     reply(ProblemAnswer(request));
+    return;
+  }
+  // Open Topo Data takes form-encoded POSTs as its clients send them; its
+  // calls only read, and a token travels in a header no form can set.
+  if (request.path == OpenTopoDataApi::kPathPrefix ||
+      request.path.starts_with(std::string(OpenTopoDataApi::kPathPrefix) +
+                               "/")) {
+    open_topo_data_.Handle(std::move(request), std::move(reply));
+    return;
+  }
+  if (EdrApi::Serves(request.path)) {
+    edr_.Handle(std::move(request), std::move(reply));
     return;
   }
   if (request.path.starts_with(JsonApi::kPathPrefix)) {

@@ -5,14 +5,16 @@
 // the status page's charts, and the HTTP server that answers
 // StatusEndpoints' paths (GET), the HTTP/JSON API under /v1/ (JsonApi), and
 // CORS preflights (CorsPolicy, which also marks every answer to an allowed
-// origin). What the HTTP server could not read as a request gets an ApiError
-// and the connection closes: a body over the limit 413, a header over the
-// limit 431, a malformed request 400, a connection over the limits 503 with
-// Retry-After. A POST to the API must say Content-Type: application/json
-// (415 otherwise): a page of another origin can send a "simple" text/plain
-// POST without asking the browser first (no CORS preflight), and it would
-// run. With tokens, /api/stats and /api/edges want the data token as
-// GetStats does, unless HttpOptions::public_status.
+// origin), and the elevation APIs in JsonApi's lanes: Open Topo Data under
+// /opentopodata/ (OpenTopoDataApi) and OGC API - EDR under /edr/ (EdrApi). What
+// the HTTP server could not read as a request gets an ApiError and the
+// connection closes: a body over the limit 413, a header over the limit 431, a
+// malformed request 400, a connection over the limits 503 with Retry-After. A
+// POST to the API must say Content-Type: application/json (415 otherwise): a
+// page of another origin can send a "simple" text/plain POST without asking the
+// browser first (no CORS preflight), and it would run. With tokens, /api/stats
+// and /api/edges want the data token as GetStats does, unless
+// HttpOptions::public_status.
 //
 // Owns all of them but the registry, which it shares. It reads the datasets
 // through the application it is given, as GetStats answers them (already
@@ -32,8 +34,10 @@
 
 #include "server/app/locator_app.h"
 #include "server/http/cors_policy.h"
+#include "server/http/edr/edr_api.h"
 #include "server/http/http_server.h"
 #include "server/http/json/json_api.h"
+#include "server/http/opentopodata/open_topo_data_api.h"
 #include "server/http/status/stats_history.h"
 #include "server/http/status/status_endpoints.h"
 #include "server/metrics/engine_collector.h"
@@ -91,6 +95,8 @@ class HttpFrontend {
   StatusEndpoints endpoints_;
   const CorsPolicy cors_;
   JsonApi api_;
+  OpenTopoDataApi open_topo_data_;  // these two run in api_'s lanes
+  EdrApi edr_;
   std::unique_ptr<HttpServer> http_;  // last: stopped first
 };
 

@@ -6,6 +6,12 @@
 // the JSON answer. The tile routes take the input as the rest of their
 // path (and query) instead: /v1/datasets/utm/tiles/{input} or
 // .../hillshade/{input}, answered with a PNG (or TileJSON) or an ApiError.
+// So do the elevation APIs' GET routes (Open Topo Data's query, EDR's
+// position and trajectory queries and collection paths); Open Topo Data's
+// POST takes it as its JSON body. Open Topo Data answers {"results",
+// "status": "OK"} or its own error {"error", "status"}, 400 INVALID_REQUEST
+// (never SERVER_ERROR); EDR a CoverageJSON, GeoJSON or JSON document, or an
+// ApiError.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
@@ -43,7 +49,9 @@
 #include "locator/v1/locator.pb.h"
 #include "server/app/locator_app.h"
 #include "server/http/api_error.h"
+#include "server/http/edr/edr_api.h"
 #include "server/http/json/json_api.h"
+#include "server/http/opentopodata/open_topo_data_api.h"
 
 namespace locator {
 namespace {
@@ -72,6 +80,13 @@ constexpr Route kRoutes[] = {
     {"GET", "/v1/datasets/utm/tiles"},
     {"GET", "/v1/datasets/default/tiles/"},
     {"GET", "/v1/datasets/utm/hillshade/"},
+    // The elevation APIs: GETs take the input as their query (after '?'),
+    // the POST as its body; EDR's collections as the rest of the path.
+    {"GET", "/opentopodata/v1/utm"},
+    {"POST", "/opentopodata/v1/utm"},
+    {"GET", "/edr/collections/utm/position"},
+    {"GET", "/edr/collections/utm/trajectory"},
+    {"GET", "/edr/collections/"},
 };
 
 [[noreturn]] void Fail(const std::string& what, const std::string& body) {
@@ -85,6 +100,14 @@ bool IsTileRoute(const Route& route) {
   const std::string_view path = route.path;
   return path.find("/tiles") != std::string_view::npos ||
          path.find("/hillshade/") != std::string_view::npos;
+}
+
+bool IsOpenTopoDataRoute(const Route& route) {
+  return std::string_view(route.path).starts_with("/opentopodata/");
+}
+
+bool IsEdrRoute(const Route& route) {
+  return std::string_view(route.path).starts_with("/edr/");
 }
 
 // Checks a 200 answer of a tile route: a PNG, or TileJSON for tiles.json.
@@ -113,6 +136,8 @@ struct Fixture {
   std::shared_ptr<Engine> engine;
   std::unique_ptr<LocatorApp> app;
   std::unique_ptr<JsonApi> api;
+  std::unique_ptr<OpenTopoDataApi> open_topo_data;
+  std::unique_ptr<EdrApi> edr;
 };
 
 Fixture* MakeFixture() {
@@ -147,11 +172,15 @@ Fixture* MakeFixture() {
   slots[1]->Publish(f->engine);
   slots[2]->Publish(std::shared_ptr<Engine>(*std::move(utm)));
   f->api = std::make_unique<JsonApi>(f->app.get());
+  f->open_topo_data =
+      std::make_unique<OpenTopoDataApi>(f->app.get(), f->api.get());
+  f->edr = std::make_unique<EdrApi>(f->app.get(), f->api.get());
   return f;
 }
 
-// Sends `request` and waits for the answer.
-HttpResponse Call(JsonApi& api, HttpRequest request) {
+// Sends `request` to `api` and waits for the answer.
+template <typename Api>
+HttpResponse Call(Api& api, HttpRequest request) {
   std::promise<HttpResponse> answered;
   api.Handle(std::move(request), [&answered](HttpResponse response) {
     answered.set_value(std::move(response));
@@ -195,6 +224,56 @@ int CheckError(const HttpResponse& response) {
          response.body);
   }
   return code;
+}
+
+// Checks an Open Topo Data answer: OK with a result per location, or an
+// error of its shape that is the caller's, with a short message.
+void CheckOpenTopoDataAnswer(HttpResponse response) {
+  // nodata_value=nan writes NaN, as Open Topo Data does: not JSON.
+  for (size_t at = response.body.find("\"elevation\":NaN");
+       at != std::string::npos;
+       at = response.body.find("\"elevation\":NaN", at)) {
+    response.body.replace(at + 12, 3, "null");
+  }
+  const auto answer = ParseAnswer<google::protobuf::Struct>(response);
+  const auto& fields = answer.fields();
+  const auto status = fields.find("status");
+  if (status == fields.end()) Fail("no status", response.body);
+  if (response.status == 200) {
+    if (status->second.string_value() != "OK" || !fields.contains("results")) {
+      Fail("a 200 that is not OK with results", response.body);
+    }
+    return;
+  }
+  const auto error = fields.find("error");
+  if (fields.size() != 2 || error == fields.end() ||
+      error->second.string_value().empty() ||
+      error->second.string_value().size() > kMaxMessageBytes) {
+    Fail("an error is not {error, status} with a short message",
+         response.body.substr(0, 2000));
+  }
+  // Every fault is the caller's: Open Topo Data's client errors are 400
+  // (404 for a path without a dataset, 405 for a method).
+  if (status->second.string_value() != "INVALID_REQUEST" ||
+      (response.status != 400 && response.status != 404 &&
+       response.status != 405)) {
+    Fail("an Open Topo Data error that is not the caller's", response.body);
+  }
+}
+
+// Checks an EDR answer: a JSON document of its content type, or an
+// ApiError.
+void CheckEdrAnswer(const HttpResponse& response) {
+  if (response.status != 200) {
+    CheckError(response);
+    return;
+  }
+  if (response.content_type != "application/prs.coverage+json" &&
+      response.content_type != "application/geo+json" &&
+      response.content_type != "application/json") {
+    Fail("an EDR answer of type " + response.content_type, response.body);
+  }
+  ParseAnswer<google::protobuf::Struct>(response);
 }
 
 void CheckLocate(const Fixture& f, std::string_view body,
@@ -262,6 +341,26 @@ void FuzzOneInput(const uint8_t* data, size_t size) {
   request.path = route.path;
   request.body = body;
   request.headers = {{"content-type", "application/json"}};
+  if (IsOpenTopoDataRoute(route) || IsEdrRoute(route)) {
+    if (request.method == "GET") {
+      // The input is the query, or for EDR's collections the rest of the
+      // path and the query.
+      const size_t query = body.find('?');
+      const bool in_path = std::string_view(route.path).ends_with("/");
+      if (in_path) request.path += body.substr(0, query);
+      request.query = !in_path                     ? body
+                      : query == std::string::npos ? ""
+                                                   : body.substr(query + 1);
+      request.body.clear();
+      request.headers.clear();
+    }
+    if (IsOpenTopoDataRoute(route)) {
+      CheckOpenTopoDataAnswer(Call(*fixture->open_topo_data, request));
+    } else {
+      CheckEdrAnswer(Call(*fixture->edr, request));
+    }
+    return;
+  }
   if (IsTileRoute(route)) {
     // The input goes into the path and the query, as the server hands
     // them over (split at the first '?').

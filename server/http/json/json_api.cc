@@ -191,23 +191,53 @@ void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,
   reply(NoRoute(request));
 }
 
+void JsonApi::RunCall(bool expensive, const CallDeadline& deadline,
+                      HttpReply reply, LaneCall run) {
+  DrainGate::Ticket ticket = pending_.Enter();
+  if (ticket == nullptr) {
+    run(Status::Unavailable("server is shutting down"), std::move(reply));
+    return;
+  }
+  reply = [ticket = std::move(ticket), reply = std::move(reply)](
+              HttpResponse response) { reply(std::move(response)); };
+  SubmitToLane(expensive ? expensive_ : cheap_, deadline, std::move(reply),
+               std::move(run));
+}
+
 void JsonApi::RunInLane(ApiLane& lane, const CallDeadline& deadline,
                         HttpReply reply,
                         std::function<void(HttpReply reply)> serve) {
+  SubmitToLane(
+      lane, deadline, std::move(reply),
+      [serve = std::move(serve)](const Status& admitted, HttpReply reply) {
+        if (!admitted.ok()) {
+          reply(admitted.code() == Status::Code::kUnavailable
+                    ? BusyError(admitted.message())
+                    : ApiError(admitted));
+          return;
+        }
+        serve(std::move(reply));
+      });
+}
+
+void JsonApi::SubmitToLane(ApiLane& lane, const CallDeadline& deadline,
+                           HttpReply reply, LaneCall run) {
   lane.Submit([&lane, deadline, reply = std::move(reply),
-               serve = std::move(serve)](bool admitted) mutable {
+               run = std::move(run)](bool admitted) mutable {
     if (!admitted) {
-      reply(BusyError("the " + lane.name() + " lane of this server's " +
-                      "HTTP API has " + std::to_string(lane.max_waiting()) +
-                      " calls waiting, its limit "
-                      "(--http-max-waiting-calls); retry"));
+      run(Status::Unavailable("the " + lane.name() + " lane of this server's " +
+                              "HTTP API has " +
+                              std::to_string(lane.max_waiting()) +
+                              " calls waiting, its limit "
+                              "(--http-max-waiting-calls); retry"),
+          std::move(reply));
       return;
     }
     if (deadline.Passed()) {
-      reply(ApiError(deadline.ExceededStatus("waiting for a thread")));
+      run(deadline.ExceededStatus("waiting for a thread"), std::move(reply));
       return;
     }
-    serve(std::move(reply));
+    run(Status::OK(), std::move(reply));
   });
 }
 

@@ -47,8 +47,12 @@
 // with 503 UNAVAILABLE and Retry-After, as a connection over the server's
 // limits is.
 //
-// Owns its lanes. Thread-safety: Handle() and Shutdown() may be called from
-// any thread.
+// The server's other HTTP APIs (Open Topo Data, OGC API - EDR) run their
+// calls in the same lanes through RunCall(), so that the limits, gauges and
+// the drain at Shutdown() cover them too.
+//
+// Owns its lanes. Thread-safety: Handle(), RunCall() and Shutdown() may be
+// called from any thread.
 
 #ifndef LOCATOR_SERVER_HTTP_JSON_API_H_
 #define LOCATOR_SERVER_HTTP_JSON_API_H_
@@ -109,6 +113,16 @@ class JsonApi {
   // the HTTP server their replies go to may be stopped then.
   void Shutdown();
 
+  // Runs `run` for a call of another of the server's HTTP APIs (Open Topo
+  // Data, OGC API EDR) in this API's expensive or cheap lane, as this API's
+  // own calls run: counted for Shutdown() until `reply` is called, and on
+  // the lanes' gauges. `run` gets OK and the reply on a lane thread, or the
+  // refusal (UNAVAILABLE: shutting down or the lane full; DEADLINE_EXCEEDED:
+  // `deadline` passed while queued) for the caller to answer in its form.
+  using LaneCall = std::function<void(const Status& admitted, HttpReply reply)>;
+  void RunCall(bool expensive, const CallDeadline& deadline, HttpReply reply,
+               LaneCall run);
+
   // The API method of a dataset: POST /v1/datasets/{name}:{method}. Runs
   // in a lane with the admitted call, its deadline and the request whose
   // body it parses, and answers through `reply`.
@@ -141,6 +155,9 @@ class JsonApi {
   // `deadline` passed while it waited (504).
   void RunInLane(ApiLane& lane, const CallDeadline& deadline, HttpReply reply,
                  std::function<void(HttpReply reply)> serve);
+  // Runs `run` in `lane` with OK, or with the refusal RunCall() describes.
+  void SubmitToLane(ApiLane& lane, const CallDeadline& deadline,
+                    HttpReply reply, LaneCall run);
 
   // The method table: one line per API method of a dataset. A call whose
   // body has at most cheap_up_to_bytes runs in the cheap lane.

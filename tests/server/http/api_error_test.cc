@@ -99,5 +99,42 @@ TEST(ApiErrorTest, GrpcAndHttpShowTheSameCanonicalCode) {
   }
 }
 
+// Open Topo Data's clients read its shape and its statuses: every fault of
+// the caller's is 400 INVALID_REQUEST, an unknown dataset included.
+TEST(ApiErrorTest, OpenTopoDataErrorsHaveItsShapeAndStatuses) {
+  const struct {
+    Status status;
+    unsigned http;
+    std::string name;
+  } cases[] = {
+      {Status::InvalidArgument("bad"), 400, "INVALID_REQUEST"},
+      {Status::NotFound("unknown dataset 'lava'"), 400, "INVALID_REQUEST"},
+      {Status::ResourceExhausted("too many"), 400, "INVALID_REQUEST"},
+      {Status::FailedPrecondition("no"), 400, "INVALID_REQUEST"},
+      {Status::Unauthenticated("token"), 401, "REQUEST_DENIED"},
+      {Status::PermissionDenied("token"), 403, "REQUEST_DENIED"},
+      {Status::Unavailable("busy"), 503, "SERVER_ERROR"},
+      {Status::DeadlineExceeded("late"), 504, "SERVER_ERROR"},
+      {Status::Internal("bug"), 500, "SERVER_ERROR"},
+  };
+  for (const auto& c : cases) {
+    const HttpResponse answer = OpenTopoDataError(c.status);
+    EXPECT_EQ(answer.status, c.http) << c.status.ToString();
+    EXPECT_EQ(answer.content_type, "application/json");
+    JsonValue json;
+    ASSERT_TRUE(test::ParseJson(answer.body, &json).ok()) << answer.body;
+    EXPECT_EQ(json.object().size(), 2u) << answer.body;
+    EXPECT_EQ(json["status"].string(), c.name) << answer.body;
+    EXPECT_EQ(json["error"].string(), c.status.message()) << answer.body;
+    const bool retry_after =
+        !answer.headers.empty() && answer.headers[0].first == "Retry-After";
+    EXPECT_EQ(retry_after, c.http == 503) << c.status.ToString();
+  }
+  // Cut as every status message is.
+  const HttpResponse long_answer =
+      OpenTopoDataError(Status::InvalidArgument(std::string(100000, 'x')));
+  EXPECT_LT(long_answer.body.size(), kMaxStatusMessageBytes + 100);
+}
+
 }  // namespace
 }  // namespace locator

@@ -1,7 +1,8 @@
 // The rows of the hostile HTTP table (hostile_http_test.cc) and the checks
 // they make of a reply: a row is one request, the HTTP statuses it accepts
 // and, optionally, a check of the reply's headers and body. The table is
-// split by concern: the tile routes' rows are in hostile_tile_rows.cc.
+// split by concern: the tile routes' rows are in hostile_tile_rows.cc, the
+// elevation APIs' in hostile_elevation_rows.cc.
 
 #ifndef LOCATOR_TESTS_SERVER_MAIN_HOSTILE_HOSTILE_HTTP_ROWS_H_
 #define LOCATOR_TESTS_SERVER_MAIN_HOSTILE_HOSTILE_HTTP_ROWS_H_
@@ -23,6 +24,9 @@ struct HttpRow {
   std::vector<unsigned> statuses;
   // More checks of the reply; "" when it is right.
   std::function<std::string(const HttpReply&)> check = nullptr;
+  // Whether an error reply must be an ApiError (Open Topo Data's have its
+  // own shape, which `check` judges).
+  bool api_error = true;
 };
 
 // Splits what RawExchange received into a reply; status 0 if it is none.
@@ -46,6 +50,11 @@ std::string NoCors(const HttpReply& reply);
 // If-None-Match, on the hostile server's dataset "utm" (and "plain", which
 // has no CRS).
 std::vector<HttpRow> TileRows();
+
+// The elevation APIs' rows: Open Topo Data and OGC API - EDR with hostile
+// points, WKT, CRSs, polylines, bodies and sizes past the limits, on "utm"
+// and "plain".
+std::vector<HttpRow> ElevationRows();
 
 }  // namespace locator::test
 
