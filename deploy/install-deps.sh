@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package that locator's build, tests and benchmarks
-# need. Idempotent: when all packages are present it changes nothing and does
+# need, and (with Debian's npm) the pinned npm packages of the tests
+# (tests/server/tiles/quantized_mesh_decoder: the independent quantized-mesh
+# decoder). Idempotent: when all are present it changes nothing and does
 # not touch the network. Prints one line per step; apt's own output goes to
 # a log file ($LOCATOR_DEPS_LOG, default /tmp/locator-install-deps.log) that
 # is shown if a step fails.
@@ -31,9 +33,10 @@ for pkg in "${PACKAGES[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#PACKAGES[@]} packages present"
-  exit 0
+# node and npm: Debian's, unless a node of another origin (which conflicts
+# with Debian's npm) already brings its own npm.
+if ! command -v node > /dev/null || ! command -v npm > /dev/null; then
+  missing+=(nodejs npm)
 fi
 
 SUDO=""
@@ -56,8 +59,25 @@ step() {
   fi
 }
 
-step "updating the package lists" $SUDO apt-get update
-step "installing ${#missing[@]} packages (${missing[*]})" \
-  env DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y \
-  --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+else
+  step "updating the package lists" $SUDO apt-get update
+  step "installing ${#missing[@]} packages (${missing[*]})" \
+    env DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y \
+    --no-install-recommends "${missing[@]}"
+fi
+
+# The npm packages, exactly as package-lock.json pins them, into the
+# folder's node_modules (git-ignored), where the tests look.
+DECODER_DIR="$(cd "$(dirname "$0")/.." && pwd)/tests/server/tiles/quantized_mesh_decoder"
+DECODER_VERSION=$(sed -n 's/.*"@here\/quantized-mesh-decoder": "\(.*\)".*/\1/p' \
+  "$DECODER_DIR/package.json")
+INSTALLED="$DECODER_DIR/node_modules/@here/quantized-mesh-decoder/package.json"
+if [ -f "$INSTALLED" ] && grep -q "\"version\": \"$DECODER_VERSION\"" "$INSTALLED"; then
+  echo "install-deps: npm packages present"
+else
+  step "installing the tests' npm packages (npm ci)" \
+    npm ci --prefix "$DECODER_DIR" --no-audit --no-fund
+fi
 echo "install-deps: done; apt's output is in $LOG"
