@@ -204,11 +204,17 @@ double Area2(const Point2& a, const Point2& b, const Point2& c) {
 
 ClippedMesh ClipMeshToBox(const MeshPatch& patch, const BoundingBox& box) {
   ClippedMesh out;
-  std::map<VertexKey, uint32_t> index_of;
+  // Patch vertices by index (most of a tile's), the points the clip makes
+  // by key.
+  constexpr uint32_t kUnused = 0xffffffffu;
+  std::vector<uint32_t> patch_vertex(patch.size(), kUnused);
+  std::map<VertexKey, uint32_t> made;
   const auto add = [&](const PieceVertex& v) {
-    const auto [it, added] =
-        index_of.emplace(v.key, static_cast<uint32_t>(out.size()));
-    if (added) {
+    uint32_t* slot = v.key.kind == VertexKey::kPatchVertex
+                         ? &patch_vertex[v.key.a]
+                         : &made.emplace(v.key, kUnused).first->second;
+    if (*slot == kUnused) {
+      *slot = static_cast<uint32_t>(out.size());
       uint8_t sides = 0;
       if (v.p.x == box.min_x) sides |= kWestSide;
       if (v.p.y == box.min_y) sides |= kSouthSide;
@@ -222,7 +228,7 @@ ClippedMesh ClipMeshToBox(const MeshPatch& patch, const BoundingBox& box) {
                               : std::array<uint32_t, 2>{ClippedMesh::kNoEdge,
                                                         ClippedMesh::kNoEdge});
     }
-    return it->second;
+    return *slot;
   };
   const TriangleClipper clipper(patch, box);
   for (std::array<uint32_t, 3> t : patch.triangles) {
@@ -240,6 +246,17 @@ ClippedMesh ClipMeshToBox(const MeshPatch& patch, const BoundingBox& box) {
         std::min({a.x, b.x, c.x}) > box.max_x ||
         std::max({a.y, b.y, c.y}) < box.min_y ||
         std::min({a.y, b.y, c.y}) > box.max_y) {
+      continue;
+    }
+    if (box.Contains(a) && box.Contains(b) && box.Contains(c)) {
+      // Inside: the triangle as it is (most of a tile's).
+      std::array<uint32_t, 3> inside;
+      for (int i = 0; i < 3; ++i) {
+        inside[i] = add(PieceVertex{.p = patch.points[t[i]],
+                                    .h = patch.heights[t[i]],
+                                    .key = {VertexKey::kPatchVertex, t[i]}});
+      }
+      out.triangles.push_back(inside);
       continue;
     }
     const std::vector<PieceVertex> piece = clipper.Clip(t);

@@ -53,20 +53,33 @@ struct Boundary {
 };
 
 Boundary BoundaryOf(const ClippedMesh& mesh) {
-  std::unordered_map<uint64_t, int> uses;
-  for (const auto& t : mesh.triangles) {
-    for (int i = 0; i < 3; ++i) ++uses[EdgeKey(t[i], t[(i + 1) % 3])];
-  }
-  Boundary b;
-  b.degree.assign(mesh.size(), 0);
+  // Every edge of every triangle, sorted by EdgeKey: an edge of one
+  // triangle stands alone (an interior edge comes twice).
+  struct HalfEdge {
+    uint64_t key;
+    uint32_t from, to;
+  };
+  std::vector<HalfEdge> half_edges;
+  half_edges.reserve(3 * mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
     for (int i = 0; i < 3; ++i) {
       const uint32_t u = t[i], v = t[(i + 1) % 3];
-      if (uses[EdgeKey(u, v)] != 1) continue;
-      b.edges.emplace(EdgeKey(u, v), std::pair(u, v));
-      ++b.degree[u];
-      ++b.degree[v];
+      half_edges.push_back({EdgeKey(u, v), u, v});
     }
+  }
+  std::sort(half_edges.begin(), half_edges.end(),
+            [](const HalfEdge& a, const HalfEdge& b) { return a.key < b.key; });
+  Boundary b;
+  b.degree.assign(mesh.size(), 0);
+  for (size_t i = 0; i < half_edges.size(); ++i) {
+    const bool alone = (i == 0 || half_edges[i - 1].key != half_edges[i].key) &&
+                       (i + 1 == half_edges.size() ||
+                        half_edges[i + 1].key != half_edges[i].key);
+    if (!alone) continue;
+    const HalfEdge& e = half_edges[i];
+    b.edges.emplace(e.key, std::pair(e.from, e.to));
+    ++b.degree[e.from];
+    ++b.degree[e.to];
   }
   return b;
 }
@@ -200,21 +213,36 @@ class Refiner {
     return std::abs(mesh_.heights[v] - (ha + s * (hb - ha) + t * (hc - ha)));
   }
 
-  // Puts waiting vertex v into the face that holds it, and into the queue.
-  void Wait(Cdt* cdt, uint32_t v, Face_handle hint) {
+  // Puts waiting vertex v into the face that holds it; returns the face.
+  // Queue the face's worst vertex (Enqueue) once its vertices are in.
+  Face_handle Wait(Cdt* cdt, uint32_t v, Face_handle hint) {
     const Face_handle f = cdt->locate(At(v), hint);
     ++version_[v];
     if (cdt->is_infinite(f) || !f->info().inside) {
+      // Rounding put it outside: insert it first, as it is data.
       queue_.push({std::numeric_limits<double>::infinity(), v, version_[v]});
-      return;  // rounding put it outside: insert it first, as it is data
+      return f;
     }
     f->info().waiting.push_back(v);
-    queue_.push({Error(f, v), v, version_[v]});
+    return f;
+  }
+
+  // Queues the vertex of f farthest from its plane: the one a face can
+  // need next. The queue holds one entry per face, not per vertex; an
+  // entry goes stale when its vertex moves to another face.
+  void Enqueue(Face_handle f) {
+    double worst_error = -1;
+    uint32_t worst = kNone;
+    for (uint32_t v : f->info().waiting) {
+      const double error = Error(f, v);
+      if (error > worst_error) worst = v, worst_error = error;
+    }
+    if (worst != kNone) queue_.push({worst_error, worst, version_[worst]});
   }
 
   // Inserts the farthest vertex while one is farther than `tolerance`.
   void Run(Cdt* cdt, double tolerance) {
-    std::vector<Face_handle> conflicts;
+    std::vector<Face_handle> conflicts, touched;
     while (!queue_.empty()) {
       const Entry top = queue_.top();
       queue_.pop();
@@ -235,12 +263,23 @@ class Refiner {
       }
       const Vertex_handle vh = cdt->insert(At(top.v));
       vh->info().index = top.v;
+      touched.clear();
       auto f = cdt->incident_faces(vh), done = f;
       do {
         f->info().waiting.clear();
         f->info().inside = inside;
+        touched.push_back(f);
       } while (++f != done);
-      for (uint32_t v : moved) Wait(cdt, v, vh->face());
+      Face_handle hint = vh->face();
+      for (uint32_t v : moved) {
+        hint = Wait(cdt, v, hint);
+        touched.push_back(hint);
+      }
+      std::sort(touched.begin(), touched.end());
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      for (Face_handle t : touched) {
+        if (!cdt->is_infinite(t) && t->info().inside) Enqueue(t);
+      }
     }
   }
 
@@ -282,10 +321,16 @@ ClippedMesh SimplifyClippedMesh(const ClippedMesh& mesh, double tolerance,
     if (v->info().index == kNone) return mesh;  // a vertex CGAL made
   }
   MarkInside(&cdt);
+  // The vertices come in the patch's order, near one another: each
+  // locate starts from the face of the one before.
+  Face_handle hint;
   for (uint32_t v = 0; v < mesh.size(); ++v) {
     if (!keep[v] && mesh.sides[v] == 0 && boundary.degree[v] == 0) {
-      refiner.Wait(&cdt, v, Face_handle());
+      hint = refiner.Wait(&cdt, v, hint);
     }
+  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info().inside) refiner.Enqueue(f);
   }
   refiner.Run(&cdt, tolerance);
 
