@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <iterator>
 #include <limits>
 #include <queue>
@@ -37,7 +38,9 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
         CGAL::Constrained_triangulation_face_base_2<
             Kernel,
             CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>>,
-    CGAL::Exact_predicates_tag>;
+    // Constraints never cross in a clipped TIN; if they do (a patch that
+    // was no planar mesh), CGAL throws instead of guessing the crossing.
+    CGAL::No_constraint_intersection_tag>;
 using Face_handle = Cdt::Face_handle;
 using Vertex_handle = Cdt::Vertex_handle;
 
@@ -298,9 +301,11 @@ class Refiner {
 
 }  // namespace
 
-ClippedMesh SimplifyClippedMesh(const ClippedMesh& mesh, double tolerance,
-                                double x_scale) {
-  if (mesh.triangles.empty()) return mesh;
+namespace {
+
+// SimplifyClippedMesh, where CGAL may throw.
+ClippedMesh Simplify(const ClippedMesh& mesh, double tolerance,
+                     double x_scale) {
   const Boundary boundary = BoundaryOf(mesh);
   std::vector<bool> keep;
   std::vector<std::pair<uint32_t, uint32_t>> constraints;
@@ -314,11 +319,11 @@ ClippedMesh SimplifyClippedMesh(const ClippedMesh& mesh, double tolerance,
     handle[v]->info().index = v;
   }
   for (const auto& [u, v] : constraints) {
-    cdt.insert_constraint(handle[u], handle[v]);
-  }
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end();
-       ++v) {
-    if (v->info().index == kNone) return mesh;  // a vertex CGAL made
+    // Two vertices at one place share a handle: no edge between them.
+    if (handle[u] == Vertex_handle() || handle[v] == Vertex_handle()) {
+      return mesh;  // an edge to a vertex that was dropped: no plain mesh
+    }
+    if (handle[u] != handle[v]) cdt.insert_constraint(handle[u], handle[v]);
   }
   MarkInside(&cdt);
   // The vertices come in the patch's order, near one another: each
@@ -352,6 +357,20 @@ ClippedMesh SimplifyClippedMesh(const ClippedMesh& mesh, double tolerance,
     out.triangles.push_back(t);
   }
   return out;
+}
+
+}  // namespace
+
+ClippedMesh SimplifyClippedMesh(const ClippedMesh& mesh, double tolerance,
+                                double x_scale) {
+  if (mesh.triangles.empty()) return mesh;
+  try {
+    return Simplify(mesh, tolerance, x_scale);
+  } catch (const std::exception&) {
+    // Crossing constraints (a patch that was no planar mesh): the mesh as
+    // it came, which is still the patch's surface.
+    return mesh;
+  }
 }
 
 }  // namespace locator

@@ -25,8 +25,8 @@ namespace locator {
 // `mesh` simplified within `tolerance` (in the heights' unit, >= 0), its
 // Delaunay criterion taken with x scaled by `x_scale` (> 0: for longitudes
 // and latitudes, the cosine of the latitude, so that triangles are well
-// shaped on the ground). Returns `mesh` unchanged if CGAL had to make a
-// vertex of its own (crossing boundary edges: not from a clipped TIN).
+// shaped on the ground). Returns `mesh` unchanged if its boundary edges
+// cross (it was cut from no planar mesh), which CGAL refuses.
 ClippedMesh SimplifyClippedMesh(const ClippedMesh& mesh, double tolerance,
                                 double x_scale);
 

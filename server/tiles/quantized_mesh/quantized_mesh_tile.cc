@@ -1,6 +1,7 @@
 #include "server/tiles/quantized_mesh/quantized_mesh_tile.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -59,6 +60,21 @@ BoundingBox RegionInDatasetCrs(const gis::CrsTransformer& transformer,
     if (IsFinite(p)) box.Extend(p);
   }
   return box.empty() ? box : Grown(box, kBoxMargin);
+}
+
+// Drops the triangles of `patch` (in degrees) that its map from the
+// dataset's CRS folded: those across the antimeridian, whose corners PROJ
+// puts 360 degrees apart (clipped as they are they would span the world
+// between), and those it turned over (round a pole). A dataset across
+// 180° keeps a seam there, a hole one triangle wide.
+void DropFoldedTriangles(MeshPatch* patch) {
+  std::erase_if(patch->triangles, [&](const std::array<uint32_t, 3>& t) {
+    const Point2 &a = patch->points[t[0]], &b = patch->points[t[1]],
+                 &c = patch->points[t[2]];
+    const double turn = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    return std::max({a.x, b.x, c.x}) - std::min({a.x, b.x, c.x}) > 180 ||
+           !(turn > 0);
+  });
 }
 
 // Puts the vertices on `mesh`'s sides that are not the TIN's own on the
@@ -171,6 +187,7 @@ StatusOr<std::string> RenderQuantizedMesh(const Engine& engine,
       RETURN_IF_ERROR(engine.MeshInBox(box, kMaxTileSourceVertices, &patch));
       const std::vector<Point2> utm = patch.points;
       RETURN_IF_ERROR(transformer->ToRequest(patch.points));
+      DropFoldedTriangles(&patch);
       clipped = ClipMeshToBox(patch, tile_box);
       RETURN_IF_ERROR(
           PutSidesOnTheTin(engine, *transformer, patch, utm, &clipped));

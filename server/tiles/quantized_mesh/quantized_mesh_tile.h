@@ -9,7 +9,9 @@
 // (SimplifyClippedMesh with GeometricError(z)): at every vertex of the TIN
 // inside the tile, and at every point where a TIN edge crosses the tile's
 // sides, the tile's surface is within GeometricError(z) of the TIN, plus
-// the height quantum of the encoding ((max - min) / 32767 of the tile).
+// the encoding's quantization (half the height step, (max - min) / 32767,
+// and the slope times half a u or v step). Between the TIN's vertices
+// nothing is bounded: a simplified edge may cut under a ridge.
 // Where the TIN has no data (outside its hull or domain, or the tile
 // outside the data) the tile has no triangles: a hole, not a guess. Tiles
 // sharing a side keep the same vertices on it, so the terrain is

@@ -105,6 +105,19 @@ TEST(SimplifyClippedMeshTest, BoxesSharingASideKeepTheSameVerticesOnIt) {
             on_side(Piece(*engine, {0, 0, 0.5, 1}), kEastSide).size());
 }
 
+TEST(SimplifyClippedMeshTest, CrossingBoundariesLeaveTheMeshAsItCame) {
+  // Two triangles that overlap: no planar mesh, which CGAL refuses to
+  // constrain; the mesh comes back whole rather than crash or guess.
+  ClippedMesh m;
+  m.points = {{0, 0}, {2, 0}, {0, 2}, {1, 1.5}, {-1, 0.5}, {1, -1}};
+  m.heights = {0, 1, 2, 3, 4, 5};
+  m.sides.assign(6, 0);
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const ClippedMesh simple = SimplifyClippedMesh(m, 100, 1);
+  EXPECT_EQ(simple.triangles, m.triangles);
+  EXPECT_EQ(simple.size(), m.size());
+}
+
 TEST(SimplifyClippedMeshTest, EmptyMeshStaysEmpty) {
   EXPECT_EQ(SimplifyClippedMesh(ClippedMesh(), 1, 1).size(), 0u);
 }
