@@ -40,11 +40,14 @@ BoundingBox Grown(const BoundingBox& b, double fraction) {
   return BoundingBox{b.min_x - dx, b.min_y - dy, b.max_x + dx, b.max_y + dy};
 }
 
-// The box in the dataset's CRS that holds `region` (degrees, within the
-// dataset's area), from its outline mapped by `transformer`; empty if no
-// sample maps.
+// The box in the dataset's CRS that holds `region` (degrees), from its
+// outline mapped by `transformer`, or `dataset` (the dataset's own box)
+// when part of the outline lies where PROJ does not map (outside the area
+// of use of the dataset's CRS): the samples that do map could then miss
+// the data between them.
 BoundingBox RegionInDatasetCrs(const gis::CrsTransformer& transformer,
-                               const BoundingBox& region) {
+                               const BoundingBox& region,
+                               const BoundingBox& dataset) {
   std::vector<Point2> outline;
   for (int i = 0; i <= kSamplesPerSide; ++i) {
     const double t = static_cast<double>(i) / kSamplesPerSide;
@@ -57,23 +60,35 @@ BoundingBox RegionInDatasetCrs(const gis::CrsTransformer& transformer,
   transformer.ToDatasetWhereDefined(outline);
   BoundingBox box;
   for (const Point2& p : outline) {
-    if (IsFinite(p)) box.Extend(p);
+    if (!IsFinite(p)) return dataset;
+    box.Extend(p);
   }
-  return box.empty() ? box : Grown(box, kBoxMargin);
+  return Grown(box, kBoxMargin);
 }
 
 // Drops the triangles of `patch` (in degrees) that its map from the
 // dataset's CRS folded: those across the antimeridian, whose corners PROJ
 // puts 360 degrees apart (clipped as they are they would span the world
-// between), and those it turned over (round a pole). A dataset across
-// 180° keeps a seam there, a hole one triangle wide.
+// between), and those it turned over (round a pole) against the way it
+// turns most (a CRS whose axes point west or south turns them all). A
+// dataset across 180° keeps a seam there, a hole one triangle wide.
 void DropFoldedTriangles(MeshPatch* patch) {
-  std::erase_if(patch->triangles, [&](const std::array<uint32_t, 3>& t) {
+  const auto turn = [&](const std::array<uint32_t, 3>& t) {
     const Point2 &a = patch->points[t[0]], &b = patch->points[t[1]],
                  &c = patch->points[t[2]];
-    const double turn = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    return std::max({a.x, b.x, c.x}) - std::min({a.x, b.x, c.x}) > 180 ||
-           !(turn > 0);
+    return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  };
+  int64_t balance = 0;
+  for (const auto& t : patch->triangles) {
+    const double d = turn(t);
+    balance += d > 0 ? 1 : d < 0 ? -1 : 0;
+  }
+  const double way = balance >= 0 ? 1 : -1;
+  std::erase_if(patch->triangles, [&](const std::array<uint32_t, 3>& t) {
+    const double a = patch->points[t[0]].x, b = patch->points[t[1]].x,
+                 c = patch->points[t[2]].x;
+    return std::max({a, b, c}) - std::min({a, b, c}) > 180 ||
+           !(way * turn(t) > 0);
   });
 }
 
@@ -181,7 +196,8 @@ StatusOr<std::string> RenderQuantizedMesh(const Engine& engine,
     RETURN_IF_ERROR(gis::CrsTransformer::ForThread(
         std::string(kQuantizedMeshCrs), engine.dataset_info().crs,
         &transformer));
-    const BoundingBox box = RegionInDatasetCrs(*transformer, region);
+    const BoundingBox box = RegionInDatasetCrs(
+        *transformer, region, engine.dataset_info().bounding_box);
     if (!box.empty()) {
       MeshPatch patch;
       RETURN_IF_ERROR(engine.MeshInBox(box, kMaxTileSourceVertices, &patch));
