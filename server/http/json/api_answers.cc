@@ -18,9 +18,7 @@ HttpResponse NoRoute(const HttpRequest& request) {
       "no API method " + QuotedInput(request.method + " " + request.path) +
       " (GET /v1/datasets, POST /v1/datasets/{name}:locate, :locateBatch, "
       ":profile or :grid, GET /v1/datasets/{name}/tiles.json, "
-      "/v1/datasets/{name}/tiles/{z}/{x}/{y}.png, "
-      "/v1/datasets/{name}/quantized-mesh/layer.json or "
-      "/v1/datasets/{name}/quantized-mesh/{z}/{x}/{y}.terrain)"));
+      "tiles/z/x/y.png or quantized-mesh/(layer.json|z/x/y.terrain))"));
 }
 
 HttpResponse MethodNotAllowed(const HttpRequest& request,
