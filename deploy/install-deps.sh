@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package that locator's build, tests and benchmarks
-# need, and (with Debian's npm) the pinned npm packages of the tests
-# (tests/server/tiles/quantized_mesh_decoder: the independent quantized-mesh
-# decoder). Idempotent: when all are present it changes nothing and does
-# not touch the network. Prints one line per step; apt's own output goes to
+# need, then the npm packages pinned by the lockfiles in NPM_DIRS (with
+# Debian's npm). Idempotent: when all packages are present it changes
+# nothing and does not touch the network. Prints one line per step; apt's own output goes to
 # a log file ($LOCATOR_DEPS_LOG, default /tmp/locator-install-deps.log) that
 # is shown if a step fails.
 set -euo pipefail
@@ -25,6 +24,11 @@ PACKAGES=(
 )
 
 LOG="${LOCATOR_DEPS_LOG:-/tmp/locator-install-deps.log}"
+REPO="$(cd "$(dirname "$0")/.." && pwd)"
+# The JavaScript locator embeds or runs, each directory's package-lock.json
+# installed into its node_modules by `npm ci`: MapLibre GL JS for the web map,
+# @here/quantized-mesh-decoder for the quantized-mesh tests' independent decoder.
+NPM_DIRS=(client/web tests/server/tiles/quantized_mesh_decoder)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do
@@ -32,12 +36,9 @@ for pkg in "${PACKAGES[@]}"; do
     missing+=("$pkg")
   fi
 done
-
-# node and npm: Debian's, unless a node of another origin (which conflicts
-# with Debian's npm) already brings its own npm.
-if ! command -v node > /dev/null || ! command -v npm > /dev/null; then
-  missing+=(nodejs npm)
-fi
+# Debian's npm, unless an npm is installed already (a nodejs package from
+# elsewhere, such as NodeSource's, bundles one and conflicts with Debian's).
+if ! command -v npm > /dev/null; then missing+=(npm); fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -68,16 +69,17 @@ else
     --no-install-recommends "${missing[@]}"
 fi
 
-# The npm packages, exactly as package-lock.json pins them, into the
-# folder's node_modules (git-ignored), where the tests look.
-DECODER_DIR="$(cd "$(dirname "$0")/.." && pwd)/tests/server/tiles/quantized_mesh_decoder"
-DECODER_VERSION=$(sed -n 's/.*"@here\/quantized-mesh-decoder": "\(.*\)".*/\1/p' \
-  "$DECODER_DIR/package.json")
-INSTALLED="$DECODER_DIR/node_modules/@here/quantized-mesh-decoder/package.json"
-if [ -f "$INSTALLED" ] && grep -q "\"version\": \"$DECODER_VERSION\"" "$INSTALLED"; then
-  echo "install-deps: npm packages present"
-else
-  step "installing the tests' npm packages (npm ci)" \
-    npm ci --prefix "$DECODER_DIR" --no-audit --no-fund
-fi
-echo "install-deps: done; apt's output is in $LOG"
+# npm_ci DIR: installs DIR's lockfile; a copy of the lockfile in
+# node_modules marks an install that is up to date.
+npm_ci() {
+  local dir=$REPO/$1
+  if cmp -s "$dir/package-lock.json" "$dir/node_modules/.locator-lock.json"; then
+    echo "install-deps: $1/node_modules is up to date"
+    return
+  fi
+  step "npm ci in $1" npm ci --prefix "$dir" --no-audit --no-fund \
+    --ignore-scripts
+  cp "$dir/package-lock.json" "$dir/node_modules/.locator-lock.json"
+}
+for dir in "${NPM_DIRS[@]}"; do npm_ci "$dir"; done
+echo "install-deps: done; the installers' output is in $LOG"

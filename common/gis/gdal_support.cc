@@ -6,6 +6,7 @@
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <mutex>
 
 #include "common/gis/proj_objects.h"
@@ -78,6 +79,18 @@ std::string DriverNames(std::span<const char* const> drivers) {
     list += (list.empty() ? "" : ", ") + std::string(driver);
   }
   return list;
+}
+
+Status CheckUntrustedDriverName(const std::string& requested,
+                                std::span<const char* const> drivers) {
+  if (requested.empty() ||
+      std::any_of(drivers.begin(), drivers.end(),
+                  [&](const char* d) { return requested == d; })) {
+    return Status::OK();
+  }
+  return Status::InvalidArgument("driver=" + QuotedInput(requested) +
+                                 ": a Reload may read only " +
+                                 DriverNames(drivers));
 }
 
 Status ChooseUntrustedDriver(const std::string& requested,

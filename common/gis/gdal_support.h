@@ -82,6 +82,11 @@ std::string IdentifyDriverAmong(const std::string& path, unsigned kind,
 // `drivers` as "A, B, C".
 std::string DriverNames(std::span<const char* const> drivers);
 
+// OK if `requested` is empty or one of `drivers`; InvalidArgument
+// "driver='NAME': a Reload may read only DRIVERS" otherwise.
+Status CheckUntrustedDriverName(const std::string& requested,
+                                std::span<const char* const> drivers);
+
 // The driver a request's file at `path` is to be read with: `requested`
 // when the request names one (checked against `drivers` before), else the
 // one among `drivers` IdentifyDriverAmong finds. InvalidArgument "not a

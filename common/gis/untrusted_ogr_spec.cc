@@ -64,14 +64,7 @@ Status CheckUntrustedOgrOptions(const OgrDatasetSpec& spec) {
       return Status::InvalidArgument("a_srs=: " + status.message());
     }
   }
-  if (!spec.driver.empty() &&
-      std::none_of(kVectorDrivers.begin(), kVectorDrivers.end(),
-                   [&](const char* d) { return spec.driver == d; })) {
-    return Status::InvalidArgument("driver=" + spec.driver.substr(0, 40) +
-                                   ": a Reload may read only " +
-                                   DriverNames(kVectorDrivers));
-  }
-  return Status::OK();
+  return CheckUntrustedDriverName(spec.driver, kVectorDrivers);
 }
 
 Status UntrustedOgrDriver(const OgrDatasetSpec& spec, const std::string& path,

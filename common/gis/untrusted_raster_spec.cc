@@ -2,7 +2,6 @@
 
 #include <gdal.h>
 
-#include <algorithm>
 #include <array>
 
 #include "common/gis/gdal_support.h"
@@ -23,14 +22,7 @@ Status CheckUntrustedRasterOptions(const RasterDatasetSpec& spec) {
       return Status::InvalidArgument("a_srs=: " + status.message());
     }
   }
-  if (!spec.driver.empty() &&
-      std::none_of(kRasterDrivers.begin(), kRasterDrivers.end(),
-                   [&](const char* d) { return spec.driver == d; })) {
-    return Status::InvalidArgument("driver=" + QuotedInput(spec.driver) +
-                                   ": a Reload may read only " +
-                                   DriverNames(kRasterDrivers));
-  }
-  return Status::OK();
+  return CheckUntrustedDriverName(spec.driver, kRasterDrivers);
 }
 
 Status UntrustedRasterDriver(const RasterDatasetSpec& spec,

@@ -79,8 +79,11 @@ size_t BatchLocator::ShardCount(size_t points) const {
 
 void BatchLocator::Run(const v1::LocateBatchRequest& request,
                        LocateBatchFn locate_batch, CallControl control,
-                       v1::LocateBatchResponse* response) {
-  if (Status invalid = Validate(request); !invalid.ok()) {
+                       v1::LocateBatchResponse* response,
+                       const std::function<Status()>& check) {
+  Status invalid = Validate(request);
+  if (invalid.ok() && check) invalid = check();
+  if (!invalid.ok()) {
     control.finish(invalid);
     return;
   }

@@ -66,9 +66,13 @@ class BatchLocator {
   // into `response` while the call is neither cancelled nor past its
   // deadline, and calls control.finish with the outcome (CANCELLED or
   // DEADLINE_EXCEEDED when interrupted), possibly before returning.
-  // `request` and `response` must live until then.
+  // `request` and `response` must live until then. `check`, if given, runs
+  // once the request passed Validate and before anything is located (the
+  // application's check of the request's CRS, so that an oversized batch is
+  // refused for its size whatever its CRS); its error finishes the call.
   void Run(const v1::LocateBatchRequest& request, LocateBatchFn locate_batch,
-           CallControl control, v1::LocateBatchResponse* response);
+           CallControl control, v1::LocateBatchResponse* response,
+           const std::function<Status()>& check = nullptr);
 
   // The checks Run() makes before locating anything: xs and ys of equal
   // length (InvalidArgument), at most max_batch_points points

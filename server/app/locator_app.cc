@@ -129,17 +129,12 @@ void LocatorApp::LocateBatch(Admission call,
                              BatchLocator::CallControl control,
                              v1::LocateBatchResponse* response) {
   StatusOr<QueryOptions> options = QueryOptionsOf(request);
-  // A batch is validated before its CRS is checked, so that an oversized one
-  // is refused for its size whatever its CRS.
-  Status refused = options.status();
-  if (refused.ok() && !options->crs.empty()) {
-    refused = batch_locator_.Validate(request);
-    if (refused.ok()) refused = CheckRequestCrs(*call.engine, options->crs);
-  }
-  if (!refused.ok()) {
-    control.finish(refused);
+  if (!options.ok()) {
+    control.finish(options.status());
     return;
   }
+  const Engine& engine = *call.engine;
+  const std::string crs = options->crs;
   // The function (and with it the admission) lives until the batch ends.
   // Each block is transformed where it is located, on its shard's thread.
   batch_locator_.Run(
@@ -153,7 +148,8 @@ void LocatorApp::LocateBatch(Admission call,
         return call.engine->LocateBatch(points, results, keep_going,
                                         options.interpolation, options.detail);
       },
-      std::move(control), response);
+      std::move(control), response,
+      [&engine, &crs] { return CheckRequestCrs(engine, crs); });
 }
 
 void LocatorApp::ListDatasets(v1::ListDatasetsResponse* response) const {

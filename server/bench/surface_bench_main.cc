@@ -60,7 +60,8 @@ void AddSurfaceBenchFlags(SurfaceBenchRun* run, locator::FlagSet* flags) {
   flags->Add("dem", flag::Switch(&run->dem),
              "TIN builds of fractal DEMs, in hmm's shape");
   flags->Add("tiles", flag::Switch(&run->tiles),
-             "ms per 256x256 terrain tile (PROJ, walk, PNG) by zoom");
+             "ms per 256x256 terrain tile (PROJ, walk, PNG) and hillshade "
+             "tile by zoom");
   flags->Add("quantized-mesh", flag::Switch(&run->quantized_mesh),
              "ms per Cesium terrain tile by level");
   flags->Add("tiles-per-zoom", flag::Count(&run->tile_options.tiles, 1, 1024),

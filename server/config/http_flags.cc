@@ -37,7 +37,7 @@ void AddHttpFlags(ServerConfig* config, FlagSet* flags) {
                               return ParseListenAddress(
                                   text, &config->http_host, &config->http_port);
                             }).Shape("HOST:PORT"),
-             "HOST:PORT for /metrics, the status page, the web example (/web/) "
+             "HOST:PORT for /metrics, the status page, the web map (/web/) "
              "and the HTTP/JSON API (/v1/); port 0 lets the OS pick (the "
              "chosen port is printed); empty = off");
   flags->Add("http-max-body-bytes",

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "common/status_macros.h"
@@ -24,6 +26,17 @@ uint32_t StartNear(const ServingMesh& mesh, const PointLocator& locator,
   locator.Locate(q, &r);
   return r.triangle_id >= 0 ? static_cast<uint32_t>(r.triangle_id)
                             : mesh.TriangleNear(q);
+}
+
+// The face a scan of `points` starts at: near the first finite point;
+// nullopt if none is finite.
+std::optional<uint32_t> ScanStart(const ServingMesh& mesh,
+                                  const PointLocator& locator,
+                                  std::span<const Point2> points) {
+  const auto first = std::find_if(points.begin(), points.end(),
+                                  [](const Point2& p) { return IsFinite(p); });
+  if (first == points.end()) return std::nullopt;
+  return StartNear(mesh, locator, *first);
 }
 
 }  // namespace
@@ -85,15 +98,26 @@ Status Engine::RenderPoints(std::span<const Point2> points, size_t row_length,
   if (row_length == 0) {
     return Status::InvalidArgument("RenderPoints: row_length must be >= 1");
   }
-  const auto first = std::find_if(points.begin(), points.end(),
-                                  [](const Point2& p) { return IsFinite(p); });
-  if (first == points.end()) {
+  const std::optional<uint32_t> start = ScanStart(*mesh_, *locator_, points);
+  if (!start.has_value()) {
     std::fill_n(out, points.size(), nodata);
     return Status::OK();
   }
-  const ServingMesh& mesh = *mesh_;
-  ::locator::RenderPoints(mesh, StartNear(mesh, *locator_, *first), points,
-                          row_length, how, nodata, out);
+  ::locator::RenderPoints(*mesh_, *start, points, row_length, how, nodata, out);
+  return Status::OK();
+}
+
+Status Engine::RenderGradients(std::span<const Point2> points,
+                               size_t row_length, FacetGradient* out) const {
+  if (row_length == 0) {
+    return Status::InvalidArgument("RenderGradients: row_length must be >= 1");
+  }
+  const std::optional<uint32_t> start = ScanStart(*mesh_, *locator_, points);
+  if (!start.has_value()) {
+    std::fill_n(out, points.size(), FacetGradient{});
+    return Status::OK();
+  }
+  ::locator::RenderGradients(*mesh_, *start, points, row_length, out);
   return Status::OK();
 }
 

@@ -1,6 +1,6 @@
 // Static files embedded into locatord at build time by embed_files.cmake,
 // so that it serves them without any file at run time: the status page
-// (server/http/status_page/) and the web example (client/web/).
+// (server/http/status_page/) and the web map (client/web/, with MapLibre).
 //
 // Thread-safety: immutable data.
 

@@ -25,7 +25,7 @@ void AppendBytes(png_structp png, png_bytep data, png_size_t length) {
 void NoFlush(png_structp) {}
 
 // libpng's error callback must not return: it records the message and
-// jumps back to EncodeRgbaPng's setjmp.
+// jumps back to EncodePng's setjmp.
 [[noreturn]] void RecordError(png_structp png, png_const_charp message) {
   auto* out = static_cast<PngOutput*>(png_get_error_ptr(png));
   out->error = message;
@@ -36,12 +36,14 @@ void IgnoreWarning(png_structp, png_const_charp) {}
 
 }  // namespace
 
-StatusOr<std::string> EncodeRgbaPng(std::span<const uint8_t> rgba,
-                                    uint32_t width, uint32_t height) {
-  if (rgba.size() != size_t{width} * height * 4) {
-    return Status::InvalidArgument("an RGBA image of " + std::to_string(width) +
-                                   " x " + std::to_string(height) +
-                                   " pixels needs 4 bytes a pixel");
+StatusOr<std::string> EncodePng(std::span<const uint8_t> pixels, uint32_t width,
+                                uint32_t height, PngColor color) {
+  const size_t pixel_bytes = BytesPerPixel(color);
+  if (pixels.size() != size_t{width} * height * pixel_bytes) {
+    return Status::InvalidArgument(
+        "an image of " + std::to_string(width) + " x " +
+        std::to_string(height) + " pixels needs " +
+        std::to_string(pixel_bytes) + " bytes a pixel");
   }
   PngOutput out;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &out,
@@ -51,7 +53,8 @@ StatusOr<std::string> EncodeRgbaPng(std::span<const uint8_t> rgba,
   // Row pointers outlive the jump: made before setjmp, not changed after.
   std::vector<png_bytep> rows(height);
   for (uint32_t r = 0; r < height; ++r) {
-    rows[r] = const_cast<png_bytep>(rgba.data() + size_t{r} * width * 4);
+    rows[r] =
+        const_cast<png_bytep>(pixels.data() + size_t{r} * width * pixel_bytes);
   }
   if (info == nullptr || setjmp(png_jmpbuf(png)) != 0) {
     png_destroy_write_struct(&png, &info);
@@ -59,7 +62,9 @@ StatusOr<std::string> EncodeRgbaPng(std::span<const uint8_t> rgba,
                             (out.error.empty() ? "out of memory" : out.error));
   }
   png_set_write_fn(png, &out, AppendBytes, NoFlush);
-  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB_ALPHA,
+  png_set_IHDR(png, info, width, height, 8,
+               color == PngColor::kRgba ? PNG_COLOR_TYPE_RGB_ALPHA
+                                        : PNG_COLOR_TYPE_GRAY_ALPHA,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, Z_BEST_SPEED);

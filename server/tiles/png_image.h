@@ -1,4 +1,5 @@
-// EncodeRgbaPng: an 8-bit RGBA image as a PNG file in memory, with libpng.
+// EncodePng: an 8-bit RGBA or grey-and-alpha image as a PNG file in
+// memory, with libpng.
 // Compressed for speed (zlib level 1, the Sub filter, which suits smooth
 // terrain), since a tile is made per request.
 //
@@ -7,6 +8,7 @@
 #ifndef LOCATOR_SERVER_TILES_PNG_IMAGE_H_
 #define LOCATOR_SERVER_TILES_PNG_IMAGE_H_
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -15,11 +17,21 @@
 
 namespace locator {
 
-// The PNG of the `width` x `height` image `rgba` (4 bytes a pixel, row by
-// row, north first); Internal with libpng's message if libpng fails,
-// InvalidArgument if `rgba` does not hold width * height pixels.
-StatusOr<std::string> EncodeRgbaPng(std::span<const uint8_t> rgba,
-                                    uint32_t width, uint32_t height);
+// The colour of a pixel: red, green, blue and alpha (terrain), or grey and
+// alpha (shaded relief), a byte each.
+enum class PngColor { kRgba, kGrayAlpha };
+
+// The number of bytes a pixel of `color` takes.
+constexpr size_t BytesPerPixel(PngColor color) {
+  return color == PngColor::kRgba ? 4 : 2;
+}
+
+// The PNG of the `width` x `height` image `pixels` (BytesPerPixel(color)
+// bytes a pixel, row by row, north first); Internal with libpng's message
+// if libpng fails, InvalidArgument if `pixels` does not hold width * height
+// pixels.
+StatusOr<std::string> EncodePng(std::span<const uint8_t> pixels, uint32_t width,
+                                uint32_t height, PngColor color);
 
 }  // namespace locator
 

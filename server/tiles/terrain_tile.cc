@@ -180,7 +180,8 @@ StatusOr<std::string> RenderTerrainTile(const Engine& engine,
     std::copy(rgb.begin(), rgb.end(), rgba.begin() + 4 * i);
     rgba[4 * i + 3] = 255;
   }
-  return EncodeRgbaPng(rgba, TileAddress::kPixels, TileAddress::kPixels);
+  return EncodePng(rgba, TileAddress::kPixels, TileAddress::kPixels,
+                   PngColor::kRgba);
 }
 
 StatusOr<std::string> TileJson(const Engine& engine, std::string_view name,
@@ -238,10 +239,6 @@ StatusOr<std::string> TileJson(const Engine& engine, std::string_view name,
       .Integer(TileAddress::kPixels)
       .EndObject();
   return out.TakeText();
-}
-
-std::string TileETag(uint64_t generation, TerrainEncoding encoding) {
-  return TileETag(generation, TerrainEncodingName(encoding));
 }
 
 std::string TileETag(uint64_t generation, std::string_view variant) {

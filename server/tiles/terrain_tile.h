@@ -82,13 +82,10 @@ StatusOr<std::string> TileJson(const Engine& engine, std::string_view name,
                                TerrainEncoding encoding);
 
 // The entity tag of the tiles (and TileJSON) of a dataset served as
-// `generation` in `encoding`, quoted as HTTP wants it: the generation
-// changes with every reload, and a random number drawn once per process
-// tells this run's generation 1 from the last run's, whose data may differ.
-std::string TileETag(uint64_t generation, TerrainEncoding encoding);
-
-// As TileETag, for tiles of another kind: `variant` tells them apart (and
-// apart from the terrain encodings' names).
+// `generation`, drawn as `variant` (the encoding's name, or the shading's
+// parameters), quoted as HTTP wants it: the generation changes with every
+// reload, and a random number drawn once per process tells this run's
+// generation 1 from the last run's, whose data may differ.
 std::string TileETag(uint64_t generation, std::string_view variant);
 
 }  // namespace locator

@@ -4,10 +4,10 @@
 // Profile or Grid on a small fixed dataset (or on "utm", the same points
 // in UTM zone 33N with a CRS, so that request CRS strings reach PROJ) ->
 // the JSON answer. The tile routes take the input as the rest of their
-// path (and query) instead: /v1/datasets/utm/tiles/{input}, answered with
-// a PNG (or TileJSON) or an ApiError, and
-// /v1/datasets/utm/quantized-mesh/{input}, answered with a quantized-mesh
-// tile (or layer.json) or an ApiError.
+// path (and query) instead: /v1/datasets/utm/tiles/{input} or
+// .../hillshade/{input}, answered with a PNG (or TileJSON) or an ApiError,
+// and /v1/datasets/utm/quantized-mesh/{input}, answered with a
+// quantized-mesh tile (or layer.json) or an ApiError.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
@@ -73,6 +73,7 @@ constexpr Route kRoutes[] = {
     {"GET", "/v1/datasets/utm/tiles/"},
     {"GET", "/v1/datasets/utm/tiles"},
     {"GET", "/v1/datasets/default/tiles/"},
+    {"GET", "/v1/datasets/utm/hillshade/"},
     {"GET", "/v1/datasets/utm/quantized-mesh/"},
     {"GET", "/v1/datasets/default/quantized-mesh/"},
 };
@@ -85,8 +86,9 @@ constexpr Route kRoutes[] = {
 
 // Whether `route` takes the input as the rest of its path.
 bool IsTileRoute(const Route& route) {
-  const std::string_view path(route.path);
+  const std::string_view path = route.path;
   return path.find("/tiles") != std::string_view::npos ||
+         path.find("/hillshade/") != std::string_view::npos ||
          path.find("/quantized-mesh/") != std::string_view::npos;
 }
 

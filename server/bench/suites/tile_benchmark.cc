@@ -12,6 +12,7 @@
 #include "locator/engine.h"
 #include "server/bench/datasets/surface_terrain.h"
 #include "server/bench/stopwatch.h"
+#include "server/tiles/hillshade.h"
 #include "server/tiles/terrain_tile.h"
 
 namespace locator::bench {
@@ -77,13 +78,13 @@ Status RunTileBenchmark(const TileBenchOptions& options, std::ostream& out) {
   out << "tile benchmark: " << options.points << " points in " << kCrs
       << ", 256x256 terrarium tiles, single thread\n"
       << "zoom | tiles | ms per tile (mean) | max ms | of which: PROJ ms | "
-         "walk ms | encode+PNG ms | PNG bytes\n";
+         "walk ms | encode+PNG ms | PNG bytes | hillshade ms (mean)\n";
   std::vector<Point2> pixels;
   std::vector<double> heights(TileAddress::kPixels * TileAddress::kPixels);
   for (uint32_t z = 11; z <= 17; ++z) {
     const std::vector<TileAddress> tiles =
         TilesAround(*centre, z, options.tiles);
-    double total = 0, worst = 0, proj = 0, walk = 0;
+    double total = 0, worst = 0, proj = 0, walk = 0, shade = 0;
     size_t bytes = 0;
     for (const TileAddress& tile : tiles) {
       Stopwatch watch;
@@ -103,6 +104,11 @@ Status RunTileBenchmark(const TileBenchOptions& options, std::ostream& out) {
                                            Interpolation::kLinear, 0,
                                            heights.data()));
       walk += watch.Seconds();
+      watch.Restart();
+      RETURN_IF_ERROR(
+          RenderHillshadeTile(*engine, "terrain", tile, HillshadeOptions())
+              .status());
+      shade += watch.Seconds();
     }
     const double n = static_cast<double>(tiles.size());
     out << std::fixed << std::setprecision(2) << std::setw(4) << z << " | "
@@ -111,7 +117,8 @@ Status RunTileBenchmark(const TileBenchOptions& options, std::ostream& out) {
         << std::setw(17) << proj / n * 1e3 << " | " << std::setw(7)
         << walk / n * 1e3 << " | " << std::setw(13)
         << (total - proj - walk) / n * 1e3 << " | " << std::setw(9)
-        << static_cast<size_t>(bytes / n) << "\n";
+        << static_cast<size_t>(bytes / n) << " | " << std::setw(19)
+        << shade / n * 1e3 << "\n";
   }
   return Status::OK();
 }

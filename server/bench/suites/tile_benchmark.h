@@ -3,7 +3,9 @@
 // encoding and libpng), single-threaded, on the synthetic terrain
 // (surface_terrain.h) placed in UTM zone 33N, for zooms from the one whose
 // single tile holds the terrain to the one whose pixels are about the
-// points' spacing; each zoom's row also splits the time into its parts.
+// points' spacing; each zoom's row also splits the time into its parts,
+// and gives the milliseconds per hillshade tile (RenderHillshadeTile, the
+// default light) of the same tiles.
 //
 // A program that prints figures, never a test.
 

@@ -72,6 +72,55 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   return ValueAt(mesh, f, q, how);
 }
 
+// Walks to each of `points` in scan order (see RenderPoints) and writes
+// `at(w, q)` for each point q the walk `w` reached, or `none` for a point
+// that is not finite.
+template <class T, class AtPoint>
+void ScanPoints(const ServingMesh& mesh, uint32_t hint,
+                std::span<const Point2> points, size_t row_length, T none,
+                AtPoint at, T* out) {
+  uint32_t row_start = hint;
+  uint32_t face = hint;
+  bool row_started = false;
+  for (size_t i = 0; i < points.size(); ++i) {
+    // A row's first point is next to the previous row's, not to that row's
+    // last point a tile's width away.
+    if (i % row_length == 0) {
+      face = row_start;
+      row_started = false;
+    }
+    const Point2& q = points[i];
+    if (!IsFinite(q)) {
+      *out++ = none;
+      continue;
+    }
+    const MeshWalkOutcome w = Walk(mesh, face, q);
+    face = w.face;
+    if (!row_started) row_start = face;
+    row_started = true;
+    *out++ = at(w, q);
+  }
+}
+
+// The gradient of the plane through face f's corners and their values,
+// from the normal (corner 1 - corner 0) x (corner 2 - corner 0): its z is
+// twice the face's signed area, never 0 for a face of the mesh.
+FacetGradient GradientOf(const ServingMesh& mesh, uint32_t f) {
+  const Point2& a = mesh.CornerPoint(f, 0);
+  const Point2& b = mesh.CornerPoint(f, 1);
+  const Point2& c = mesh.CornerPoint(f, 2);
+  const std::span<const double> values = mesh.arrays().values;
+  const double va = values[mesh.Corner(f, 0)];
+  const double ux = b.x - a.x, uy = b.y - a.y,
+               uz = values[mesh.Corner(f, 1)] - va;
+  const double vx = c.x - a.x, vy = c.y - a.y,
+               vz = values[mesh.Corner(f, 2)] - va;
+  const double nx = uy * vz - uz * vy;
+  const double ny = uz * vx - ux * vz;
+  const double nz = ux * vy - uy * vx;
+  return FacetGradient{-nx / nz, -ny / nz};
+}
+
 }  // namespace
 
 void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
@@ -92,27 +141,27 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
 void RenderPoints(const ServingMesh& mesh, uint32_t hint,
                   std::span<const Point2> points, size_t row_length,
                   Interpolation how, double nodata, double* out) {
-  uint32_t row_start = hint;
-  uint32_t face = hint;
-  bool row_started = false;
-  for (size_t i = 0; i < points.size(); ++i) {
-    // A row's first point is next to the previous row's, not to that row's
-    // last point a tile's width away.
-    if (i % row_length == 0) {
-      face = row_start;
-      row_started = false;
-    }
-    const Point2& q = points[i];
-    if (!IsFinite(q)) {
-      *out++ = nodata;
-      continue;
-    }
-    const MeshWalkOutcome w = Walk(mesh, face, q);
-    face = w.face;
-    if (!row_started) row_start = face;
-    row_started = true;
-    *out++ = CellValue(mesh, how, nodata, w, q);
-  }
+  ScanPoints(
+      mesh, hint, points, row_length, nodata,
+      [&](const MeshWalkOutcome& w, const Point2& q) {
+        return CellValue(mesh, how, nodata, w, q);
+      },
+      out);
+}
+
+void RenderGradients(const ServingMesh& mesh, uint32_t hint,
+                     std::span<const Point2> points, size_t row_length,
+                     FacetGradient* out) {
+  ScanPoints(
+      mesh, hint, points, row_length, FacetGradient{},
+      [&](const MeshWalkOutcome& w, const Point2&) {
+        const uint32_t f = ClosedDomainFace(mesh, w);
+        if (!mesh.has_values() || f == ServingMesh::kNoFace) {
+          return FacetGradient{};
+        }
+        return GradientOf(mesh, f);
+      },
+      out);
 }
 
 }  // namespace locator

@@ -39,6 +39,14 @@ void RenderPoints(const ServingMesh& mesh, uint32_t hint,
                   std::span<const Point2> points, size_t row_length,
                   Interpolation how, double nodata, double* out);
 
+// Renders the gradient of the facet at each of `points` into `out`
+// (points.size() gradients), walking as RenderPoints does. A point on an
+// edge or a vertex takes the in-domain face the walk found there; a point
+// with no facet gets NaN. Precondition: row_length >= 1.
+void RenderGradients(const ServingMesh& mesh, uint32_t hint,
+                     std::span<const Point2> points, size_t row_length,
+                     FacetGradient* out);
+
 }  // namespace locator
 
 #endif  // LOCATOR_CORE_RASTER_RENDER_H_

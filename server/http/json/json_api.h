@@ -15,6 +15,8 @@
 //                                          a terrain tile (see tile_api.cc)
 //   GET  /v1/datasets/{name}/tiles.json?encoding=...
 //                                          its TileJSON 3.0.0
+//   GET  /v1/datasets/{name}/hillshade/{z}/{x}/{y}.png?azimuth=&altitude=
+//        &z_factor=&scale=                 a shaded relief tile
 //   GET  /v1/datasets/{name}/quantized-mesh/{z}/{x}/{y}.terrain
 //                                          Cesium terrain (see
 //                                          quantized_mesh_api.cc)
@@ -139,8 +141,8 @@ class JsonApi {
                           std::string method, HttpReply reply);
   // GET /v1/datasets.
   void ServeListDatasets(const HttpRequest& request, HttpReply reply);
-  // GET /v1/datasets/{name}/{rest}: the terrain tiles and their TileJSON
-  // (tile_api.cc).
+  // GET /v1/datasets/{name}/{rest}: the terrain tiles and their TileJSON,
+  // and the hillshade tiles (tile_api.cc).
   void ServeTiles(HttpRequest request, std::string name, std::string rest,
                   HttpReply reply);
   // GET /v1/datasets/{name}/quantized-mesh/{rest}: Cesium terrain and its

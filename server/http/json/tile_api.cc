@@ -1,14 +1,18 @@
-// The HTTP routes of the terrain tiles (server/tiles/terrain_tile.h):
+// The HTTP routes of the terrain tiles (server/tiles/terrain_tile.h) and
+// the hillshade tiles (server/tiles/hillshade.h):
 //
 //   GET /v1/datasets/{name}/tiles/{z}/{x}/{y}.png?encoding=terrarium|mapbox
 //   GET /v1/datasets/{name}/tiles.json?encoding=terrarium|mapbox
+//   GET /v1/datasets/{name}/hillshade/{z}/{x}/{y}.png?azimuth=&altitude=
+//       &z_factor=&scale=
 //
 // admitted as every dataset method is (LocatorApp::Admit: the drain, the
 // data token, the dataset) and run in the expensive lane (a tile walks
-// 65536 pixels). Both carry an ETag (TileETag: the dataset's generation and
-// the encoding) and Cache-Control, and answer 304 without rendering to an
-// If-None-Match that names the ETag. Tiles of a server that wants a token
-// are "private", so that no shared cache hands them to someone without one.
+// 65536 pixels). All carry an ETag (TileETag: the dataset's generation and
+// the encoding or the light) and Cache-Control, and answer 304 without
+// rendering to an If-None-Match that names the ETag. Tiles of a server that
+// wants a token are "private", so that no shared cache hands them to someone
+// without one.
 
 #include <array>
 #include <optional>
@@ -21,12 +25,14 @@
 #include "server/http/json/api_answers.h"
 #include "server/http/json/json_api.h"
 #include "server/http/query_string.h"
+#include "server/tiles/hillshade.h"
 #include "server/tiles/terrain_tile.h"
 
 namespace locator {
 namespace {
 
 constexpr std::string_view kTilesPrefix = "/tiles/";
+constexpr std::string_view kHillshadePrefix = "/hillshade/";
 constexpr std::string_view kTileJsonPath = "/tiles.json";
 constexpr std::string_view kPngSuffix = ".png";
 // How long a browser may use a tile without asking again: a reload shows
@@ -83,8 +89,10 @@ std::string JsonApi::TileCacheControl() const {
 void JsonApi::ServeTiles(HttpRequest request, std::string name,
                          std::string rest, HttpReply reply) {
   const bool tile_json = rest == kTileJsonPath;
-  if (!tile_json &&
-      !(rest.starts_with(kTilesPrefix) && rest.ends_with(kPngSuffix))) {
+  const bool png = rest.ends_with(kPngSuffix);
+  const bool terrain = png && rest.starts_with(kTilesPrefix);
+  const bool hillshade = png && rest.starts_with(kHillshadePrefix);
+  if (!tile_json && !terrain && !hillshade) {
     reply(NoRoute(request));
     return;
   }
@@ -99,21 +107,41 @@ void JsonApi::ServeTiles(HttpRequest request, std::string name,
     reply(ApiError(call.status()));
     return;
   }
-  const StatusOr<TerrainEncoding> encoding =
-      ParseTerrainEncoding(QueryParameter(request.query, "encoding"));
-  if (!encoding.ok()) {
-    reply(ApiError(encoding.status()));
-    return;
+  // What the tiles show: a terrain encoding, or the light of the relief.
+  TerrainEncoding encoding = TerrainEncoding::kTerrarium;
+  HillshadeOptions light;
+  std::string variant;
+  if (hillshade) {
+    StatusOr<HillshadeOptions> parsed =
+        ParseHillshadeOptions(QueryParameter(request.query, "azimuth"),
+                              QueryParameter(request.query, "altitude"),
+                              QueryParameter(request.query, "z_factor"),
+                              QueryParameter(request.query, "scale"));
+    if (!parsed.ok()) {
+      reply(ApiError(parsed.status()));
+      return;
+    }
+    light = *parsed;
+    variant = HillshadeVariant(light);
+  } else {
+    const StatusOr<TerrainEncoding> parsed =
+        ParseTerrainEncoding(QueryParameter(request.query, "encoding"));
+    if (!parsed.ok()) {
+      reply(ApiError(parsed.status()));
+      return;
+    }
+    encoding = *parsed;
+    variant = TerrainEncodingName(encoding);
   }
   TileAddress tile;
   if (!tile_json) {
-    // "/tiles/{z}/{x}/{y}.png": three segments between the prefix and the
+    // "{prefix}{z}/{x}/{y}.png": three segments between the prefix and the
     // suffix.
+    const std::string_view prefix = hillshade ? kHillshadePrefix : kTilesPrefix;
     std::array<std::string_view, 3> zxy;
     if (!SplitTilePath(
             std::string_view(rest).substr(
-                kTilesPrefix.size(),
-                rest.size() - kTilesPrefix.size() - kPngSuffix.size()),
+                prefix.size(), rest.size() - prefix.size() - kPngSuffix.size()),
             &zxy)) {
       reply(NoRoute(request));
       return;
@@ -126,7 +154,7 @@ void JsonApi::ServeTiles(HttpRequest request, std::string name,
     tile = *parsed;
   }
   std::vector<std::pair<std::string, std::string>> headers = {
-      {"ETag", TileETag(call->generation, *encoding)},
+      {"ETag", TileETag(call->generation, variant)},
       {"Cache-Control", TileCacheControl()}};
   if (const std::optional<std::string_view> match =
           request.Header("if-none-match");
@@ -136,15 +164,16 @@ void JsonApi::ServeTiles(HttpRequest request, std::string name,
   }
   RunInLane(tile_json ? cheap_ : expensive_, deadline, std::move(reply),
             [call = *std::move(call), request = std::move(request),
-             name = std::move(name), encoding = *encoding, tile, tile_json,
-             headers = std::move(headers)](HttpReply reply) mutable {
+             name = std::move(name), encoding, light, hillshade, tile,
+             tile_json, headers = std::move(headers)](HttpReply reply) mutable {
               const Engine& engine = *call.engine;
               StatusOr<std::string> body =
-                  tile_json ? TileJson(engine, name,
-                                       TilesUrl(request, name,
-                                                TerrainEncodingName(encoding)),
-                                       encoding)
-                            : RenderTerrainTile(engine, name, tile, encoding);
+                  tile_json   ? TileJson(engine, name,
+                                         TilesUrl(request, name,
+                                                  TerrainEncodingName(encoding)),
+                                         encoding)
+                  : hillshade ? RenderHillshadeTile(engine, name, tile, light)
+                              : RenderTerrainTile(engine, name, tile, encoding);
               if (!body.ok()) {
                 reply(ApiError(body.status()));
                 return;

@@ -19,7 +19,7 @@
 //                 503 while loading
 //   /            the status page (index.html); other embedded page files
 //                by name, e.g. /app.js
-//   /web/        the web example (client/web/: index.html, and its files
+//   /web/        the web map (client/web/: index.html, and its files
 //                by name)
 //   otherwise    404
 //

@@ -56,8 +56,8 @@ TEST(UntrustedOgrSpecTest, OptionsThatRunSqlOrNameFilesAreRefused) {
        "a_srs=: CRS '+proj=longlat +ellps=WGS84 +nadgrids=/dev/ptmx' names "
        "a file PROJ may not open here: '/dev/ptmx' (outside PROJ's data "
        "directories)"},
-      {"a.gpkg?driver=OGR_VRT", "driver=OGR_VRT: a Reload may read only"},
-      {"a.sqlite?driver=SQLite", "driver=SQLite"},
+      {"a.gpkg?driver=OGR_VRT", "driver='OGR_VRT': a Reload may read only"},
+      {"a.sqlite?driver=SQLite", "driver='SQLite'"},
   };
   for (const auto& c : kCases) {
     const Status status = CheckSpec(c.spec);

@@ -126,9 +126,9 @@ INSTANTIATE_TEST_SUITE_P(InputsAndTilings, TiledBuildTest,
 // size that follows from it, gives the same arrays.
 TEST(TiledBuildDeterminismTest, ThreadCountsGiveTheSameMesh) {
   for (const Dataset& dataset :
-       {test::GridDataset(200), test::PlaneDataset(70000, 3)}) {
+       {test::GridDataset(200), test::PlaneDataset(40000, 3)}) {
     BuiltMesh first;
-    for (const unsigned threads : {1u, 2u, 3u, 4u}) {
+    for (const unsigned threads : {1u, 3u, 4u}) {
       for (const size_t tile_vertices : {size_t{0}, size_t{1500}}) {
         TiledBuildOptions options;
         options.threads = threads;

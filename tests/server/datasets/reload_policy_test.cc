@@ -233,9 +233,9 @@ TEST_F(ReloadPolicyGisTest, OptionsThatRunSqlOrReachOtherFilesAreDenied) {
       {"pts.geojson?a_srs=%2Bproj%3Dlonglat%20%2Bnadgrids%3D%2Fdev%2Fptmx",
        "a_srs=: CRS '+proj=longlat +nadgrids=/dev/ptmx' names a file PROJ "
        "may not open here"},
-      {"pts.geojson?driver=OGR_VRT", "driver=OGR_VRT: a Reload may read only"},
+      {"pts.geojson?driver=OGR_VRT", "driver='OGR_VRT': a Reload may read only"},
       {"ogr:view.vrt", "not a format a Reload may read"},
-      {"ogr:points.csv?driver=GML", "driver=GML"},
+      {"ogr:points.csv?driver=GML", "driver='GML'"},
   };
   for (const auto& c : kCases) {
     EXPECT_THAT(Denial(c.requested), HasSubstr(c.message)) << c.requested;

@@ -9,9 +9,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
 
+#include "common/status_macros.h"
 #include "tests/server/http/browser.h"
 
 extern char** environ;
@@ -68,6 +71,7 @@ Status DevToolsPage::Open(const std::string& url, bool accept_dialogs,
                                    "--headless",
                                    "--no-sandbox",
                                    "--disable-gpu",
+                                   "--window-size=1280,800",
                                    "--disable-quic",
                                    "--no-first-run",
                                    "--disable-background-networking",
@@ -166,6 +170,44 @@ Status DevToolsPage::WaitForValue(const std::string& expression,
       answers_[static_cast<int>(message["id"].number())] = message;
     }
   }
+}
+
+namespace {
+
+// The bytes of the base64 text `text` (RFC 4648, padded, as DevTools
+// sends binary data); InvalidArgument at the first byte outside it.
+Status DecodeBase64(const std::string& text, std::string* bytes) {
+  constexpr std::string_view kDigits =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  bytes->clear();
+  uint32_t bits = 0;
+  int count = 0;
+  for (const char c : text) {
+    if (c == '=') break;
+    const size_t digit = kDigits.find(c);
+    if (digit == std::string_view::npos) {
+      return Status::InvalidArgument("not base64");
+    }
+    bits = bits << 6 | static_cast<uint32_t>(digit);
+    count += 6;
+    if (count >= 8) {
+      count -= 8;
+      bytes->push_back(static_cast<char>(bits >> count & 0xff));
+    }
+  }
+  return Status::OK();
+}
+
+}  // namespace
+
+Status DevToolsPage::CaptureScreenshot(std::string* png) {
+  JsonValue result;
+  RETURN_IF_ERROR(
+      Call("Page.captureScreenshot", R"({"format": "png"})", false, &result));
+  if (!Has(result, "data")) {
+    return Status::Internal("Page.captureScreenshot answered no data");
+  }
+  return DecodeBase64(result["data"].string(), png);
 }
 
 Status DevToolsPage::Call(const std::string& method, const std::string& params,

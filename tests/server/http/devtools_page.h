@@ -44,6 +44,9 @@ class DevToolsPage {
   // non-empty string, into *value; Unavailable after kTimeout.
   Status WaitForValue(const std::string& expression, std::string* value);
 
+  // The page as it is drawn now, a PNG of the viewport of the 1280 x 800
+  // window, into *png (Page.captureScreenshot).
+  Status CaptureScreenshot(std::string* png);
   // The messages of the dialogs the page opened, in order.
   const std::vector<std::string>& dialogs() const { return dialogs_; }
 

@@ -48,7 +48,7 @@ constexpr bool kRssShowsWhatIsKept = true;
 constexpr int kGridSide = 1024;
 // A natural-neighbour grid of this side takes seconds: a locate takes
 // microseconds.
-constexpr int kSlowGridSide = 512;
+constexpr int kSlowGridSide = 384;
 // A :locateBatch of this many points answers about 4 MB of JSON.
 constexpr int kLargeBatchPoints = 100000;
 
@@ -147,7 +147,7 @@ TEST(HttpLoadTest, ALocateIsAnsweredWhileGridsFillTheExpensiveLane) {
   const std::string points = dir.path() + "/valued.csv";
   WriteValuedPoints(points, 20000);
   std::unique_ptr<LocatordWithHttp> server;
-  // A deadline long enough for three natural-neighbour grids in a row.
+  // A deadline long enough for two natural-neighbour grids in a row.
   ASSERT_TRUE(LocatordWithHttp::Start(
                   points, {"--default-deadline-ms", "600000"}, &server)
                   .ok());
@@ -155,7 +155,7 @@ TEST(HttpLoadTest, ALocateIsAnsweredWhileGridsFillTheExpensiveLane) {
 
   // Every call takes a number from `finished` as it ends.
   std::atomic<int> finished{0};
-  constexpr int kGrids = 3;
+  constexpr int kGrids = 2;
   std::vector<int> grid_finished(kGrids, -1);
   std::vector<unsigned> grid_status(kGrids, 0);
   std::vector<std::thread> grids;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "common/gis/crs_transformer.h"
+#include "server/tiles/hillshade.h"
 #include "server/tiles/terrain_encoding.h"
 #include "server/tiles/tile_address.h"
 #include "tests/common/gis/gis_fixtures.h"
@@ -131,6 +133,71 @@ TEST_F(TilesE2eTest, PixelsAreGrpcLocateBatchValuesAtTheirCentres) {
   }
 }
 
+// The hillshade of the same tile: opaque exactly where the terrain has a
+// value (gRPC's LocateBatch at the pixel centres), lit as the facet there
+// is under the light asked for, its own ETag per light.
+TEST_F(TilesE2eTest, HillshadeShadesTheFacetsGrpcFinds) {
+  const TileAddress tile = CornerTile();
+  const std::vector<Point2> centres = PixelCentresInUtm33(tile);
+  std::unique_ptr<v1::Locator::Stub> stub = server_->NewStub();
+  const std::vector<LocateResult> located =
+      LocateInBatches(*stub, centres, 8192);
+  ASSERT_EQ(located.size(), centres.size());
+  const std::string path =
+      "/v1/datasets/terrain/hillshade/" + std::to_string(tile.z) + "/" +
+      std::to_string(tile.x) + "/" + std::to_string(tile.y) + ".png";
+  HillshadeOptions light;
+  light.azimuth = 90;
+  light.altitude = 20;
+  light.z_factor = 4;
+  HttpReply reply;
+  ASSERT_TRUE(
+      HttpGet(port(), path + "?azimuth=90&altitude=20&z_factor=4", &reply)
+          .ok());
+  ASSERT_EQ(reply.status, 200u) << reply.body;
+  EXPECT_EQ(reply.headers.at("content-type"), "image/png");
+  EXPECT_THAT(reply.headers.at("etag"), HasSubstr("-1-hillshade-90-20-4-1\""));
+  RgbaImage image;
+  ASSERT_TRUE(DecodeRgbaPng(reply.body, &image).ok());
+  ASSERT_EQ(image.width, 256u);
+  const std::vector<gis::testing::PointZ> hill =
+      gis::testing::UtmHill(kHillSide);
+  size_t faces = 0, shaded = 0;
+  for (size_t i = 0; i < centres.size(); ++i) {
+    const LocateResult& r = located[i];
+    ASSERT_EQ(image.Alpha(i), r.has_value ? 255 : 0)
+        << "pixel " << i % 256 << "," << i / 256;
+    if (!r.has_value || r.type != LocationType::kFace) continue;
+    ++faces;
+    // The hill's facets are ~400 m across and the pixels ~25 m, so the
+    // renderer's approximate centre is on the same facet but for a few
+    // pixels next to edges. A batch answers corners by id: the hill's
+    // point indices.
+    std::array<Point2, 3> corners;
+    std::array<double, 3> heights;
+    for (int k = 0; k < 3; ++k) {
+      const gis::testing::PointZ& p = hill.at(r.vertex_ids[k]);
+      corners[k] = Point2{p.x, p.y};
+      heights[k] = p.z;
+    }
+    const FacetGradient g = PlaneGradient(corners, heights);
+    shaded += std::abs(int{image.Rgb(i)[0]} - int{Shade(g, light)}) <= 1;
+  }
+  EXPECT_GT(faces, 1000u);
+  EXPECT_GT(shaded, faces * 99 / 100);
+
+  HttpReply default_light;
+  ASSERT_TRUE(HttpGet(port(), path, &default_light).ok());
+  ASSERT_EQ(default_light.status, 200u);
+  EXPECT_NE(default_light.headers.at("etag"), reply.headers.at("etag"));
+  EXPECT_FALSE(default_light.body == reply.body) << "the light did not move";
+  HttpReply again;
+  ASSERT_TRUE(SendHttp(port(), "GET", path, &again, {},
+                       {{"If-None-Match", default_light.headers.at("etag")}})
+                  .ok());
+  EXPECT_EQ(again.status, 304u);
+}
+
 TEST_F(TilesE2eTest, ETagsAnswer304UntilTheEncodingChanges) {
   const std::string path = TilePath(CornerTile());
   HttpReply first;
@@ -216,6 +283,16 @@ TEST_F(TilesE2eTest, RefusalsArePreciseAndTheServerKeepsServing) {
        Code::INVALID_ARGUMENT, "tile x at zoom 1"},
       {"GET", "/v1/datasets/terrain/tiles/0/0/0.png?encoding=rgb", 400,
        Code::INVALID_ARGUMENT, "unknown encoding 'rgb'"},
+      {"GET", "/v1/datasets/terrain/hillshade/0/0/0.png?azimuth=400", 400,
+       Code::INVALID_ARGUMENT, "azimuth '400' must be a number from 0 to 360"},
+      {"GET", "/v1/datasets/terrain/hillshade/0/0/0.png?z_factor=nan", 400,
+       Code::INVALID_ARGUMENT, "z_factor 'nan' must be a number above 0"},
+      {"GET", "/v1/datasets/terrain/hillshade/30/0/0.png", 400,
+       Code::INVALID_ARGUMENT, "tile zoom '30' is not a whole number"},
+      {"GET", "/v1/datasets/terrain/hillshade/0/0.png", 404, Code::NOT_FOUND,
+       "no API method"},
+      {"GET", "/v1/datasets/plain/hillshade/0/0/0.png", 400,
+       Code::FAILED_PRECONDITION, "dataset 'plain' has no CRS"},
       {"GET", "/v1/datasets/lava/tiles/0/0/0.png", 404, Code::NOT_FOUND,
        "unknown dataset 'lava'"},
       {"GET", "/v1/datasets/plain/tiles/0/0/0.png", 400,

@@ -164,6 +164,7 @@ TEST_F(LocatordTest, LargeBatchSplitAcrossThreadsMatchesReference) {
 // it), nodata exactly where CGAL finds no value. Under ThreadSanitizer in CI.
 TEST_F(LocatordTest, GridsAndProfilesServeWhileOthersLocate) {
   constexpr double kTolerance = 1e-9 * 500;
+  constexpr int kWidth = 2048;
   auto grids = [this] {
     auto stub = NewStub(*server_);
     for (const v1::Interpolation how :
@@ -173,7 +174,7 @@ TEST_F(LocatordTest, GridsAndProfilesServeWhileOthersLocate) {
       request.mutable_box()->set_min_y(-2);
       request.mutable_box()->set_max_x(155);
       request.mutable_box()->set_max_y(62);
-      request.set_width(4096);
+      request.set_width(kWidth);
       request.set_height(97);  // 4 blocks of 32 rows
       request.set_nodata(-1);
       request.set_interpolation(how);
@@ -186,8 +187,8 @@ TEST_F(LocatordTest, GridsAndProfilesServeWhileOthersLocate) {
         if (message.has_header()) header = message.header();
         rows += message.rows();
         for (int i = 0; i < message.values_size(); i += 11) {
-          const Point2 q{-3 + (i % 4096 + 0.5) * header.cell_width(),
-                         62 - (message.first_row() + i / 4096 + 0.5) *
+          const Point2 q{-3 + (i % kWidth + 0.5) * header.cell_width(),
+                         62 - (message.first_row() + i / kWidth + 0.5) *
                                   header.cell_height()};
           const LocateResult want = reference_->Locate(q);
           EXPECT_NEAR(message.values(i), want.has_value ? TestValue(q) : -1,

@@ -35,56 +35,11 @@ namespace {
 using test::kUtm33;
 using test::MercatorUtmTransformer;
 using test::PixelCentresInUtm33;
+using test::Slope;
+using test::TileAtSouthWestCorner;
+using test::UtmTerrain;
 
 using ::testing::HasSubstr;
-
-// The data: a 3 km square of the zone, near 15°E 49.6°N.
-constexpr double kWest = 500000, kSouth = 5500000, kSide = 3000;
-
-double Height(const Point2& p) {
-  return 400 +
-         120 * std::sin((p.x - kWest) / 700) * std::cos((p.y - kSouth) / 500) +
-         0.01 * (p.y - kSouth);
-}
-
-// The slope (|gradient|) of the facet `r` found: the plane through its
-// corners at their Heights.
-double Slope(const LocateResult& r) {
-  const std::array<Point2, 3>& v = r.vertices;
-  const double h0 = Height(v[0]), h1 = Height(v[1]), h2 = Height(v[2]);
-  const double ax = v[1].x - v[0].x, ay = v[1].y - v[0].y;
-  const double bx = v[2].x - v[0].x, by = v[2].y - v[0].y;
-  const double det = ax * by - ay * bx;
-  const double gx = ((h1 - h0) * by - (h2 - h0) * ay) / det;
-  const double gy = ((h2 - h0) * ax - (h1 - h0) * bx) / det;
-  return std::hypot(gx, gy);
-}
-
-std::unique_ptr<Engine> UtmTerrain(size_t n, const std::string& crs) {
-  Dataset d = GenerateUniform(n, 17);
-  for (Point2& p : d.points) {
-    p = Point2{kWest + p.x * kSide, kSouth + p.y * kSide};
-    d.values.push_back(Height(p));
-  }
-  d.crs = crs;
-  StatusOr<std::unique_ptr<Engine>> built =
-      Engine::Create(std::move(d), EngineOptions());
-  EXPECT_TRUE(built.ok()) << built.status().ToString();
-  return built.ok() ? *std::move(built) : nullptr;
-}
-
-// The tile of zoom `z` holding the data's south-west corner, so that it is
-// partly over the data.
-TileAddress TileAtSouthWestCorner(uint32_t z) {
-  const std::unique_ptr<gis::CrsTransformer> to_mercator =
-      MercatorUtmTransformer();
-  std::vector<Point2> corner = {{kWest + 10, kSouth + 10}};
-  EXPECT_TRUE(to_mercator->ToRequest(corner).ok());
-  const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, z);
-  return TileAddress{
-      z, static_cast<uint32_t>((corner[0].x + TileAddress::kHalfWorld) / side),
-      static_cast<uint32_t>((TileAddress::kHalfWorld - corner[0].y) / side)};
-}
 
 class TerrainTileTest : public ::testing::TestWithParam<TerrainEncoding> {
  protected:

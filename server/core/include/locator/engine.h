@@ -148,6 +148,15 @@ class Engine {
   Status RenderPoints(std::span<const Point2> points, size_t row_length,
                       Interpolation how, double nodata, double* out) const;
 
+  // Renders the gradient of the TIN's facet at each of `points` into `out`
+  // (points.size() gradients), walking as RenderPoints does: the exact
+  // slope of the triangle's plane, which is what shading wants. A point on
+  // an edge or a vertex takes one of the in-domain faces that meet there; a
+  // non-finite point, one outside the hull or the domain, and every point
+  // of a dataset without values get NaN. InvalidArgument if row_length is 0.
+  Status RenderGradients(std::span<const Point2> points, size_t row_length,
+                         FacetGradient* out) const;
+
   // The in-domain triangles whose bounding boxes meet `box` (this
   // dataset's CRS), with their corners' positions, values and public ids,
   // into `out`. FailedPrecondition without values; InvalidArgument for a

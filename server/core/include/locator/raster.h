@@ -33,6 +33,15 @@ struct RasterSpec {
   Point2 CellCentre(uint32_t col, uint32_t row) const;
 };
 
+// The slope of the surface's facet (the triangle's plane) at a point: the
+// value's change per unit of x and of y, in the dataset's units. NaN for
+// a point with no facet (outside the hull or the domain, not finite) and
+// for every point of a dataset without values.
+struct FacetGradient {
+  double dz_dx = std::numeric_limits<double>::quiet_NaN();
+  double dz_dy = std::numeric_limits<double>::quiet_NaN();
+};
+
 // OK if `box` can bound a raster: finite, with min < max on both axes;
 // InvalidArgument saying which is not otherwise.
 [[nodiscard]] Status CheckRasterBox(const BoundingBox& box);

@@ -21,12 +21,32 @@ std::vector<HttpRow> TileRows() {
        tiles + "0/0/0.png?encoding=" + std::string(6000, 'e')},
       {"a tile of a dataset without a CRS",
        "/v1/datasets/plain/tiles/0/0/0.png"},
+      {"a hillshade azimuth of 1e300",
+       "/v1/datasets/utm/hillshade/0/0/0.png?azimuth=1e300"},
+      {"a hillshade altitude of NaN",
+       "/v1/datasets/utm/hillshade/0/0/0.png?altitude=nan"},
+      {"a hillshade z factor of a denormal's negative",
+       "/v1/datasets/utm/hillshade/0/0/0.png?z_factor=-4.9e-324"},
+      {"a hillshade scale of inf",
+       "/v1/datasets/utm/hillshade/0/0/0.png?scale=inf"},
+      {"a 6 KiB hillshade scale",
+       "/v1/datasets/utm/hillshade/0/0/0.png?scale=" + std::string(6000, '9')},
+      {"a hillshade tile at zoom 2^64",
+       "/v1/datasets/utm/hillshade/18446744073709551616/0/0.png"},
   };
   for (const auto& [label, target] : bad_tiles) {
     rows.push_back({label, "GET", target, "", {}, "", bad});
   }
   const std::vector<HttpRow> tile_rows = {
       {"a tile", "GET", tiles + "0/0/0.png", "", {}, "", {200}, IsPng},
+      {"a hillshade tile of denormal scale and huge exaggeration",
+       "GET",
+       "/v1/datasets/utm/hillshade/0/0/0.png?scale=4.9e-324&z_factor=1e9",
+       "",
+       {},
+       "",
+       {200},
+       IsPng},
       {"a tile of a NUL dataset",
        "GET",
        "/v1/datasets/%00/tiles/0/0/0.png",
