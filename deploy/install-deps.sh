@@ -26,8 +26,9 @@ PACKAGES=(
 LOG="${LOCATOR_DEPS_LOG:-/tmp/locator-install-deps.log}"
 REPO="$(cd "$(dirname "$0")/.." && pwd)"
 # The JavaScript locator embeds or runs, each directory's package-lock.json
-# installed into its node_modules by `npm ci`: MapLibre GL JS for the web map.
-NPM_DIRS=(client/web)
+# installed into its node_modules by `npm ci`: MapLibre GL JS for the web map,
+# @here/quantized-mesh-decoder for the quantized-mesh tests' independent decoder.
+NPM_DIRS=(client/web tests/server/tiles/quantized_mesh_decoder)
 
 missing=()
 for pkg in "${PACKAGES[@]}"; do

@@ -10,6 +10,7 @@
 //                         [--dem-errors 0.01,0.001,0.0005,0.0001]
 //                         [--dem-repeats 1] [--dem-reference 1]
 //   locator-surface-bench --tiles [--points 1000000] [--tiles-per-zoom 16]
+//   locator-surface-bench --quantized-mesh [--points 1000000]
 //
 // A program that prints figures, never a test: every comparison is made
 // within one run (the machine is shared and noisy).
@@ -22,6 +23,7 @@
 #include "server/bench/suites/dem_benchmark.h"
 #include "server/bench/suites/grid_benchmark.h"
 #include "server/bench/suites/profile_benchmark.h"
+#include "server/bench/suites/quantized_mesh_benchmark.h"
 #include "server/bench/suites/tile_benchmark.h"
 
 namespace {
@@ -35,10 +37,12 @@ struct SurfaceBenchRun {
   bool interpolation = false;
   bool dem = false;
   bool tiles = false;
+  bool quantized_mesh = false;
   locator::bench::GridBenchOptions grid_options;
   locator::bench::SurfaceBenchOptions surface_options;
   locator::bench::DemBenchOptions dem_options;
   locator::bench::TileBenchOptions tile_options;
+  locator::bench::QuantizedMeshBenchOptions quantized_mesh_options;
 };
 
 // Declares the flags on `flags`, into `run`.
@@ -58,6 +62,8 @@ void AddSurfaceBenchFlags(SurfaceBenchRun* run, locator::FlagSet* flags) {
   flags->Add("tiles", flag::Switch(&run->tiles),
              "ms per 256x256 terrain tile (PROJ, walk, PNG) and hillshade "
              "tile by zoom");
+  flags->Add("quantized-mesh", flag::Switch(&run->quantized_mesh),
+             "ms per Cesium terrain tile by level");
   flags->Add("tiles-per-zoom", flag::Count(&run->tile_options.tiles, 1, 1024),
              "--tiles: tiles rendered per zoom");
   flags->Add("dem-sizes", flag::Counts(&dem.sizes, 2, 1u << 16),
@@ -91,15 +97,16 @@ int main(int argc, char** argv) {
   SurfaceBenchRun run;
   locator::FlagSet flags(
       "Usage: locator-surface-bench "
-      "--grid|--profile|--interpolation|--dem|--tiles "
+      "--grid|--profile|--interpolation|--dem|--tiles|--quantized-mesh "
       "[flags]\n\n"
       "Grid, profile and interpolation benchmarks: figures, not tests.");
   AddSurfaceBenchFlags(&run, &flags);
   locator::Status parsed = flags.Parse(argc, argv);
   if (parsed.ok() && !flags.help_requested() && !run.grid && !run.profile &&
-      !run.interpolation && !run.dem && !run.tiles) {
+      !run.interpolation && !run.dem && !run.tiles && !run.quantized_mesh) {
     parsed = locator::Status::InvalidArgument(
-        "give --grid, --profile, --interpolation, --dem or --tiles");
+        "give --grid, --profile, --interpolation, --dem, --tiles or "
+        "--quantized-mesh");
   }
   if (std::optional<int> exit_code = locator::ExitCodeForFlags(
           kProgram, parsed, flags.help_requested() ? flags.Help() : "")) {
@@ -107,6 +114,7 @@ int main(int argc, char** argv) {
   }
   run.grid_options.points = run.surface_options.points;
   run.tile_options.points = run.surface_options.points;
+  run.quantized_mesh_options.points = run.surface_options.points;
   locator::Status result;
   if (run.grid) {
     result = locator::bench::RunGridBenchmark(run.grid_options, std::cout);
@@ -124,6 +132,10 @@ int main(int argc, char** argv) {
   }
   if (result.ok() && run.tiles) {
     result = locator::bench::RunTileBenchmark(run.tile_options, std::cout);
+  }
+  if (result.ok() && run.quantized_mesh) {
+    result = locator::bench::RunQuantizedMeshBenchmark(
+        run.quantized_mesh_options, std::cout);
   }
   if (!result.ok()) {
     std::cerr << kProgram << ": " << result.ToString() << "\n";

@@ -3,7 +3,8 @@
 // is server/grpc/status_mapping.h). The answer has the HTTP status
 // HttpStatusFor() maps the status's code to (or `http_status`, where HTTP
 // has a more precise one: 413 for a body over the limit, 405 for a method a
-// path does not take) and the JSON body
+// path does not take, 406 for an Accept that takes no type the route
+// answers) and the JSON body
 //
 //   {"code": <canonical code number>, "status": "<canonical code name>",
 //    "message": "<the status's message>"}

@@ -26,34 +26,6 @@ constexpr int kBoxSamplesPerSide = 16;
 // Web Mercator's latitude limit, where the tile square ends.
 constexpr double kMaxLatitude = 85.0511287798066;
 
-// The box of `engine`'s dataset mapped to `crs` (the bounds of its outline
-// sampled kBoxSamplesPerSide times a side). InvalidArgument if PROJ cannot
-// map a sample.
-StatusOr<BoundingBox> DatasetBoxIn(const Engine& engine, std::string_view crs) {
-  const BoundingBox& b = engine.dataset_info().bounding_box;
-  std::vector<Point2> outline;
-  for (int i = 0; i <= kBoxSamplesPerSide; ++i) {
-    const double t = static_cast<double>(i) / kBoxSamplesPerSide;
-    const double x = b.min_x + t * (b.max_x - b.min_x);
-    const double y = b.min_y + t * (b.max_y - b.min_y);
-    outline.insert(outline.end(), {Point2{x, b.min_y}, Point2{x, b.max_y},
-                                   Point2{b.min_x, y}, Point2{b.max_x, y}});
-  }
-  gis::CrsTransformer* transformer = nullptr;
-  RETURN_IF_ERROR(gis::CrsTransformer::ForThread(
-      std::string(crs), engine.dataset_info().crs, &transformer));
-  RETURN_IF_ERROR(transformer->ToRequest(outline));
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  BoundingBox box{kInf, kInf, -kInf, -kInf};
-  for (const Point2& p : outline) {
-    box.min_x = std::min(box.min_x, p.x);
-    box.min_y = std::min(box.min_y, p.y);
-    box.max_x = std::max(box.max_x, p.x);
-    box.max_y = std::max(box.max_y, p.y);
-  }
-  return box;
-}
-
 // The approximate transform of a row of pixel centres, as GDAL's
 // GDALApproxTransform: the row's two ends and its middle are transformed
 // exactly; where the linear interpolation of the ends is within
@@ -112,12 +84,39 @@ class RowTransform {
 
 }  // namespace
 
-Status CheckTileSource(const Engine& engine, std::string_view name) {
+StatusOr<BoundingBox> DatasetBoxIn(const Engine& engine, std::string_view crs) {
+  const BoundingBox& b = engine.dataset_info().bounding_box;
+  std::vector<Point2> outline;
+  for (int i = 0; i <= kBoxSamplesPerSide; ++i) {
+    const double t = static_cast<double>(i) / kBoxSamplesPerSide;
+    const double x = b.min_x + t * (b.max_x - b.min_x);
+    const double y = b.min_y + t * (b.max_y - b.min_y);
+    outline.insert(outline.end(), {Point2{x, b.min_y}, Point2{x, b.max_y},
+                                   Point2{b.min_x, y}, Point2{b.max_x, y}});
+  }
+  gis::CrsTransformer* transformer = nullptr;
+  RETURN_IF_ERROR(gis::CrsTransformer::ForThread(
+      std::string(crs), engine.dataset_info().crs, &transformer));
+  RETURN_IF_ERROR(transformer->ToRequest(outline));
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  BoundingBox box{kInf, kInf, -kInf, -kInf};
+  for (const Point2& p : outline) {
+    box.min_x = std::min(box.min_x, p.x);
+    box.min_y = std::min(box.min_y, p.y);
+    box.max_x = std::max(box.max_x, p.x);
+    box.max_y = std::max(box.max_y, p.y);
+  }
+  return box;
+}
+
+Status CheckTileSource(const Engine& engine, std::string_view name,
+                       std::string_view tile_crs) {
   if (engine.dataset_info().crs.empty()) {
     return Status::FailedPrecondition(
         "dataset " + QuotedInput(name) +
-        " has no CRS, so its terrain has no place on a web map's tiles "
-        "(EPSG:3857); load it from a source that has one, or give it one");
+        " has no CRS, so its terrain has no place on a web map's tiles (" +
+        std::string(tile_crs) +
+        "); load it from a source that has one, or give it one");
   }
   if (!engine.dataset_info().has_values) {
     return Status::FailedPrecondition("dataset " + QuotedInput(name) +

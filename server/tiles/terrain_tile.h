@@ -35,8 +35,15 @@ namespace locator {
 inline constexpr std::string_view kTileCrs = "EPSG:3857";
 
 // OK if dataset `name` served by `engine` can be tiled: it has a CRS and
-// values; FAILED_PRECONDITION saying which it lacks otherwise.
-Status CheckTileSource(const Engine& engine, std::string_view name);
+// values; FAILED_PRECONDITION saying which it lacks otherwise (naming
+// `tile_crs`, the CRS of the tiles asked for).
+Status CheckTileSource(const Engine& engine, std::string_view name,
+                       std::string_view tile_crs = kTileCrs);
+
+// The box of `engine`'s dataset mapped to `crs`: the bounds of its outline
+// sampled 16 times a side, since a box of a projected CRS bends in another.
+// InvalidArgument if PROJ cannot map a sample.
+StatusOr<BoundingBox> DatasetBoxIn(const Engine& engine, std::string_view crs);
 
 // How far a pixel centre given by TilePixelsInDatasetCrs may lie from its
 // exact transform, in x and in y, as a fraction of the tile's pixel width

@@ -43,18 +43,26 @@ RasterSpec TileAddress::Raster() const {
 
 StatusOr<TileAddress> ParseTileAddress(std::string_view z, std::string_view x,
                                        std::string_view y) {
+  return ParseTilePath(z, x, y, TileAddress::kMaxZoom,
+                       /*columns_at_zoom_0=*/1);
+}
+
+StatusOr<TileAddress> ParseTilePath(std::string_view z, std::string_view x,
+                                    std::string_view y, uint32_t max_zoom,
+                                    uint32_t columns_at_zoom_0) {
   const std::optional<uint64_t> zoom = Digits(z);
-  if (!zoom.has_value() || *zoom > TileAddress::kMaxZoom) {
-    return OutOfRange("zoom", z, TileAddress::kMaxZoom);
+  if (!zoom.has_value() || *zoom > max_zoom) {
+    return OutOfRange("zoom", z, max_zoom);
   }
-  const uint64_t last = (uint64_t{1} << *zoom) - 1;
+  const uint64_t last_row = (uint64_t{1} << *zoom) - 1;
+  const uint64_t last_column = columns_at_zoom_0 * (last_row + 1) - 1;
   const std::optional<uint64_t> column = Digits(x);
-  if (!column.has_value() || *column > last) {
-    return OutOfRange("x at zoom " + std::to_string(*zoom), x, last);
+  if (!column.has_value() || *column > last_column) {
+    return OutOfRange("x at zoom " + std::to_string(*zoom), x, last_column);
   }
   const std::optional<uint64_t> row = Digits(y);
-  if (!row.has_value() || *row > last) {
-    return OutOfRange("y at zoom " + std::to_string(*zoom), y, last);
+  if (!row.has_value() || *row > last_row) {
+    return OutOfRange("y at zoom " + std::to_string(*zoom), y, last_row);
   }
   return TileAddress{.z = static_cast<uint32_t>(*zoom),
                      .x = static_cast<uint32_t>(*column),

@@ -44,6 +44,13 @@ struct TileAddress {
 StatusOr<TileAddress> ParseTileAddress(std::string_view z, std::string_view x,
                                        std::string_view y);
 
+// As ParseTileAddress, for a scheme of `max_zoom` levels with
+// `columns_at_zoom_0` tiles across and 1 down at zoom 0 (Cesium's
+// geographic scheme has 2): x in 0..columns_at_zoom_0 * 2^z - 1.
+StatusOr<TileAddress> ParseTilePath(std::string_view z, std::string_view x,
+                                    std::string_view y, uint32_t max_zoom,
+                                    uint32_t columns_at_zoom_0);
+
 // The zoom, in 0..kMaxZoom, whose pixels are `metres` wide (EPSG:3857
 // units) rounded down (`round_up` false: pixels at least that wide) or up
 // (pixels at most that wide); 0 for NaN.

@@ -5,13 +5,14 @@
 // in UTM zone 33N with a CRS, so that request CRS strings reach PROJ) ->
 // the JSON answer. The tile routes take the input as the rest of their
 // path (and query) instead: /v1/datasets/utm/tiles/{input} or
-// .../hillshade/{input}, answered with a PNG (or TileJSON) or an ApiError.
-// So do the elevation APIs' GET routes (Open Topo Data's query, EDR's
-// position and trajectory queries and collection paths); Open Topo Data's
-// POST takes it as its JSON body. Open Topo Data answers {"results",
-// "status": "OK"} or its own error {"error", "status"}, 400 INVALID_REQUEST
-// (never SERVER_ERROR); EDR a CoverageJSON, GeoJSON or JSON document, or an
-// ApiError.
+// .../hillshade/{input}, answered with a PNG (or TileJSON) or an ApiError,
+// and /v1/datasets/utm/quantized-mesh/{input}, answered with a
+// quantized-mesh tile (or layer.json) or an ApiError. So do the elevation
+// APIs' GET routes (Open Topo Data's query, EDR's position and trajectory
+// queries and collection paths); Open Topo Data's POST takes it as its JSON
+// body. Open Topo Data answers {"results", "status": "OK"} or its own error
+// {"error", "status"}, 400 INVALID_REQUEST (never SERVER_ERROR); EDR a
+// CoverageJSON, GeoJSON or JSON document, or an ApiError.
 //
 // Aborts unless every answer is one JSON object: on 200 the route's
 // response message in protobuf's JSON mapping, otherwise an ApiError
@@ -87,6 +88,8 @@ constexpr Route kRoutes[] = {
     {"GET", "/edr/collections/utm/position"},
     {"GET", "/edr/collections/utm/trajectory"},
     {"GET", "/edr/collections/"},
+    {"GET", "/v1/datasets/utm/quantized-mesh/"},
+    {"GET", "/v1/datasets/default/quantized-mesh/"},
 };
 
 [[noreturn]] void Fail(const std::string& what, const std::string& body) {
@@ -99,7 +102,8 @@ constexpr Route kRoutes[] = {
 bool IsTileRoute(const Route& route) {
   const std::string_view path = route.path;
   return path.find("/tiles") != std::string_view::npos ||
-         path.find("/hillshade/") != std::string_view::npos;
+         path.find("/hillshade/") != std::string_view::npos ||
+         path.find("/quantized-mesh/") != std::string_view::npos;
 }
 
 bool IsOpenTopoDataRoute(const Route& route) {
@@ -110,11 +114,20 @@ bool IsEdrRoute(const Route& route) {
   return std::string_view(route.path).starts_with("/edr/");
 }
 
-// Checks a 200 answer of a tile route: a PNG, or TileJSON for tiles.json.
+// Checks a 200 answer of a tile route: a PNG, a quantized-mesh tile (at
+// least its header, vertex count, triangle count and four edge counts),
+// or TileJSON (tiles.json, layer.json).
 void CheckTileAnswer(const HttpResponse& response) {
   if (response.content_type == "image/png") {
     if (!response.body.starts_with("\x89PNG\r\n\x1a\n")) {
       Fail("a tile that is not a PNG", response.body.substr(0, 64));
+    }
+    return;
+  }
+  if (response.content_type == "application/vnd.quantized-mesh") {
+    if (response.body.size() < 88 + 4 + 4 + 4 * 4) {
+      Fail("a quantized-mesh tile shorter than an empty one",
+           std::to_string(response.body.size()) + " bytes");
     }
     return;
   }
@@ -123,7 +136,7 @@ void CheckTileAnswer(const HttpResponse& response) {
       !google::protobuf::util::JsonStringToMessage(response.body, &tile_json)
            .ok() ||
       !tile_json.fields().contains("tiles")) {
-    Fail("a tile route answered neither a PNG nor TileJSON", response.body);
+    Fail("a tile route answered neither a tile nor TileJSON", response.body);
   }
 }
 

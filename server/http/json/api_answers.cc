@@ -17,8 +17,8 @@ HttpResponse NoRoute(const HttpRequest& request) {
   return ApiError(Status::NotFound(
       "no API method " + QuotedInput(request.method + " " + request.path) +
       " (GET /v1/datasets, POST /v1/datasets/{name}:locate, :locateBatch, "
-      ":profile or :grid, GET /v1/datasets/{name}/tiles.json or "
-      "/v1/datasets/{name}/tiles/{z}/{x}/{y}.png)"));
+      ":profile or :grid, GET /v1/datasets/{name}/tiles.json, "
+      "tiles/z/x/y.png or quantized-mesh/(layer.json|z/x/y.terrain))"));
 }
 
 HttpResponse MethodNotAllowed(const HttpRequest& request,
@@ -30,6 +30,24 @@ HttpResponse MethodNotAllowed(const HttpRequest& request,
       405);
   response.headers.emplace_back("Allow", std::string(allowed));
   return response;
+}
+
+bool NamesETag(std::string_view header, std::string_view etag) {
+  while (!header.empty()) {
+    const size_t comma = header.find(',');
+    std::string_view tag = header.substr(0, comma);
+    while (!tag.empty() && (tag.front() == ' ' || tag.front() == '\t')) {
+      tag.remove_prefix(1);
+    }
+    while (!tag.empty() && (tag.back() == ' ' || tag.back() == '\t')) {
+      tag.remove_suffix(1);
+    }
+    if (tag.starts_with("W/")) tag.remove_prefix(2);
+    if (tag == "*" || tag == etag) return true;
+    if (comma == std::string_view::npos) break;
+    header.remove_prefix(comma + 1);
+  }
+  return false;
 }
 
 }  // namespace locator

@@ -1,5 +1,6 @@
 // The answers every route of the HTTP/JSON API gives alike: a message as
-// JSON, no such route (404), a method the path does not take (405).
+// JSON, no such route (404), a method the path does not take (405), and
+// the If-None-Match test of the routes with entity tags.
 //
 // Thread-safety: pure functions.
 
@@ -23,6 +24,10 @@ HttpResponse NoRoute(const HttpRequest& request);
 // 405 UNIMPLEMENTED with Allow: `allowed` (e.g. "GET").
 HttpResponse MethodNotAllowed(const HttpRequest& request,
                               std::string_view allowed);
+
+// Whether the If-None-Match value `header` names `etag` (or is "*"); weak
+// tags (W/"...") compare by their tag, as RFC 9110 says for GET.
+bool NamesETag(std::string_view header, std::string_view etag);
 
 }  // namespace locator
 

@@ -124,11 +124,17 @@ void JsonApi::Handle(HttpRequest request, HttpReply reply) {
     return;
   }
   // Dataset names have neither '/' nor ':', so a '/' after the name starts
-  // the path of one of its resources (the tiles).
+  // the path of one of its resources (the tiles, the Cesium terrain).
   if (const size_t slash = path.find('/', prefix.size());
       slash != std::string_view::npos) {
     std::string name(path.substr(prefix.size(), slash - prefix.size()));
     std::string rest(path.substr(slash));
+    if (rest.starts_with(kQuantizedMeshPrefix)) {
+      rest.erase(0, kQuantizedMeshPrefix.size());
+      ServeQuantizedMesh(std::move(request), std::move(name), std::move(rest),
+                         std::move(reply));
+      return;
+    }
     ServeTiles(std::move(request), std::move(name), std::move(rest),
                std::move(reply));
     return;

@@ -17,6 +17,11 @@
 //                                          its TileJSON 3.0.0
 //   GET  /v1/datasets/{name}/hillshade/{z}/{x}/{y}.png?azimuth=&altitude=
 //        &z_factor=&scale=                 a shaded relief tile
+//   GET  /v1/datasets/{name}/quantized-mesh/{z}/{x}/{y}.terrain
+//                                          Cesium terrain (see
+//                                          quantized_mesh_api.cc)
+//   GET  /v1/datasets/{name}/quantized-mesh/layer.json
+//                                          its layer.json
 //
 // Bodies are the proto messages in protobuf's JSON mapping (JsonFormat):
 // requests are parsed with JsonStringToMessage (field names as in the proto
@@ -59,6 +64,7 @@
 
 #include <prometheus/registry.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -93,6 +99,8 @@ class JsonApi {
   static constexpr size_t kCheapBatchBodyBytes = 64 * 1024;
   // Where the API's paths start.
   static constexpr std::string_view kPathPrefix = "/v1/";
+  // Where a dataset's Cesium terrain starts, after its name.
+  static constexpr std::string_view kQuantizedMeshPrefix = "/quantized-mesh/";
 
   // Serves `app` (not owned; it must outlive the API) within `options`,
   // with the lanes' gauges in `registry` (null: a registry of its own,
@@ -151,6 +159,17 @@ class JsonApi {
   // and the hillshade tiles (tile_api.cc).
   void ServeTiles(HttpRequest request, std::string name, std::string rest,
                   HttpReply reply);
+  // GET /v1/datasets/{name}/quantized-mesh/{rest}: Cesium terrain and its
+  // layer.json (quantized_mesh_api.cc).
+  void ServeQuantizedMesh(HttpRequest request, std::string name,
+                          std::string rest, HttpReply reply);
+  // The "{z}/{x}/{y}" of a tile path split at its two slashes into
+  // `parts`; false unless there are exactly two.
+  static bool SplitTilePath(std::string_view zxy,
+                            std::array<std::string_view, 3>* parts);
+  // The Cache-Control of tiles: public unless the server wants a token
+  // for data, so that no shared cache hands them to someone without one.
+  std::string TileCacheControl() const;
   // Runs `serve` in `lane` with `reply`, unless the lane is full (503) or
   // `deadline` passed while it waited (504).
   void RunInLane(ApiLane& lane, const CallDeadline& deadline, HttpReply reply,

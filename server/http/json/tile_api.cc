@@ -14,6 +14,7 @@
 // wants a token are "private", so that no shared cache hands them to someone
 // without one.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,45 +39,6 @@ constexpr std::string_view kPngSuffix = ".png";
 // within a minute, and a map panning back and forth does not ask twice.
 constexpr std::string_view kMaxAge = "max-age=60";
 
-// Whether the If-None-Match value `header` names `etag` (or is "*"); weak
-// tags (W/"...") compare by their tag, as RFC 9110 says for GET.
-bool NamesETag(std::string_view header, std::string_view etag) {
-  while (!header.empty()) {
-    const size_t comma = header.find(',');
-    std::string_view tag = header.substr(0, comma);
-    while (!tag.empty() && (tag.front() == ' ' || tag.front() == '\t')) {
-      tag.remove_prefix(1);
-    }
-    while (!tag.empty() && (tag.back() == ' ' || tag.back() == '\t')) {
-      tag.remove_suffix(1);
-    }
-    if (tag.starts_with("W/")) tag.remove_prefix(2);
-    if (tag == "*" || tag == etag) return true;
-    if (comma == std::string_view::npos) break;
-    header.remove_prefix(comma + 1);
-  }
-  return false;
-}
-
-// The tile a path "{prefix}{z}/{x}/{y}.png" names: NotFound (no route)
-// unless there are three segments, InvalidArgument as ParseTileAddress.
-StatusOr<TileAddress> TileOfPath(std::string_view path,
-                                 std::string_view prefix) {
-  const std::string_view zxy = path.substr(
-      prefix.size(), path.size() - prefix.size() - kPngSuffix.size());
-  const size_t first = zxy.find('/');
-  const size_t second = first == std::string_view::npos
-                            ? std::string_view::npos
-                            : zxy.find('/', first + 1);
-  if (second == std::string_view::npos ||
-      zxy.find('/', second + 1) != std::string_view::npos) {
-    return Status::NotFound("no such tile path");
-  }
-  return ParseTileAddress(zxy.substr(0, first),
-                          zxy.substr(first + 1, second - first - 1),
-                          zxy.substr(second + 1));
-}
-
 // The URL template of the tiles of dataset `name` that a TileJSON fetched
 // by `request` points to: absolute when the request names a plausible Host
 // (behind a proxy that says X-Forwarded-Proto: https, an https one), else
@@ -98,6 +60,31 @@ std::string TilesUrl(const HttpRequest& request, std::string_view name,
 }
 
 }  // namespace
+
+bool JsonApi::SplitTilePath(std::string_view zxy,
+                            std::array<std::string_view, 3>* parts) {
+  const size_t first = zxy.find('/');
+  const size_t second = first == std::string_view::npos
+                            ? std::string_view::npos
+                            : zxy.find('/', first + 1);
+  if (second == std::string_view::npos ||
+      zxy.find('/', second + 1) != std::string_view::npos) {
+    return false;
+  }
+  *parts = {zxy.substr(0, first), zxy.substr(first + 1, second - first - 1),
+            zxy.substr(second + 1)};
+  return true;
+}
+
+std::string JsonApi::TileCacheControl() const {
+  return std::string(app_->access_policy()
+                             .CheckAuthorization(std::nullopt,
+                                                 AccessPolicy::Scope::kData)
+                             .ok()
+                         ? "public, "
+                         : "private, ") +
+         std::string(kMaxAge);
+}
 
 void JsonApi::ServeTiles(HttpRequest request, std::string name,
                          std::string rest, HttpReply reply) {
@@ -148,12 +135,18 @@ void JsonApi::ServeTiles(HttpRequest request, std::string name,
   }
   TileAddress tile;
   if (!tile_json) {
-    StatusOr<TileAddress> parsed =
-        TileOfPath(rest, hillshade ? kHillshadePrefix : kTilesPrefix);
-    if (parsed.status().code() == Status::Code::kNotFound) {
+    // "{prefix}{z}/{x}/{y}.png": three segments between the prefix and the
+    // suffix.
+    const std::string_view prefix = hillshade ? kHillshadePrefix : kTilesPrefix;
+    std::array<std::string_view, 3> zxy;
+    if (!SplitTilePath(
+            std::string_view(rest).substr(
+                prefix.size(), rest.size() - prefix.size() - kPngSuffix.size()),
+            &zxy)) {
       reply(NoRoute(request));
       return;
     }
+    StatusOr<TileAddress> parsed = ParseTileAddress(zxy[0], zxy[1], zxy[2]);
     if (!parsed.ok()) {
       reply(ApiError(parsed.status()));
       return;
@@ -162,14 +155,7 @@ void JsonApi::ServeTiles(HttpRequest request, std::string name,
   }
   std::vector<std::pair<std::string, std::string>> headers = {
       {"ETag", TileETag(call->generation, variant)},
-      {"Cache-Control",
-       std::string(
-           app_->access_policy()
-                   .CheckAuthorization(std::nullopt, AccessPolicy::Scope::kData)
-                   .ok()
-               ? "public, "
-               : "private, ") +
-           std::string(kMaxAge)}};
+      {"Cache-Control", TileCacheControl()}};
   if (const std::optional<std::string_view> match =
           request.Header("if-none-match");
       match.has_value() && NamesETag(*match, headers[0].second)) {

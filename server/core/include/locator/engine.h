@@ -31,6 +31,7 @@
 #include "locator/geometry.h"
 #include "locator/interpolation.h"
 #include "locator/locate_result.h"
+#include "locator/mesh_patch.h"
 #include "locator/profile.h"
 #include "locator/raster.h"
 #include "locator/status.h"
@@ -155,6 +156,14 @@ class Engine {
   // of a dataset without values get NaN. InvalidArgument if row_length is 0.
   Status RenderGradients(std::span<const Point2> points, size_t row_length,
                          FacetGradient* out) const;
+
+  // The in-domain triangles whose bounding boxes meet `box` (this
+  // dataset's CRS), with their corners' positions, values and public ids,
+  // into `out`. FailedPrecondition without values; InvalidArgument for a
+  // box that is not finite; ResourceExhausted naming the limit when they
+  // have more than `max_vertices` corners.
+  Status MeshInBox(const BoundingBox& box, size_t max_vertices,
+                   MeshPatch* out) const;
 
   // Re-tunes the strategy now (no-op for fixed strategies).
   void Retune();

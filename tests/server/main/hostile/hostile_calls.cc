@@ -101,9 +101,9 @@ Outcome CallHttp(int port, std::string_view method, std::string_view target,
     return outcome;
   }
   // Where HTTP has a more precise status than the code's (ApiError).
-  const bool http_refusal = reply.status == 405 || reply.status == 413 ||
-                            reply.status == 414 || reply.status == 415 ||
-                            reply.status == 431;
+  const bool http_refusal = reply.status == 405 || reply.status == 406 ||
+                            reply.status == 413 || reply.status == 414 ||
+                            reply.status == 415 || reply.status == 431;
   if (reply.status !=
           HttpStatusForCanonicalCode(static_cast<int>(outcome.code)) &&
       !http_refusal) {

@@ -57,6 +57,14 @@ std::string IsPng(const HttpReply& reply) {
              : "not a PNG: " + Header(reply, "content-type");
 }
 
+std::string IsQuantizedMesh(const HttpReply& reply) {
+  constexpr size_t kEmptyTileBytes = 88 + 4 + 4 + 4 * 4;
+  return Header(reply, "content-type") == "application/vnd.quantized-mesh" &&
+                 reply.body.size() >= kEmptyTileBytes
+             ? ""
+             : "not a quantized-mesh tile: " + Header(reply, "content-type");
+}
+
 std::function<std::string(const HttpReply&)> AllowsOrigin(
     const std::string& origin) {
   return [origin](const HttpReply& reply) {

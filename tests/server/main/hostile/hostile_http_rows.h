@@ -42,11 +42,14 @@ std::string NoSecrets(const HttpReply& reply);
 std::string SmallParsedMetrics(const HttpReply& reply);
 std::string IsJson(const HttpReply& reply);
 std::string IsPng(const HttpReply& reply);
+// A quantized-mesh tile: its type, and at least an empty tile's bytes.
+std::string IsQuantizedMesh(const HttpReply& reply);
 std::function<std::string(const HttpReply&)> AllowsOrigin(
     const std::string& origin);
 std::string NoCors(const HttpReply& reply);
 
-// The terrain tile routes' rows: hostile z/x/y, encodings, Host and
+// The terrain tile routes' rows (the PNG tiles and the Cesium terrain):
+// hostile z/x/y, encodings, Accept, Accept-Encoding, Host and
 // If-None-Match, on the hostile server's dataset "utm" (and "plain", which
 // has no CRS).
 std::vector<HttpRow> TileRows();

@@ -88,6 +88,74 @@ std::vector<HttpRow> TileRows() {
        IsJson},
   };
   rows.insert(rows.end(), tile_rows.begin(), tile_rows.end());
+
+  // Cesium terrain: the same hostile z/x/y, levels past the data's (empty
+  // tiles, not errors), and hostile Accept and Accept-Encoding.
+  const std::string mesh = "/v1/datasets/utm/quantized-mesh/";
+  for (const auto& [label, target] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"a terrain tile at level 2^64",
+            mesh + "18446744073709551616/0/0.terrain"},
+           {"a terrain tile x of 5000 digits",
+            mesh + "3/" + std::string(5000, '7') + "/0.terrain"},
+           {"a terrain tile y of -1", mesh + "3/0/-1.terrain"},
+           {"a terrain tile x past the level's 2^(z+1)",
+            mesh + "3/16/0.terrain"},
+           {"a terrain tile level of NaN", mesh + "nan/0/0.terrain"},
+           {"a terrain tile of a dataset without a CRS",
+            "/v1/datasets/plain/quantized-mesh/0/0/0.terrain"},
+       }) {
+    rows.push_back({label, "GET", target, "", {}, "", bad});
+  }
+  const std::vector<HttpRow> mesh_rows = {
+      {"layer.json", "GET", mesh + "layer.json", "", {}, "", {200}, IsJson},
+      {"a terrain tile at level 0",
+       "GET",
+       mesh + "0/1/0.terrain",
+       "",
+       {},
+       "",
+       {200},
+       IsQuantizedMesh},
+      {"the deepest terrain tile, far from the data",
+       "GET",
+       mesh + "24/33554431/16777215.terrain",
+       "",
+       {},
+       "",
+       {200},
+       IsQuantizedMesh},
+      {"the deepest terrain tile at the data",
+       "GET",
+       mesh + "24/18175317/13016227.terrain",
+       "",
+       {},
+       "",
+       {200},
+       IsQuantizedMesh},
+      {"a 6 KiB Accept of commas",
+       "GET",
+       mesh + "0/1/0.terrain",
+       "",
+       {{"Accept", std::string(6000, ',')}},
+       "",
+       {406}},
+      {"a 6 KiB Accept-Encoding with q=NaN",
+       "GET",
+       mesh + "0/1/0.terrain",
+       "",
+       {{"Accept-Encoding", "gzip;q=nan," + std::string(6000, ';')}},
+       "",
+       {200}},
+      {"POST a terrain tile",
+       "POST",
+       mesh + "0/0/0.terrain",
+       "{}",
+       json,
+       "",
+       {405}},
+  };
+  rows.insert(rows.end(), mesh_rows.begin(), mesh_rows.end());
   return rows;
 }
 
