@@ -12,10 +12,10 @@
 #include <variant>
 
 #include "server/http/edr/edr_parameters.h"
+#include "server/http/edr/wkt_coordinates.h"
+#include "server/http/elevation/request_fields.h"
 #include "server/http/opentopodata/encoded_polyline.h"
 #include "server/http/opentopodata/open_topo_data_query.h"
-#include "server/http/elevation/request_fields.h"
-#include "server/http/edr/wkt_coordinates.h"
 
 namespace locator {
 namespace {
