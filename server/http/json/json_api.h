@@ -69,6 +69,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -167,6 +168,12 @@ class JsonApi {
   // `parts`; false unless there are exactly two.
   static bool SplitTilePath(std::string_view zxy,
                             std::array<std::string_view, 3>* parts);
+  // The admission of a GET of dataset `name`'s tiles: nullopt, once
+  // `reply` has the refusal, for another method (405) or a call the
+  // application does not admit.
+  std::optional<LocatorApp::Admission> AdmitTileGet(const HttpRequest& request,
+                                                    const std::string& name,
+                                                    HttpReply& reply) const;
   // The Cache-Control of tiles: public unless the server wants a token
   // for data, so that no shared cache hands them to someone without one.
   std::string TileCacheControl() const;

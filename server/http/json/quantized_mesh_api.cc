@@ -104,17 +104,11 @@ void JsonApi::ServeQuantizedMesh(HttpRequest request, std::string name,
     reply(NoRoute(request));
     return;
   }
-  if (request.method != "GET") {
-    reply(MethodNotAllowed(request, "GET"));
-    return;
-  }
+  // The deadline runs from the call's arrival: time queued counts.
   const CallDeadline deadline = app_->DefaultDeadline();
-  StatusOr<LocatorApp::Admission> call = app_->Admit(
-      request.Header("authorization"), AccessPolicy::Scope::kData, name);
-  if (!call.ok()) {
-    reply(ApiError(call.status()));
-    return;
-  }
+  std::optional<LocatorApp::Admission> call =
+      AdmitTileGet(request, name, reply);
+  if (!call.has_value()) return;
   GeographicTile tile;
   bool gzip = false;
   if (!layer_json) {

@@ -86,6 +86,22 @@ std::string JsonApi::TileCacheControl() const {
          std::string(kMaxAge);
 }
 
+std::optional<LocatorApp::Admission> JsonApi::AdmitTileGet(
+    const HttpRequest& request, const std::string& name,
+    HttpReply& reply) const {
+  if (request.method != "GET") {
+    reply(MethodNotAllowed(request, "GET"));
+    return std::nullopt;
+  }
+  StatusOr<LocatorApp::Admission> call = app_->Admit(
+      request.Header("authorization"), AccessPolicy::Scope::kData, name);
+  if (!call.ok()) {
+    reply(ApiError(call.status()));
+    return std::nullopt;
+  }
+  return *std::move(call);
+}
+
 void JsonApi::ServeTiles(HttpRequest request, std::string name,
                          std::string rest, HttpReply reply) {
   const bool tile_json = rest == kTileJsonPath;
@@ -96,17 +112,11 @@ void JsonApi::ServeTiles(HttpRequest request, std::string name,
     reply(NoRoute(request));
     return;
   }
-  if (request.method != "GET") {
-    reply(MethodNotAllowed(request, "GET"));
-    return;
-  }
+  // The deadline runs from the call's arrival: time queued counts.
   const CallDeadline deadline = app_->DefaultDeadline();
-  StatusOr<LocatorApp::Admission> call = app_->Admit(
-      request.Header("authorization"), AccessPolicy::Scope::kData, name);
-  if (!call.ok()) {
-    reply(ApiError(call.status()));
-    return;
-  }
+  std::optional<LocatorApp::Admission> call =
+      AdmitTileGet(request, name, reply);
+  if (!call.has_value()) return;
   // What the tiles show: a terrain encoding, or the light of the relief.
   TerrainEncoding encoding = TerrainEncoding::kTerrarium;
   HillshadeOptions light;

@@ -22,12 +22,12 @@
 #include <vector>
 
 #include "tests/core/scratch_dir.h"
-#include "tests/server/main/e2e_support.h"
 #include "tests/server/http/http_test_client.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/prometheus_text.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/server/main/e2e_support.h"
 
 namespace locator::test {
 namespace {

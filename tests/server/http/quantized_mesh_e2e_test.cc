@@ -18,6 +18,7 @@
 
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
+#include "tests/server/http/hill_server_test.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/status_e2e_support.h"
 #include "tests/server/main/e2e_support.h"
@@ -29,7 +30,6 @@ namespace {
 using ::testing::HasSubstr;
 using Code = grpc::StatusCode;
 
-constexpr int kMeshHillSide = 30;  // 900 points, 400 m apart: ~12 km
 // The level-11 tile holding the hill's centre, 15°E 49.6525°N: x =
 // (15 + 180) / (180 / 2^11), y = (49.6525 + 90) / (180 / 2^11), rounded
 // down.
@@ -52,28 +52,7 @@ std::string Gunzip(const std::string& gzipped) {
   return out;
 }
 
-class QuantizedMeshE2eTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new ScratchDir();
-    const std::string gpkg =
-        gis::testing::UtmHillGeoPackage(kMeshHillSide, dir_->path());
-    const Status started = LocatordWithHttp::Start(
-        "terrain=" + gpkg, {"--dataset", "plain=uniform:3000:5"}, &server_);
-    ASSERT_TRUE(started.ok()) << started.ToString();
-    ASSERT_TRUE(server_->WaitUntilServes("plain").ok());
-  }
-  static void TearDownTestSuite() {
-    server_.reset();
-    delete dir_;
-  }
-  int port() const { return server_->http_port(); }
-
-  static ScratchDir* dir_;
-  static std::unique_ptr<LocatordWithHttp> server_;
-};
-ScratchDir* QuantizedMeshE2eTest::dir_ = nullptr;
-std::unique_ptr<LocatordWithHttp> QuantizedMeshE2eTest::server_;
+class QuantizedMeshE2eTest : public HillServerTest {};
 
 TEST_F(QuantizedMeshE2eTest, LayerJsonDescribesTheTiles) {
   HttpReply reply;

@@ -24,10 +24,10 @@
 #include <vector>
 
 #include "tests/core/scratch_dir.h"
-#include "tests/server/main/e2e_support.h"
 #include "tests/server/http/browser.h"
 #include "tests/server/http/json_value.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/server/main/e2e_support.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {

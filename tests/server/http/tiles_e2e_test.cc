@@ -27,6 +27,7 @@
 #include "server/tiles/tile_address.h"
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/core/scratch_dir.h"
+#include "tests/server/http/hill_server_test.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/status_e2e_support.h"
 #include "tests/server/main/e2e_support.h"
@@ -39,8 +40,6 @@ namespace {
 using ::testing::HasSubstr;
 using Code = grpc::StatusCode;
 
-constexpr int kHillSide = 30;  // 900 points, 400 m apart: ~12 km
-
 // Its tiles at zoom 12 are ~6 km of ground at the hill's latitude.
 constexpr uint32_t kZoom = 12;
 
@@ -51,23 +50,8 @@ std::string TilePath(const TileAddress& t, const std::string& encoding = "",
          (encoding.empty() ? "" : "?encoding=" + encoding);
 }
 
-class TilesE2eTest : public ::testing::Test {
+class TilesE2eTest : public HillServerTest {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new ScratchDir();
-    const std::string gpkg =
-        gis::testing::UtmHillGeoPackage(kHillSide, dir_->path());
-    const Status started = LocatordWithHttp::Start(
-        "terrain=" + gpkg, {"--dataset", "plain=uniform:3000:5"}, &server_);
-    ASSERT_TRUE(started.ok()) << started.ToString();
-    ASSERT_TRUE(server_->WaitUntilServes("plain").ok());
-  }
-  static void TearDownTestSuite() {
-    server_.reset();
-    delete dir_;
-  }
-  int port() const { return server_->http_port(); }
-
   // The zoom-kZoom tile holding the hill's south-west corner (the hill's
   // first point), so that it is partly over the data.
   static TileAddress CornerTile() {
@@ -85,12 +69,7 @@ class TilesE2eTest : public ::testing::Test {
         static_cast<uint32_t>((corner[0].x + TileAddress::kHalfWorld) / side),
         static_cast<uint32_t>((TileAddress::kHalfWorld - corner[0].y) / side)};
   }
-
-  static ScratchDir* dir_;
-  static std::unique_ptr<LocatordWithHttp> server_;
 };
-ScratchDir* TilesE2eTest::dir_ = nullptr;
-std::unique_ptr<LocatordWithHttp> TilesE2eTest::server_;
 
 TEST_F(TilesE2eTest, PixelsAreGrpcLocateBatchValuesAtTheirCentres) {
   const TileAddress tile = CornerTile();

@@ -22,10 +22,10 @@
 #include <string>
 
 #include "tests/core/scratch_dir.h"
-#include "tests/server/main/e2e_support.h"
 #include "tests/server/http/browser.h"
 #include "tests/server/http/devtools_page.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/server/main/e2e_support.h"
 
 namespace locator::test {
 namespace {
