@@ -30,8 +30,8 @@ endfunction()
 run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 # Exactly the chosen public headers, and nothing of the machinery.
 set(public_headers dataset.h dataset_sources.h engine.h engine_info.h
-  geometry.h interpolation.h locate_result.h profile.h raster.h status.h
-  status_or.h tuning_options.h)
+  geometry.h interpolation.h locate_result.h mesh_patch.h profile.h raster.h
+  status.h status_or.h tuning_options.h)
 file(GLOB_RECURSE installed RELATIVE ${prefix}/include ${prefix}/include/*)
 list(SORT installed)
 list(TRANSFORM public_headers PREPEND locator/)
