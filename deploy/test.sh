@@ -135,7 +135,7 @@ sanitized_ctest() {
 # serving threads under real gRPC traffic (locatord_e2e_test's suite).
 tsan_test() {
   sanitized_ctest build-tsan -L concurrency &&
-    sanitized_ctest build-tsan -R '^LocatordTest\.'
+    sanitized_ctest build-tsan -R '^locatord_e2e_test$'
 }
 
 # asan_soak: deploy/soak.sh on build-check's programs, sanitized. Quarantine

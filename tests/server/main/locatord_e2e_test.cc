@@ -165,7 +165,7 @@ TEST_F(LocatordTest, LargeBatchSplitAcrossThreadsMatchesReference) {
 TEST_F(LocatordTest, GridsAndProfilesServeWhileOthersLocate) {
   constexpr double kTolerance = 1e-9 * 500;
   constexpr int kWidth = 2048;
-  auto grids = [this] {
+  auto grids = [] {
     auto stub = NewStub(*server_);
     for (const v1::Interpolation how :
          {v1::INTERPOLATION_NATURAL_NEIGHBOR, v1::INTERPOLATION_LINEAR}) {
@@ -200,7 +200,7 @@ TEST_F(LocatordTest, GridsAndProfilesServeWhileOthersLocate) {
       EXPECT_EQ(rows, 97);
     }
   };
-  auto profiles = [this] {
+  auto profiles = [] {
     auto stub = NewStub(*server_);
     for (int i = 0; i < 20; ++i) {
       v1::ProfileRequest request;

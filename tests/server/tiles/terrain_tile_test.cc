@@ -84,7 +84,7 @@ TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
     std::vector<LocateResult> located, at_rendered;
     ASSERT_TRUE(engine_->LocateBatch(centres, &located).ok());
     ASSERT_TRUE(engine_->LocateBatch(rendered, &at_rendered).ok());
-    size_t opaque = 0, on_edges = 0, shifted_on_gentle_facets = 0;
+    size_t opaque = 0, shifted_on_gentle_facets = 0;
     for (size_t i = 0; i < centres.size(); ++i) {
       const LocateResult& r = located[i];
       // Exact: no exact centre of these tiles lies within the bound of the
@@ -95,7 +95,6 @@ TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
       ++opaque;
       const bool on_edge =
           r.type == LocationType::kEdge || r.type == LocationType::kVertex;
-      on_edges += on_edge;
       // The renderer draws the TIN at its centre: half a quantum of
       // rounding (a quantum more on an edge).
       ASSERT_TRUE(at_rendered[i].has_value);

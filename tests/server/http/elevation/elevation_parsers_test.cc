@@ -299,7 +299,7 @@ TEST(EdrParametersTest, FormatsAndCrsOfACollection) {
     EXPECT_EQ(crs->request_crs, "");
   }
   EXPECT_EQ(ParseEdrCrs(std::nullopt, offered)->uri, kCrs84Uri);
-  for (const std::string bad : std::vector<std::string>{
+  for (const std::string& bad : std::vector<std::string>{
            "EPSG:4326", "EPSG:", "+proj=longlat", std::string(5000, 'x'),
            "/etc/passwd", "EPSG:32633 "}) {
     const StatusOr<EdrCrs> crs = ParseEdrCrs(bad, offered);
