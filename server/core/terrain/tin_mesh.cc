@@ -189,7 +189,7 @@ void TinMesh::Legalize(uint32_t start) {
 void TinMesh::Renumber(std::span<const uint32_t> vertex_order,
                        std::span<const uint32_t> triangle_order) {
   std::vector<uint32_t> vertex_index(points_.size());
-  PodArray<Point2> points;
+  LargeVector<Point2> points;
   points.reserve(points_.size());
   for (uint32_t k = 0; k < vertex_order.size(); ++k) {
     vertex_index[vertex_order[k]] = k;
@@ -200,7 +200,7 @@ void TinMesh::Renumber(std::span<const uint32_t> vertex_order,
   for (uint32_t k = 0; k < triangle_order.size(); ++k) {
     triangle_index[triangle_order[k]] = k;
   }
-  PodArray<Record> records;
+  LargeVector<Record> records;
   records.reserve(records_.size());
   for (const uint32_t old : triangle_order) {
     Record r = records_[old];

@@ -33,7 +33,7 @@
 
 #include "locator/geometry.h"
 #include "server/core/cgal/orientation.h"
-#include "server/core/terrain/pod_array.h"
+#include "server/core/mesh/large_vector.h"
 
 namespace locator {
 
@@ -135,8 +135,8 @@ class TinMesh {
   };
   static_assert(sizeof(Record) == 32);
 
-  PodArray<Point2> points_;
-  PodArray<Record> records_;
+  LargeVector<Point2> points_;
+  LargeVector<Record> records_;
   std::vector<uint32_t> touched_;
   uint32_t stamp_ = 0;
   std::vector<uint32_t> pending_;  // Legalize's stack of half-edges

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "server/core/terrain/pod_array.h"
+#include "server/core/mesh/large_vector.h"
 
 namespace locator {
 
@@ -116,9 +116,9 @@ class TriangleQueue {
     }
   }
 
-  PodArray<uint32_t> heap_;
-  PodArray<double> errors_;
-  PodArray<uint32_t> position_;
+  LargeVector<uint32_t> heap_;
+  LargeVector<double> errors_;
+  LargeVector<uint32_t> position_;
 };
 
 }  // namespace locator

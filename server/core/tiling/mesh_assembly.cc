@@ -8,9 +8,9 @@
 
 #include "common/status_macros.h"
 #include "server/core/geometry/xxh3_digest.h"
+#include "server/core/mesh/radix_sort.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/parallel.h"
-#include "server/core/tiling/cells/radix_sort.h"
 #include "server/core/tiling/mesh_vectors.h"
 
 namespace locator {

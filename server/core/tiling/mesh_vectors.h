@@ -10,8 +10,8 @@
 #include <cstdint>
 
 #include "locator/geometry.h"
+#include "server/core/mesh/large_vector.h"
 #include "server/core/mesh/serving_mesh.h"
-#include "server/core/tiling/cells/large_vector.h"
 
 namespace locator {
 

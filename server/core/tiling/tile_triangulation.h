@@ -29,11 +29,11 @@
 #include <vector>
 
 #include "locator/status.h"
+#include "server/core/mesh/large_vector.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tiling/cells/cell_grid.h"
 #include "server/core/tiling/cells/cell_source.h"
 #include "server/core/tiling/cells/halo_cells.h"
-#include "server/core/tiling/cells/large_vector.h"
 #include "server/core/tiling/hull_edges.h"
 
 namespace locator {

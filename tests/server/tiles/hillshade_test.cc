@@ -151,7 +151,8 @@ TEST(HillshadeGdaldemTest, CellsOnOneFacetShadeAsGdaldemShadesThem) {
                                    .box = spec.box,
                                    .cell_width = spec.cell_width(),
                                    .cell_height = spec.cell_height(),
-                                   .nodata = spec.nodata},
+                                   .nodata = spec.nodata,
+                                   .crs_wkt = ""},
                   gis::RasterFormat{.driver = "GTiff"}, &writer)
                   .ok());
   ASSERT_TRUE(writer->WriteRows(0, spec.height, cells).ok());

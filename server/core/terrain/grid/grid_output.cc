@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/status_macros.h"
 #include "server/core/cgal/orientation.h"
+#include "server/core/mesh/large_vector.h"
+#include "server/core/mesh/radix_sort.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/terrain/grid/grid_error.h"
 
@@ -60,39 +61,40 @@ void StartOutput(const ElevationGrid& grid, Dataset* out) {
 
 }  // namespace
 
-void SortRowMajor(const ElevationGrid& grid, TinMesh* mesh) {
-  // Vertices by sample index.
-  std::vector<std::pair<uint64_t, uint32_t>> samples(mesh->num_vertices());
-  for (uint32_t v = 0; v < samples.size(); ++v) {
-    const Point2& p = mesh->point(v);
-    samples[v] = {
-        static_cast<uint64_t>(p.y) * grid.width + static_cast<uint64_t>(p.x),
-        v};
+void SortRowMajor(TinMesh* mesh) {
+  // Vertices by column, then (stably) by row: by sample index.
+  const auto n = static_cast<uint32_t>(mesh->num_vertices());
+  LargeVector<uint64_t> items(n);
+  for (uint32_t v = 0; v < n; ++v) {
+    items[v] = (static_cast<uint64_t>(mesh->point(v).x) << 32) | v;
   }
-  std::sort(samples.begin(), samples.end());
-  std::vector<uint32_t> vertices(samples.size());
-  std::vector<uint32_t> rank(samples.size());
-  for (uint32_t k = 0; k < samples.size(); ++k) {
-    vertices[k] = samples[k].second;
-    rank[samples[k].second] = k;
+  SortByHighHalf(&items);
+  for (uint64_t& item : items) {
+    const auto v = static_cast<uint32_t>(item);
+    item = (static_cast<uint64_t>(mesh->point(v).y) << 32) | v;
   }
-  decltype(samples)().swap(samples);
-  // Triangles by their first corner in that order, then by index: sorting
-  // (first << 32 | index) does both.
-  std::vector<uint64_t> keyed(mesh->num_triangles());
-  for (uint32_t t = 0; t < keyed.size(); ++t) {
+  SortByHighHalf(&items);
+  std::vector<uint32_t> vertices(n);
+  std::vector<uint32_t> rank(n);
+  for (uint32_t k = 0; k < n; ++k) {
+    vertices[k] = static_cast<uint32_t>(items[k]);
+    rank[vertices[k]] = k;
+  }
+  // Triangles by their first corner in that order, then by index.
+  items.resize(mesh->num_triangles());
+  for (uint32_t t = 0; t < items.size(); ++t) {
     const uint32_t first =
         std::min({rank[mesh->Corner(t, 0)], rank[mesh->Corner(t, 1)],
                   rank[mesh->Corner(t, 2)]});
-    keyed[t] = (uint64_t{first} << 32) | t;
+    items[t] = (uint64_t{first} << 32) | t;
   }
   std::vector<uint32_t>().swap(rank);
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<uint32_t> triangles(keyed.size());
-  for (size_t k = 0; k < keyed.size(); ++k) {
-    triangles[k] = static_cast<uint32_t>(keyed[k]);
+  SortByHighHalf(&items);
+  std::vector<uint32_t> triangles(items.size());
+  for (size_t k = 0; k < items.size(); ++k) {
+    triangles[k] = static_cast<uint32_t>(items[k]);
   }
-  std::vector<uint64_t>().swap(keyed);
+  LargeVector<uint64_t>().swap(items);
   mesh->Renumber(vertices, triangles);
 }
 

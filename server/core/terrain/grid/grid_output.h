@@ -16,11 +16,11 @@
 
 namespace locator {
 
-// Renumbers `mesh`, whose vertices are samples of `grid` in grid
+// Renumbers `mesh`, whose vertices are grid samples in grid
 // coordinates, in row-major order of its vertices, and its triangles by
 // their first corner in that order: a scan of the triangles then reads the
 // grid nearly in order.
-void SortRowMajor(const ElevationGrid& grid, TinMesh* mesh);
+void SortRowMajor(TinMesh* mesh);
 
 // Writes `mesh`, whose vertices are samples of `grid` in grid coordinates
 // in row-major order (SortRowMajor), into *out (crs and source from the

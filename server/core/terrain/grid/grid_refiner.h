@@ -30,9 +30,9 @@
 
 #include "common/elevation_grid.h"
 #include "locator/status.h"
+#include "server/core/mesh/large_vector.h"
 #include "server/core/terrain/grid/grid_domain.h"
 #include "server/core/terrain/grid/grid_error.h"
-#include "server/core/terrain/pod_array.h"
 #include "server/core/terrain/tin_mesh.h"
 #include "server/core/terrain/tin_progress.h"
 #include "server/core/terrain/triangle_queue.h"
@@ -92,8 +92,8 @@ class GridRefiner {
   const double target_;
   // The worst sample of each triangle (WorstSample::kNone if none) and its
   // error; only triangles whose error exceeds the target are queued.
-  PodArray<uint64_t> candidate_;
-  PodArray<double> error_;
+  LargeVector<uint64_t> candidate_;
+  LargeVector<double> error_;
   TriangleQueue queue_;
 };
 

@@ -125,14 +125,14 @@ Status TriangulateGrid(const ElevationGrid& grid, const TinOptions& options,
             ? BuildTiled(grid, mask, options, plan, threads, &progress, &mesh)
             : BuildOneRegion(grid, mask, options, &progress, &mesh);
     // In row-major order the certificate's scan reads the grid in order.
-    if (s.ok()) SortRowMajor(grid, &mesh);
+    if (s.ok()) SortRowMajor(&mesh);
     const size_t built = mesh.num_vertices();
     if (s.ok()) {
       s = CertifyGridTin(grid, options, threads, &progress, &mesh,
                          &stats->max_error);
     }
     // Vertices the certificate inserted were appended.
-    if (s.ok() && mesh.num_vertices() != built) SortRowMajor(grid, &mesh);
+    if (s.ok() && mesh.num_vertices() != built) SortRowMajor(&mesh);
     if (s.ok()) s = WriteGridTin(grid, mesh, out);
   }
   if (!s.ok()) return s;

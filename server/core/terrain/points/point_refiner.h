@@ -29,7 +29,7 @@
 
 #include "locator/geometry.h"
 #include "locator/status.h"
-#include "server/core/terrain/pod_array.h"
+#include "server/core/mesh/large_vector.h"
 #include "server/core/terrain/tin_mesh.h"
 #include "server/core/terrain/tin_progress.h"
 #include "server/core/terrain/triangle_queue.h"
@@ -91,11 +91,11 @@ class PointRefiner {
   const uint32_t first_inserted_;
   PointMeasure measure_ = PointMeasure::kFace;
   // Buckets: head_[t] is t's first point, next_[i] the point after i.
-  PodArray<uint32_t> head_;
+  LargeVector<uint32_t> head_;
   std::vector<uint32_t> next_;
   // Each triangle's worst point (kNone if none) and its error.
-  PodArray<uint32_t> candidate_;
-  PodArray<double> error_;
+  LargeVector<uint32_t> candidate_;
+  LargeVector<double> error_;
   TriangleQueue queue_;
   std::unordered_map<uint32_t, std::pair<double, double>> repeats_;
   double vertex_error_ = 0;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <tuple>
 
+#include "server/core/mesh/radix_sort.h"
 #include "server/core/tiling/cells/parallel.h"
-#include "server/core/tiling/cells/radix_sort.h"
 
 namespace locator {
 

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "locator/geometry.h"
+#include "server/core/mesh/large_vector.h"
 #include "server/core/tiling/cells/cell_grid.h"
 #include "server/core/tiling/cells/cell_source.h"
-#include "server/core/tiling/cells/large_vector.h"
 
 namespace locator {
 

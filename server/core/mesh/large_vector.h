@@ -1,5 +1,6 @@
-// LargeVector: std::vector for the big arrays of a build (points, ids,
-// triangles, sort keys), with an allocator that
+// LargeVector: std::vector for the big arrays of a build (the tiled
+// build's points, ids, triangles and sort keys; greedy insertion's mesh,
+// queue and candidates), with an allocator that
 //  - backs buffers of 2 MiB or more with transparent huge pages
 //    (madvise(MADV_HUGEPAGE) on 2 MiB aligned memory): touching fresh
 //    memory costs a page fault per 4 KiB page otherwise, hundreds of
@@ -10,8 +11,8 @@
 //
 // Thread-safety: as std::allocator.
 
-#ifndef LOCATOR_CORE_TILING_LARGE_VECTOR_H_
-#define LOCATOR_CORE_TILING_LARGE_VECTOR_H_
+#ifndef LOCATOR_CORE_MESH_LARGE_VECTOR_H_
+#define LOCATOR_CORE_MESH_LARGE_VECTOR_H_
 
 #include <sys/mman.h>
 
@@ -71,4 +72,4 @@ using LargeVector = std::vector<T, LargeAllocator<T>>;
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_TILING_LARGE_VECTOR_H_
+#endif  // LOCATOR_CORE_MESH_LARGE_VECTOR_H_

@@ -1,16 +1,17 @@
 // SortByHighHalf: a stable LSD radix sort of 64-bit items by their upper 32
-// bits (a key), for the tiled build's large sorts (points by Hilbert key,
-// triangles by centroid key) where the lower half is an index.
+// bits (a key), for the large sorts of the builds where the lower half is an
+// index: the tiled build's (points by Hilbert key, triangles by centroid
+// key) and a grid TIN's (vertices and triangles in row-major order).
 //
 // Thread-safety: a pure function.
 
-#ifndef LOCATOR_CORE_TILING_RADIX_SORT_H_
-#define LOCATOR_CORE_TILING_RADIX_SORT_H_
+#ifndef LOCATOR_CORE_MESH_RADIX_SORT_H_
+#define LOCATOR_CORE_MESH_RADIX_SORT_H_
 
 #include <cstdint>
 #include <vector>
 
-#include "server/core/tiling/cells/large_vector.h"
+#include "server/core/mesh/large_vector.h"
 
 namespace locator {
 
@@ -31,4 +32,4 @@ inline void SortByHighHalf(LargeVector<uint64_t>* items) {
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_TILING_RADIX_SORT_H_
+#endif  // LOCATOR_CORE_MESH_RADIX_SORT_H_
