@@ -8,13 +8,6 @@
 #ifndef LOCATOR_CORE_GIVEN_MESH_BUILDER_H_
 #define LOCATOR_CORE_GIVEN_MESH_BUILDER_H_
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
 #include <array>
 #include <cstdint>
 #include <string>
@@ -24,6 +17,7 @@
 #include "locator/dataset.h"
 #include "locator/status.h"
 #include "locator/status_or.h"
+#include "server/core/cgal/cdt_with_info.h"
 #include "server/core/mesh/mesh_file.h"
 
 namespace locator {
@@ -48,15 +42,8 @@ class GivenMeshBuilder {
     Side side = Side::kUnknown;
     uint32_t index = kNone;  // in the serving mesh, for outside faces
   };
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-      Kernel,
-      CGAL::Triangulation_data_structure_2<
-          CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>,
-          CGAL::Constrained_triangulation_face_base_2<
-              Kernel,
-              CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>>,
-      CGAL::Exact_predicates_tag>;
+  using Kernel = CdtKernel;
+  using Cdt = CdtWithInfo<VertexInfo, FaceInfo, CGAL::Exact_predicates_tag>;
   using Face_handle = Cdt::Face_handle;
 
   // Edge i of a triangle is opposite corner i: it runs from corner i + 1

@@ -1,12 +1,5 @@
 #include "server/core/patch/simplify_clipped_mesh.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +10,8 @@
 #include <unordered_map>
 #include <utility>
 #include <vector>
+
+#include "server/core/cgal/cdt_with_info.h"
 
 namespace locator {
 namespace {
@@ -30,17 +25,10 @@ struct FaceInfo {
   bool inside = false;            // in the footprint
   std::vector<uint32_t> waiting;  // vertices not inserted that lie in it
 };
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    Kernel,
-    CGAL::Triangulation_data_structure_2<
-        CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>,
-        CGAL::Constrained_triangulation_face_base_2<
-            Kernel,
-            CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>>,
-    // Constraints never cross in a clipped TIN; if they do (a patch that
-    // was no planar mesh), CGAL throws instead of guessing the crossing.
-    CGAL::No_constraint_intersection_tag>;
+// Constraints never cross in a clipped TIN; if they do (a patch that was no
+// planar mesh), CGAL throws instead of guessing the crossing.
+using Cdt =
+    CdtWithInfo<VertexInfo, FaceInfo, CGAL::No_constraint_intersection_tag>;
 using Face_handle = Cdt::Face_handle;
 using Vertex_handle = Cdt::Vertex_handle;
 

@@ -251,61 +251,68 @@ void EdrApi::Handle(HttpRequest request, HttpReply reply) {
   ServeCollection(request, std::move(name), std::move(query), std::move(reply));
 }
 
-void EdrApi::ServeCollections(const HttpRequest& request, HttpReply reply) {
+void EdrApi::ServeDocument(const HttpRequest& request,
+                           std::optional<std::string> dataset,
+                           WriteDocument write, HttpReply reply) {
+  // The deadline runs from the call's arrival: time queued counts.
+  const CallDeadline deadline = app_->DefaultDeadline();
   StatusOr<LocatorApp::Admission> call =
       app_->Admit(request.Header("authorization"), AccessPolicy::Scope::kData,
-                  std::nullopt);
+                  std::move(dataset));
   if (!call.ok()) {
     reply(EdrError(call.status()));
     return;
   }
   lanes_->RunCall(
-      /*expensive=*/false, app_->DefaultDeadline(), std::move(reply),
+      /*expensive=*/false, deadline, std::move(reply),
       // The admission keeps the call counted for a drain until it answers.
-      [app = app_, call = *std::move(call)](const Status& admitted,
-                                            HttpReply reply) {
+      [app = app_, call = *std::move(call), write = std::move(write)](
+          const Status& admitted, HttpReply reply) {
         if (!admitted.ok()) {
           reply(EdrError(admitted));
           return;
         }
         JsonWriter json;
-        json.BeginObject().Key("links").BeginArray().BeginObject();
-        json.Key("href").String(kCollectionsPath).Key("rel").String("self");
-        json.EndObject().EndArray().Key("collections").BeginArray();
-        // Datasets still loading have no collection yet.
-        for (const auto& slot : app->datasets().slots()) {
-          const StatusOr<LocatorApp::Admission> dataset =
-              app->Resolve(slot->name());
-          if (dataset.ok()) WriteEdrCollection(FactsOf(*app, *dataset), &json);
-        }
-        json.EndArray().EndObject();
+        write(*app, call, &json);
         reply(JsonText(json.TakeText()));
       });
 }
 
+void EdrApi::ServeCollections(const HttpRequest& request, HttpReply reply) {
+  ServeDocument(
+      request, std::nullopt,
+      [](const LocatorApp& app, const LocatorApp::Admission&,
+         JsonWriter* json) {
+        json->BeginObject().Key("links").BeginArray().BeginObject();
+        json->Key("href").String(kCollectionsPath).Key("rel").String("self");
+        json->EndObject().EndArray().Key("collections").BeginArray();
+        // Datasets still loading have no collection yet.
+        for (const auto& slot : app.datasets().slots()) {
+          const StatusOr<LocatorApp::Admission> dataset =
+              app.Resolve(slot->name());
+          if (dataset.ok()) WriteEdrCollection(FactsOf(app, *dataset), json);
+        }
+        json->EndArray().EndObject();
+      },
+      std::move(reply));
+}
+
 void EdrApi::ServeCollection(const HttpRequest& request, std::string name,
                              std::string query, HttpReply reply) {
+  if (query.empty()) {
+    ServeDocument(
+        request, std::move(name),
+        [](const LocatorApp& app, const LocatorApp::Admission& call,
+           JsonWriter* json) { WriteEdrCollection(FactsOf(app, call), json); },
+        std::move(reply));
+    return;
+  }
   // The deadline runs from the call's arrival: time queued counts.
   const CallDeadline deadline = app_->DefaultDeadline();
   StatusOr<LocatorApp::Admission> call = app_->Admit(
       request.Header("authorization"), AccessPolicy::Scope::kData, name);
   if (!call.ok()) {
     reply(EdrError(call.status()));
-    return;
-  }
-  if (query.empty()) {
-    lanes_->RunCall(
-        /*expensive=*/false, deadline, std::move(reply),
-        [app = app_, call = *std::move(call)](const Status& admitted,
-                                              HttpReply reply) {
-          if (!admitted.ok()) {
-            reply(EdrError(admitted));
-            return;
-          }
-          JsonWriter json;
-          WriteEdrCollection(FactsOf(*app, call), &json);
-          reply(JsonText(json.TakeText()));
-        });
     return;
   }
   StatusOr<RequestFields> fields = RequestFields::Of(request);

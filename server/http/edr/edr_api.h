@@ -31,8 +31,11 @@
 #ifndef LOCATOR_SERVER_HTTP_EDR_EDR_API_H_
 #define LOCATOR_SERVER_HTTP_EDR_EDR_API_H_
 
+#include <functional>
+#include <optional>
 #include <string>
 
+#include "common/json_writer.h"
 #include "server/app/locator_app.h"
 #include "server/http/elevation/request_fields.h"
 #include "server/http/http_server.h"
@@ -61,6 +64,13 @@ class EdrApi {
                        std::string query, HttpReply reply);
   // GET /edr/collections.
   void ServeCollections(const HttpRequest& request, HttpReply reply);
+  // Admits `request` (for `dataset` when given) and answers, in the cheap
+  // lane, the JSON document `write` writes for the admitted call.
+  using WriteDocument = std::function<void(
+      const LocatorApp&, const LocatorApp::Admission&, JsonWriter*)>;
+  void ServeDocument(const HttpRequest& request,
+                     std::optional<std::string> dataset, WriteDocument write,
+                     HttpReply reply);
 
   LocatorApp* const app_;
   JsonApi* const lanes_;

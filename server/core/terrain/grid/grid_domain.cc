@@ -1,12 +1,5 @@
 #include "server/core/terrain/grid/grid_domain.h"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -14,17 +7,13 @@
 #include <utility>
 #include <vector>
 
+#include "server/core/cgal/cdt_with_info.h"
+
 namespace locator {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase =
-    CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Kernel>;
-using FaceBase = CGAL::Constrained_triangulation_face_base_2<
-    Kernel, CGAL::Triangulation_face_base_with_info_2<uint32_t, Kernel>>;
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>>;
+using Cdt = CdtWithInfo<uint32_t, uint32_t>;
 
 constexpr uint32_t kOutside = 0xffffffffu;
 
@@ -245,7 +234,7 @@ void BuildRegionMesh(const CellMask& mask, const GridRect& rect,
   TraceBoundary(mask, rect, fixed, &points, &runs);
   if (runs.empty()) return;
 
-  std::vector<Kernel::Point_2> cgal_points;
+  std::vector<Cdt::Point> cgal_points;
   cgal_points.reserve(points.size());
   for (const GridPoint& p : points) {
     cgal_points.emplace_back(static_cast<double>(p.x),
