@@ -20,11 +20,14 @@ constexpr uint32_t kOutside = 0xffffffffu;
 // Bit i of `words` set for each valid sample of `row` (NaN is nodata).
 void SampleBits(const ElevationGrid& grid, uint32_t row,
                 std::vector<uint64_t>* words) {
-  std::fill(words->begin(), words->end(), 0);
   const float* values = grid.values.data() + grid.Index(0, row);
-  for (uint32_t col = 0; col < grid.width; ++col) {
-    if (!std::isnan(values[col]))
-      (*words)[col / 64] |= uint64_t{1} << (col % 64);
+  for (uint32_t word = 0; word * 64 < grid.width; ++word) {
+    const uint32_t end = std::min(grid.width, (word + 1) * 64);
+    uint64_t bits = 0;
+    for (uint32_t col = word * 64; col < end; ++col) {
+      bits |= uint64_t{values[col] == values[col]} << (col % 64);  // not NaN
+    }
+    (*words)[word] = bits;
   }
 }
 

@@ -3,10 +3,85 @@
 #include <cmath>
 #include <cstddef>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 #include "server/core/geometry/barycentric.h"
 #include "server/core/terrain/grid/grid_raster.h"
 
 namespace locator {
+
+namespace {
+
+// |plane(x) - sample|, the plane base + gx * x.
+inline double PlaneError(double base, double gx, int64_t x, float sample) {
+  return std::abs(base + gx * static_cast<double>(x) - sample);
+}
+
+#if defined(__x86_64__)
+// WorstInRun four samples at a time, each lane keeping its own first worst
+// and the lanes merged by error, then column: the same errors to the bit (the
+// same operations in the same order, no fused multiply-add) and the same
+// sample.
+__attribute__((target("avx2"))) RunWorst WorstInRunAvx2(
+    const float* row, int64_t first, int64_t last, double base, double gx) {
+  const __m256d sign = _mm256_set1_pd(-0.0);
+  const __m256d base4 = _mm256_set1_pd(base);
+  const __m256d gx4 = _mm256_set1_pd(gx);
+  const __m256d four = _mm256_set1_pd(4);
+  __m256d xs = _mm256_setr_pd(
+      static_cast<double>(first), static_cast<double>(first + 1),
+      static_cast<double>(first + 2), static_cast<double>(first + 3));
+  __m256d worst4 = _mm256_setzero_pd();
+  __m256d worst_x4 = _mm256_set1_pd(-1);
+  int64_t x = first;
+  for (; x + 3 <= last; x += 4) {
+    const __m256d samples = _mm256_cvtps_pd(_mm_loadu_ps(row + x));
+    const __m256d plane = _mm256_add_pd(base4, _mm256_mul_pd(gx4, xs));
+    const __m256d error = _mm256_andnot_pd(sign, _mm256_sub_pd(plane, samples));
+    // Ordered: a NaN error is never greater.
+    const __m256d beats = _mm256_cmp_pd(error, worst4, _CMP_GT_OQ);
+    worst4 = _mm256_blendv_pd(worst4, error, beats);
+    worst_x4 = _mm256_blendv_pd(worst_x4, xs, beats);
+    xs = _mm256_add_pd(xs, four);
+  }
+  alignas(32) double errors[4], columns[4];
+  _mm256_store_pd(errors, worst4);
+  _mm256_store_pd(columns, worst_x4);
+  RunWorst worst;
+  for (int lane = 0; lane < 4; ++lane) {
+    const auto column = static_cast<int64_t>(columns[lane]);
+    if (errors[lane] > worst.error ||
+        (errors[lane] == worst.error && errors[lane] > 0 && column < worst.x)) {
+      worst = {errors[lane], column};
+    }
+  }
+  // The tail's columns follow every lane's: only a larger error wins.
+  return WorstInRun(row, x, last, base, gx, worst);
+}
+
+const bool kHasAvx2 = __builtin_cpu_supports("avx2");
+#endif
+
+}  // namespace
+
+RunWorst WorstInRun(const float* row, int64_t first, int64_t last, double base,
+                    double gx, RunWorst worst) {
+  for (int64_t x = first; x <= last; ++x) {
+    const double e = PlaneError(base, gx, x, row[x]);
+    if (e > worst.error) worst = {e, x};
+  }
+  return worst;
+}
+
+RunWorst FastWorstInRun(const float* row, int64_t first, int64_t last,
+                        double base, double gx) {
+#if defined(__x86_64__)
+  if (kHasAvx2) return WorstInRunAvx2(row, first, last, base, gx);
+#endif
+  return WorstInRun(row, first, last, base, gx);
+}
 
 WorstSample WorstPlaneSample(const ElevationGrid& grid,
                              const std::array<GridPoint, 3>& c,
@@ -34,18 +109,10 @@ WorstSample WorstPlaneSample(const ElevationGrid& grid,
     const float* row = values + static_cast<size_t>(y) * width;
     const double base = z[0] + gy * static_cast<double>(y - c[0].y) -
                         gx * static_cast<double>(c[0].x);
-    double best = worst.error;
-    int64_t best_x = -1;
-    for (int64_t x = first; x <= last; ++x) {
-      const double e = std::abs(base + gx * static_cast<double>(x) - row[x]);
-      if (e > best) {
-        best = e;
-        best_x = x;
-      }
-    }
-    if (best_x >= 0) {
-      worst.error = best;
-      worst.sample = static_cast<size_t>(y) * width + best_x;
+    const RunWorst run = FastWorstInRun(row, first, last, base, gx);
+    if (run.error > worst.error) {
+      worst.error = run.error;
+      worst.sample = static_cast<size_t>(y) * width + run.x;
     }
   });
   return worst;

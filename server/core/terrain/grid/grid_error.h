@@ -40,6 +40,21 @@ WorstSample WorstPlaneSample(const ElevationGrid& grid,
                              const std::array<GridPoint, 3>& c,
                              std::array<bool, 3> open);
 
+// The first sample of a run of a grid row at the run's largest plane error
+// |base + gx * x - row[x]|, if that is above 0 (x = -1 otherwise).
+struct RunWorst {
+  double error = 0;
+  int64_t x = -1;
+};
+// The worst sample of row[first..last] (NaN samples never count), one at a
+// time: a sample whose error beats `worst` so far becomes the worst.
+RunWorst WorstInRun(const float* row, int64_t first, int64_t last, double base,
+                    double gx, RunWorst worst = {});
+// WorstInRun(row, first, last, base, gx), four samples at a time where the
+// processor has AVX2: the same errors to the bit and the same sample.
+RunWorst FastWorstInRun(const float* row, int64_t first, int64_t last,
+                        double base, double gx);
+
 // The worst sample of the triangle `c` as the engine serves it.
 WorstSample WorstServedSample(const ElevationGrid& grid,
                               const std::array<GridPoint, 3>& c);

@@ -1,8 +1,10 @@
 #include "server/core/terrain/grid/triangulate_grid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "server/core/terrain/grid/grid_certificate.h"
@@ -55,17 +57,24 @@ Status CheckGrid(const ElevationGrid& grid, uint64_t* valid) {
         ") must be finite, with non-zero steps, and keep every sample "
         "finite");
   }
-  *valid = 0;
-  for (uint32_t row = 0; row < grid.height; ++row) {
-    for (uint32_t col = 0; col < grid.width; ++col) {
-      const float v = grid.ValueAt(col, row);
-      if (std::isinf(v)) {
-        return Status::InvalidArgument(SampleName(col, row) +
-                                       " is infinite; nodata must be NaN");
-      }
-      *valid += std::isnan(v) ? 0 : 1;
-    }
+  // One branch-free pass counts; only a grid with an infinity is searched
+  // for the first one.
+  uint64_t nan = 0, infinite = 0;
+  for (const float v : grid.values) {
+    nan += v != v;
+    infinite += std::abs(v) == std::numeric_limits<float>::infinity();
   }
+  if (infinite > 0) {
+    const auto first = static_cast<uint64_t>(
+        std::find_if(grid.values.begin(), grid.values.end(),
+                     [](float v) { return std::isinf(v); }) -
+        grid.values.begin());
+    return Status::InvalidArgument(
+        SampleName(static_cast<uint32_t>(first % grid.width),
+                   static_cast<uint32_t>(first / grid.width)) +
+        " is infinite; nodata must be NaN");
+  }
+  *valid = grid.samples() - nan;
   return Status::OK();
 }
 
