@@ -27,19 +27,12 @@ constexpr double kJitteredX = 90;
 constexpr int kRepeatedPerGrid = 30;
 constexpr size_t kMaxReported = 8;
 
-LocationType FromProtoType(int type) {
-  switch (type) {
-    case v1::LOCATION_TYPE_EDGE:
-      return LocationType::kEdge;
-    case v1::LOCATION_TYPE_VERTEX:
-      return LocationType::kVertex;
-    case v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL:
-      return LocationType::kOutsideConvexHull;
-    case v1::LOCATION_TYPE_OUTSIDE_DOMAIN:
-      return LocationType::kOutsideDomain;
-    default:
-      return LocationType::kFace;
-  }
+// The core's type of a wire value; a failure of the calling test if it has
+// none.
+LocationType KnownLocationType(int type) {
+  const std::optional<LocationType> known = FromProtoLocationType(type);
+  if (!known) ADD_FAILURE() << "the answer has location type " << type;
+  return known.value_or(LocationType::kFace);
 }
 
 std::string Describe(const Point2& q) {
@@ -262,9 +255,26 @@ void ExpectAnswersAgree(v1::Locator::Stub& stub,
   }
 }
 
+std::optional<LocationType> FromProtoLocationType(int type) {
+  switch (type) {
+    case v1::LOCATION_TYPE_FACE:
+      return LocationType::kFace;
+    case v1::LOCATION_TYPE_EDGE:
+      return LocationType::kEdge;
+    case v1::LOCATION_TYPE_VERTEX:
+      return LocationType::kVertex;
+    case v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL:
+      return LocationType::kOutsideConvexHull;
+    case v1::LOCATION_TYPE_OUTSIDE_DOMAIN:
+      return LocationType::kOutsideDomain;
+    default:
+      return std::nullopt;
+  }
+}
+
 LocateResult FromLocateResponse(const v1::LocateResponse& response) {
   LocateResult result;
-  result.type = FromProtoType(response.type());
+  result.type = KnownLocationType(response.type());
   result.triangle_id = response.triangle_id();
   for (int corner = 0; corner < response.vertex_ids_size() && corner < 3;
        ++corner) {
@@ -292,7 +302,7 @@ LocateResult FromLocateResponse(const v1::LocateResponse& response) {
 LocateResult FromBatchRow(const v1::LocateBatchResponse& response, size_t row) {
   const int i = static_cast<int>(row);
   LocateResult result;
-  result.type = FromProtoType(response.types(i));
+  result.type = KnownLocationType(response.types(i));
   result.triangle_id = response.triangle_ids(i);
   for (int corner = 0; corner < 3; ++corner) {
     result.vertex_ids[corner] = response.vertex_ids(3 * i + corner);

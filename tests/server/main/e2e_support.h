@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -103,7 +104,11 @@ void ExpectAnswersAgree(v1::Locator::Stub& stub,
                         const std::string& dataset_path,
                         const std::string& dataset = "");
 
-// An answer that came over the wire, as the core would have returned it.
+// The core's location type of a wire value; nullopt for UNSPECIFIED or a
+// value the API does not define.
+std::optional<LocationType> FromProtoLocationType(int type);
+// An answer that came over the wire, as the core would have returned it (a
+// type FromProtoLocationType does not know is a test failure).
 LocateResult FromLocateResponse(const v1::LocateResponse& response);
 // Row `row` of a batch answer sent with include_vertex_ids (and optionally
 // the other columns). hull_edge_ids are not part of a batch answer.

@@ -15,9 +15,11 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "tests/server/main/e2e_support.h"
 #include "tests/server/main/hostile/hostile_calls.h"
 #include "tests/server/main/hostile/hostile_requests.h"
 #include "tests/server/main/hostile/hostile_run.h"
@@ -27,26 +29,9 @@ namespace {
 
 using Code = grpc::StatusCode;
 
-std::optional<LocationType> ToLocationType(int type) {
-  switch (type) {
-    case v1::LOCATION_TYPE_FACE:
-      return LocationType::kFace;
-    case v1::LOCATION_TYPE_EDGE:
-      return LocationType::kEdge;
-    case v1::LOCATION_TYPE_VERTEX:
-      return LocationType::kVertex;
-    case v1::LOCATION_TYPE_OUTSIDE_CONVEX_HULL:
-      return LocationType::kOutsideConvexHull;
-    case v1::LOCATION_TYPE_OUTSIDE_DOMAIN:
-      return LocationType::kOutsideDomain;
-    default:
-      return std::nullopt;
-  }
-}
-
 std::string CheckLocate(const HostileCase<v1::LocateRequest>& c,
                         const v1::LocateResponse& response) {
-  if (!ToLocationType(response.type())) {
+  if (!FromProtoLocationType(response.type())) {
     return "location type " + std::to_string(response.type());
   }
   if (response.vertex_ids_size() != 3 || response.vertices_size() != 3) {
@@ -74,7 +59,8 @@ std::string CheckBatch(const HostileCase<v1::LocateBatchRequest>& c,
   uint64_t total = 0;
   for (int i = 0; i < n; ++i) {
     total += response.costs(i);
-    const std::optional<LocationType> type = ToLocationType(response.types(i));
+    const std::optional<LocationType> type =
+        FromProtoLocationType(response.types(i));
     if (!type) return "point " + std::to_string(i) + ": a bad type";
     LocateResult row;
     row.type = *type;
