@@ -251,18 +251,25 @@ void EdrApi::Handle(HttpRequest request, HttpReply reply) {
   ServeCollection(request, std::move(name), std::move(query), std::move(reply));
 }
 
+std::optional<LocatorApp::Admission> EdrApi::Admit(
+    const HttpRequest& request, std::optional<std::string_view> dataset,
+    HttpReply& reply) const {
+  StatusOr<LocatorApp::Admission> call = app_->Admit(
+      request.Header("authorization"), AccessPolicy::Scope::kData, dataset);
+  if (!call.ok()) {
+    reply(EdrError(call.status()));
+    return std::nullopt;
+  }
+  return *std::move(call);
+}
+
 void EdrApi::ServeDocument(const HttpRequest& request,
-                           std::optional<std::string> dataset,
+                           std::optional<std::string_view> dataset,
                            WriteDocument write, HttpReply reply) {
   // The deadline runs from the call's arrival: time queued counts.
   const CallDeadline deadline = app_->DefaultDeadline();
-  StatusOr<LocatorApp::Admission> call =
-      app_->Admit(request.Header("authorization"), AccessPolicy::Scope::kData,
-                  std::move(dataset));
-  if (!call.ok()) {
-    reply(EdrError(call.status()));
-    return;
-  }
+  std::optional<LocatorApp::Admission> call = Admit(request, dataset, reply);
+  if (!call.has_value()) return;
   lanes_->RunCall(
       /*expensive=*/false, deadline, std::move(reply),
       // The admission keeps the call counted for a drain until it answers.
@@ -301,7 +308,7 @@ void EdrApi::ServeCollection(const HttpRequest& request, std::string name,
                              std::string query, HttpReply reply) {
   if (query.empty()) {
     ServeDocument(
-        request, std::move(name),
+        request, name,
         [](const LocatorApp& app, const LocatorApp::Admission& call,
            JsonWriter* json) { WriteEdrCollection(FactsOf(app, call), json); },
         std::move(reply));
@@ -309,12 +316,8 @@ void EdrApi::ServeCollection(const HttpRequest& request, std::string name,
   }
   // The deadline runs from the call's arrival: time queued counts.
   const CallDeadline deadline = app_->DefaultDeadline();
-  StatusOr<LocatorApp::Admission> call = app_->Admit(
-      request.Header("authorization"), AccessPolicy::Scope::kData, name);
-  if (!call.ok()) {
-    reply(EdrError(call.status()));
-    return;
-  }
+  std::optional<LocatorApp::Admission> call = Admit(request, name, reply);
+  if (!call.has_value()) return;
   StatusOr<RequestFields> fields = RequestFields::Of(request);
   if (!fields.ok()) {
     reply(EdrError(fields.status()));

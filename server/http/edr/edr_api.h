@@ -34,6 +34,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "common/json_writer.h"
 #include "server/app/locator_app.h"
@@ -64,13 +65,18 @@ class EdrApi {
                        std::string query, HttpReply reply);
   // GET /edr/collections.
   void ServeCollections(const HttpRequest& request, HttpReply reply);
+  // The admission of `request` (to `dataset` when given): nullopt, once
+  // `reply` has the refusal, for a call the application does not admit.
+  std::optional<LocatorApp::Admission> Admit(
+      const HttpRequest& request, std::optional<std::string_view> dataset,
+      HttpReply& reply) const;
   // Admits `request` (for `dataset` when given) and answers, in the cheap
   // lane, the JSON document `write` writes for the admitted call.
   using WriteDocument = std::function<void(
       const LocatorApp&, const LocatorApp::Admission&, JsonWriter*)>;
   void ServeDocument(const HttpRequest& request,
-                     std::optional<std::string> dataset, WriteDocument write,
-                     HttpReply reply);
+                     std::optional<std::string_view> dataset,
+                     WriteDocument write, HttpReply reply);
 
   LocatorApp* const app_;
   JsonApi* const lanes_;

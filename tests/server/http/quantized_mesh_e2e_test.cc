@@ -16,8 +16,6 @@
 #include <variant>
 #include <vector>
 
-#include "tests/common/gis/gis_fixtures.h"
-#include "tests/core/scratch_dir.h"
 #include "tests/server/http/hill_server_test.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/status_e2e_support.h"
