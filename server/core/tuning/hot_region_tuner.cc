@@ -197,31 +197,52 @@ std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
   return significant;
 }
 
+double HotRegionTuner::Leaves(const std::vector<uint32_t>& levels) const {
+  double sum = 0;
+  for (size_t c = 0; c < levels.size(); ++c) {
+    const size_t n = ShapeOf(c, levels[c]).cells();
+    sum += n > 1 ? static_cast<double>(n) : 0;
+  }
+  return sum;
+}
+
 std::vector<uint32_t> HotRegionTuner::KeepStableCells(
     std::vector<uint32_t> fresh, const std::vector<char>& significant) const {
   if (!table_) return fresh;
-  const auto leaves = [this](const std::vector<uint32_t>& plan) {
-    double sum = 0;
-    for (size_t c = 0; c < plan.size(); ++c) {
-      const size_t n = ShapeOf(c, plan[c]).cells();
-      sum += n > 1 ? static_cast<double>(n) : 0;
-    }
-    return sum;
-  };
   // Keep cells whose traffic did not change, or whose new level is
   // within hysteresis; and, while the budget allows, cells that would only
   // shrink: their starts are already paid for, and traffic may come back.
   std::vector<uint32_t> mixed(fresh.size());
+  std::vector<char> stable(fresh.size());
   for (bool keep_shrinking : {true, false}) {
     for (size_t c = 0; c < fresh.size(); ++c) {
       const uint32_t old_r = levels_[c];
-      const bool stable = !significant[c] ||
-                          (fresh[c] <= kHysteresis * old_r &&
-                           fresh[c] * kHysteresis >= old_r) ||
-                          (keep_shrinking && fresh[c] < old_r);
-      mixed[c] = stable ? old_r : fresh[c];
+      stable[c] = !significant[c] ||
+                  (fresh[c] <= kHysteresis * old_r &&
+                   fresh[c] * kHysteresis >= old_r) ||
+                  (keep_shrinking && fresh[c] < old_r);
+      mixed[c] = stable[c] ? old_r : fresh[c];
     }
-    if (leaves(mixed) <= static_cast<double>(leaf_budget_)) return mixed;
+    if (Leaves(mixed) <= static_cast<double>(leaf_budget_)) return mixed;
+  }
+  // The cells that change get what the stable ones leave, in the fresh
+  // plan's proportions (levels scale with the square root of the starts),
+  // so that a re-tune rebuilds only the cells whose traffic changed.
+  std::vector<uint32_t> kept(fresh.size(), 1);
+  std::vector<uint32_t> changing(fresh.size(), 1);
+  for (size_t c = 0; c < fresh.size(); ++c) {
+    (stable[c] ? kept : changing)[c] = mixed[c];
+  }
+  const double left = static_cast<double>(leaf_budget_) - Leaves(kept);
+  const double wanted = Leaves(changing);
+  if (left > 0 && wanted > 0) {
+    const double scale = std::sqrt(kPlanFill * left / wanted);
+    for (size_t c = 0; c < fresh.size(); ++c) {
+      if (stable[c]) continue;
+      mixed[c] = std::max<uint32_t>(
+          1, static_cast<uint32_t>(scale * static_cast<double>(fresh[c])));
+    }
+    if (Leaves(mixed) <= static_cast<double>(leaf_budget_)) return mixed;
   }
   return fresh;
 }

@@ -29,9 +29,11 @@
 // a rebuild shares every unchanged cell. A rebuild can run in bounded steps
 // (Plan(), then BuildStep() until it returns true) while the old table
 // serves; the new plan becomes current only when its table is complete. The
-// plan fills
-// kPlanFill of the budget so that kept cells have headroom; a mix that would
-// still exceed the budget falls back to the fresh plan.
+// plan fills kPlanFill of the budget so that kept cells have headroom. When
+// the kept cells leave too little, the cells that change are scaled down to
+// what is left (a hot spot appearing rebuilds its own cells, not the whole
+// table); only a mix that still exceeds the budget falls back to the fresh
+// plan.
 //
 // Thread-safety: not thread-safe; the owner serialises calls.
 
@@ -132,9 +134,13 @@ class HotRegionTuner {
   // significant[c]: cell c's count departs from the share the current
   // table was planned for by more than Poisson noise (all, without a table).
   std::vector<char> SignificantChanges(double total) const;
+  // Sub-grid starts (beyond the coarse cells) that `levels` place.
+  double Leaves(const std::vector<uint32_t>& levels) const;
   // The fresh plan, except for cells without a significant change, whose
   // new level is within hysteresis of the current one, or (while the
-  // budget allows) that would only shrink.
+  // budget allows) that would only shrink. When keeping them leaves too
+  // little budget for the fresh plan's other cells, those are scaled down
+  // to fit; only when even that fails is the fresh plan used whole.
   std::vector<uint32_t> KeepStableCells(
       std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
   // The model's expected walk length (up to a constant) under `weight` for

@@ -1,0 +1,69 @@
+// HotRegionTuner's re-tunes: a hot spot appearing on a table planned for
+// uniform traffic rebuilds the hot spot's cells and keeps every other one,
+// within the memory budget, even when keeping them leaves the hot cells less
+// than the fresh plan would give them.
+
+#include "server/core/tuning/hot_region_tuner.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "locator/dataset_sources.h"
+#include "server/core/cgal/triangulation.h"
+
+namespace locator {
+namespace {
+
+constexpr int kTunerGrid = 16;
+// 48 of the 256 cells, an 8 x 6 block, take all the traffic. The budget
+// buys about 30,000 starts beyond the coarse cells (1.5 per point): planned
+// for uniform traffic, about 100 per cell. The fresh plan caps the hot
+// cells near 4 starts per point (about 310 each) and gives the others about
+// 58, within hysteresis of their 100, so they are kept; but then the hot
+// cells' fresh plans no longer fit.
+constexpr int kTunerHotColumns = 8;
+constexpr int kTunerHotRows = 6;
+constexpr size_t kTunerBudgetBytes = 147'000;
+
+bool IsHotCell(size_t cell) {
+  return cell / kTunerGrid < kTunerHotRows &&
+         cell % kTunerGrid < kTunerHotColumns;
+}
+
+TEST(HotRegionTunerTest, AHotSpotRebuildsItsCellsAndKeepsTheOthers) {
+  StatusOr<std::unique_ptr<Triangulation>> built =
+      Triangulation::Build(GenerateUniform(20'000, 3));
+  ASSERT_TRUE(built.ok()) << built.status().ToString();
+  const ServingMesh& mesh = (*built)->mesh();
+  const GridGeometry grid((*built)->bounding_box(), kTunerGrid);
+  TuningOptions options;
+  options.budget_bytes = kTunerBudgetBytes;
+  HotRegionTuner tuner(mesh, grid, options, 0);
+  const std::shared_ptr<const TuningSnapshot> uniform = tuner.Build(1);
+
+  std::vector<double> counts(grid.cells(), 0.0);
+  for (size_t c = 0; c < counts.size(); ++c)
+    counts[c] = IsHotCell(c) ? 1000 : 0;
+  tuner.AddCounts(counts);
+  const std::shared_ptr<const TuningSnapshot> hot = tuner.Build(2);
+
+  ASSERT_NE(hot->table, uniform->table) << "the hot spot must re-tune";
+  for (size_t c = 0; c < grid.cells(); ++c) {
+    const SubGrid before = uniform->table->sub_grid(c);
+    const SubGrid after = hot->table->sub_grid(c);
+    if (IsHotCell(c)) {
+      EXPECT_GT(after.cells(), before.cells()) << "hot cell " << c;
+    } else {
+      EXPECT_EQ(after, before) << "cold cell " << c << " was rebuilt";
+    }
+  }
+  EXPECT_LE(hot->table->MemoryBytes(), tuner.budget_bytes());
+  for (const StartTable::Face face : hot->table->Starts()) {
+    ASSERT_LT(face, mesh.num_faces());
+  }
+}
+
+}  // namespace
+}  // namespace locator
