@@ -257,6 +257,16 @@ double HotRegionTuner::ExpectedWalk(const std::vector<double>& weight,
   return walk;
 }
 
+double HotRegionTuner::SignificantWalk(
+    const std::vector<double>& weight,
+    const std::vector<char>& significant) const {
+  double walk = 0;
+  for (size_t c = 0; c < weight.size(); ++c) {
+    walk += significant[c] ? weight[c] * walk_terms_[c] : 0.0;
+  }
+  return walk;
+}
+
 double HotRegionTuner::WalkTerm(size_t c, uint32_t r) const {
   // The distortion of a shape is (q * rows + columns) / (2 * sqrt(q * S)).
   const SubGrid shape = ShapeOf(c, r);
@@ -327,11 +337,12 @@ bool HotRegionTuner::Plan() {
   for (size_t c = 0; c < cells; ++c) {
     weight[c] = prior / cells + (1 - prior) * (total > 0 ? share[c] : 0.0);
   }
-  // Traffic that moved within noise keeps the table without planning.
+  // Traffic that moved within noise keeps the table without planning, and
+  // so does a change confined to cells that carry less than kMinGain of
+  // the expected walk: no new plan for them could gain that much.
   const std::vector<char> significant = SignificantChanges(total);
-  bool keep =
-      table_ != nullptr && std::none_of(significant.begin(), significant.end(),
-                                        [](char s) { return s; });
+  bool keep = table_ != nullptr && SignificantWalk(weight, significant) <=
+                                       kMinGain * ExpectedWalk(weight, levels_);
   const std::vector<uint32_t> plan =
       keep ? std::vector<uint32_t>()
            : KeepStableCells(PlanLevels(weight), significant);

@@ -25,15 +25,16 @@
 // more than kHysteresis (noise in the histogram must not cost a rebuild);
 // the table is rebuilt only if the cost model predicts at least
 // kMinGain fewer faces per query than the current table, otherwise it is
-// reused outright; cells shrink only when the budget needs their starts; and
-// a rebuild shares every unchanged cell. A rebuild can run in bounded steps
-// (Plan(), then BuildStep() until it returns true) while the old table
-// serves; the new plan becomes current only when its table is complete. The
-// plan fills kPlanFill of the budget so that kept cells have headroom. When
-// the kept cells leave too little, the cells that change are scaled down to
-// what is left (a hot spot appearing rebuilds its own cells, not the whole
-// table); only a mix that still exceeds the budget falls back to the fresh
-// plan.
+// reused outright (without planning, when the cells whose traffic changed
+// carry less than kMinGain of the expected walk); cells shrink only when the
+// budget needs their starts; and a rebuild shares every unchanged cell. A
+// rebuild can run in bounded steps (Plan(), then BuildStep() until it returns
+// true) while the old table serves; the new plan becomes current only when its
+// table is complete. The plan fills kPlanFill of the budget so that kept cells
+// have headroom. When the kept cells leave too little, the cells that change
+// are scaled down to what is left (a hot spot appearing rebuilds its own cells,
+// not the whole table); only a mix that still exceeds the budget falls back to
+// the fresh plan.
 //
 // Thread-safety: not thread-safe; the owner serialises calls.
 
@@ -148,6 +149,10 @@ class HotRegionTuner {
   // with the current table's terms from walk_terms_.
   double ExpectedWalk(const std::vector<double>& weight,
                       const std::vector<uint32_t>& levels) const;
+  // The part of ExpectedWalk(weight, levels_) in the significant cells: the
+  // most that re-planning them can save.
+  double SignificantWalk(const std::vector<double>& weight,
+                         const std::vector<char>& significant) const;
   // The walk from a start of cell c at level r: sqrt(P / S) for a sub-grid
   // of the ideal shape, times how much more this shape's walks cross.
   double WalkTerm(size_t c, uint32_t r) const;

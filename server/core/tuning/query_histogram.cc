@@ -59,6 +59,9 @@ void QueryHistogram::AddToCell(size_t cell) {
   counter.store(counter.load(std::memory_order_relaxed) + 1,
                 std::memory_order_relaxed);
   Track& track = tracks_[shard];
+  if (!track.used.load(std::memory_order_relaxed)) {
+    track.used.store(true, std::memory_order_relaxed);
+  }
   const uint32_t last = track.last.load(std::memory_order_relaxed);
   if (last == cell) return;
   track.last.store(static_cast<uint32_t>(cell), std::memory_order_relaxed);
@@ -83,6 +86,8 @@ CellSteps QueryHistogram::DrainSteps() {
 void QueryHistogram::Drain(std::vector<double>* into) {
   into->resize(grid_.cells(), 0.0);
   for (int s = 0; s < kShards; ++s) {
+    // A shard no thread has counted into is all zeros.
+    if (!tracks_[s].used.load(std::memory_order_relaxed)) continue;
     for (size_t c = 0; c < grid_.cells(); ++c) {
       const size_t i = s * stride_ + c;
       const uint32_t now = counts_[i].load(std::memory_order_relaxed);

@@ -102,8 +102,9 @@ class QueryHistogram {
   size_t MemoryBytes() const;
 
  private:
-  // A shard's last cell and moves, on a cache line of its own.
+  // A shard's use, last cell and moves, on a cache line of its own.
   struct alignas(64) Track {
+    std::atomic<bool> used{false};  // a thread has counted into the shard
     std::atomic<uint32_t> last{0};
     std::atomic<uint32_t> steps[4] = {};  // right, left, up, down
   };
