@@ -1,10 +1,12 @@
 #include "server/bench/suites/scale_benchmark.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <string>
 #include <string_view>
@@ -79,6 +81,38 @@ std::vector<Point2> NearPointQueries(const Dataset& dataset,
   return queries;
 }
 
+// The floor under a locate whose data is not in cache: per query,
+// kFloorReads reads of random words of a buffer as large as the serving
+// mesh, each address depending on the word read before (as a walk's next
+// face depends on the last), timed and sampled as locates are. A uniform
+// locate at n = 10^6 reads about as many lines that miss every cache.
+// Printed as the strategy "random-reads" beside the uniform workload.
+constexpr int kFloorReads = 4;
+
+BenchRow RandomReadsRow(const std::string& workload, size_t n, size_t bytes,
+                        std::span<const Point2> queries, int repeats) {
+  std::vector<uint64_t> words(std::max<size_t>(1, bytes / sizeof(uint64_t)));
+  std::iota(words.begin(), words.end(), uint64_t{0});
+  uint64_t chain = 0;
+  const auto read = [&](const Point2& q) {
+    uint64_t h = std::bit_cast<uint64_t>(q.x);
+    for (int i = 0; i < kFloorReads; ++i) {
+      h = (h ^ chain) * 0x9E3779B97F4A7C15ull;
+      chain += words[((h >> 32) * words.size()) >> 32];
+    }
+  };
+  BenchRow row{"scale", workload, n, "random-reads",
+               0,       0,        0, MedianNsPerQuery(queries, repeats, read),
+               0};
+  const LatencySample latency = SampleLatency(queries, read);
+  row.p50_ns = latency.p50_ns;
+  row.p999_ns = latency.p999_ns;
+  // A volatile store keeps the reads from being optimised away.
+  volatile uint64_t keep = chain;
+  (void)keep;
+  return row;
+}
+
 bool Selected(const std::vector<std::string>& names, std::string_view name) {
   return names.empty() ||
          std::find(names.begin(), names.end(), name) != names.end();
@@ -129,9 +163,10 @@ Status CheckNames(const std::vector<std::string>& names,
 // CGAL's methods on `all` (its first o.warmup queries warm the strategies
 // up), adds their rows, and counts answers that disagree with CGAL into
 // *mismatches. With `record_build`, also the self-tuning strategy's build
-// row. On a mesh given as triangles (`delaunay` false) CGAL's hierarchy
-// triangulates the points anew, which is another triangulation: the
-// reference is then CGAL's locate on t, and there is no hierarchy row.
+// row and the random-reads floor (RandomReadsRow). On a mesh given as triangles
+// (`delaunay` false) CGAL's hierarchy triangulates the points anew, which is
+// another triangulation: the reference is then CGAL's locate on t, and there is
+// no hierarchy row.
 Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
                    const ServingMesh& mesh, CgalBaselines& cgal,
                    const std::string& workload, std::span<const Point2> all,
@@ -239,6 +274,10 @@ Status RunWorkload(const ScaleOptions& o, const Triangulation& t,
   row.p50_ns = latency.p50_ns;
   row.p999_ns = latency.p999_ns;
   report->Add(row);
+  if (record_build) {
+    report->Add(
+        RandomReadsRow(workload, n, mesh.MemoryBytes(), measured, o.repeats));
+  }
   return Status::OK();
 }
 
