@@ -12,16 +12,20 @@
 //
 // --scale runs the workloads of common/workload.h plus `raster` (a row-major
 // grid of queries over the bounding box, in row order) on uniform points,
-// and `clusters-data` (queries near the points) and `clusters-raster` on a
-// non-uniform dataset (clusters:<n>:20:1), and `dem-uniform` and
+// and `clusters-data` (queries near the points), `clusters-raster` and
+// `clusters-sparse` (uniform over the parts of the box holding at most a
+// tenth of the mean density) on a non-uniform dataset (clusters:<n>:20:1),
+// and `dem-uniform` and
 // `dem-raster` on the TIN of a fractal DEM with n vertices (a simplified
 // DEM, served as a mesh given as triangles). ns_per_query times what CGAL's
 // rows answer: the location (type, triangle, vertices), without
 // barycentrics or value, which full_ns_per_query adds. Its rows also give
 // re-tunes per 10^6 located queries and the tuner's share of the timed wall
-// time (from the first timed locate to the last), a sampled single-locate
-// p50 and p99.9 (one query in 64 timed on its own), and batch_ns_per_query:
-// ns per point of one LocateMany() over the same queries, in-process.
+// time (from the first timed locate to the last), the single-locate p50
+// and p99.9 (every query of one pass timed), and batch_ns_per_query: ns per
+// point of one LocateMany() over the same queries, in-process. Beside the
+// uniform workload, `random-reads` is the floor: four dependent reads of
+// random words in a buffer as large as the serving mesh per query.
 //
 // A program that prints figures, never a test: compare strategies within one
 // run (the machine is shared and noisy).

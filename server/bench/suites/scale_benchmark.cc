@@ -23,6 +23,7 @@
 #include "server/core/strategies/locator_factory.h"
 #include "server/core/terrain/fractal_terrain.h"
 #include "server/core/terrain/grid/triangulate_grid.h"
+#include "server/core/tuning/query_histogram.h"
 
 namespace locator::bench {
 
@@ -77,6 +78,43 @@ std::vector<Point2> NearPointQueries(const Dataset& dataset,
     const Point2 p = dataset.points[i];
     q.x = std::clamp(p.x + UniformDouble(rng, -dx, dx), box.min_x, box.max_x);
     q.y = std::clamp(p.y + UniformDouble(rng, -dy, dy), box.min_y, box.max_y);
+  }
+  return queries;
+}
+
+// Sparse queries: the dataset's box cut into kSparseGrid x kSparseGrid
+// cells, and a cell is sparse when it holds at most a tenth of the mean
+// number of points per cell.
+constexpr int kSparseGrid = 64;
+
+// `count` queries drawn uniformly over the sparse cells of `dataset`'s box:
+// the parts of non-uniform data where a hierarchy's coarse levels answer
+// from cache. Empty when no cell is sparse.
+std::vector<Point2> SparseQueries(const Dataset& dataset,
+                                  const BoundingBox& box, size_t count,
+                                  uint64_t seed) {
+  const GridGeometry grid(box, kSparseGrid);
+  std::vector<size_t> points(grid.cells(), 0);
+  for (const Point2& p : dataset.points) ++points[grid.CellOf(p)];
+  const double limit =
+      0.1 * static_cast<double>(dataset.points.size()) / grid.cells();
+  std::vector<size_t> sparse;
+  for (size_t c = 0; c < points.size(); ++c) {
+    if (static_cast<double>(points[c]) <= limit) sparse.push_back(c);
+  }
+  std::vector<Point2> queries;
+  if (sparse.empty()) return queries;
+  std::mt19937_64 rng(seed);
+  queries.reserve(count);
+  while (queries.size() < count) {
+    const size_t c = sparse[std::min(
+        sparse.size() - 1,
+        static_cast<size_t>(UnitDouble(rng) *
+                            static_cast<double>(sparse.size())))];
+    const BoundingBox cell = grid.CellBox(static_cast<int>(c % kSparseGrid),
+                                          static_cast<int>(c / kSparseGrid));
+    queries.push_back(Point2{UniformDouble(rng, cell.min_x, cell.max_x),
+                             UniformDouble(rng, cell.min_y, cell.max_y)});
   }
   return queries;
 }
@@ -137,7 +175,9 @@ Status DemDataset(size_t n, Dataset* out) {
 
 // The --scale workloads on one of the datasets.
 std::vector<std::string> WorkloadNames(ScaleData data) {
-  if (data == ScaleData::kClusters) return {"clusters-data", "clusters-raster"};
+  if (data == ScaleData::kClusters) {
+    return {"clusters-data", "clusters-raster", "clusters-sparse"};
+  }
   if (data == ScaleData::kDem) return {"dem-uniform", "dem-raster"};
   std::vector<std::string> names;
   for (WorkloadKind kind : AllWorkloadKinds()) {
@@ -346,6 +386,8 @@ Status RunScale(const ScaleOptions& o, BenchReport* report) {
         workloads.emplace_back("clusters-data",
                                NearPointQueries(dataset, box, count, 4243));
         workloads.emplace_back("clusters-raster", RasterQueries(box, count));
+        workloads.emplace_back("clusters-sparse",
+                               SparseQueries(dataset, box, count, 4245));
       } else if (data == ScaleData::kDem) {
         workloads.emplace_back(
             "dem-uniform",
