@@ -231,6 +231,9 @@ std::vector<uint32_t> HotRegionTuner::KeepStableCells(
   std::vector<uint32_t> kept(fresh.size(), 1);
   std::vector<uint32_t> changing(fresh.size(), 1);
   for (size_t c = 0; c < fresh.size(); ++c) {
+    // A cell that must shrink means the traffic left it: the hot spot
+    // moved, and the fresh plan is the one to build.
+    if (!stable[c] && fresh[c] < levels_[c]) return fresh;
     (stable[c] ? kept : changing)[c] = mixed[c];
   }
   const double left = static_cast<double>(leaf_budget_) - Leaves(kept);

@@ -31,10 +31,11 @@
 // rebuild can run in bounded steps (Plan(), then BuildStep() until it returns
 // true) while the old table serves; the new plan becomes current only when its
 // table is complete. The plan fills kPlanFill of the budget so that kept cells
-// have headroom. When the kept cells leave too little, the cells that change
-// are scaled down to what is left (a hot spot appearing rebuilds its own cells,
-// not the whole table); only a mix that still exceeds the budget falls back to
-// the fresh plan.
+// have headroom. When the kept cells leave too little and every cell that
+// changes grows, those are scaled down to what is left (a hot spot appearing
+// rebuilds its own cells, not the whole table); a cell that must shrink (the
+// hot spot moved), or a mix that still exceeds the budget, falls back to the
+// fresh plan.
 //
 // Thread-safety: not thread-safe; the owner serialises calls.
 
@@ -140,8 +141,8 @@ class HotRegionTuner {
   // The fresh plan, except for cells without a significant change, whose
   // new level is within hysteresis of the current one, or (while the
   // budget allows) that would only shrink. When keeping them leaves too
-  // little budget for the fresh plan's other cells, those are scaled down
-  // to fit; only when even that fails is the fresh plan used whole.
+  // little budget for the fresh plan's other cells and those all grow, they
+  // are scaled down to fit; otherwise the fresh plan is used whole.
   std::vector<uint32_t> KeepStableCells(
       std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
   // The model's expected walk length (up to a constant) under `weight` for
