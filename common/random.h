@@ -10,6 +10,7 @@
 #ifndef LOCATOR_COMMON_RANDOM_H_
 #define LOCATOR_COMMON_RANDOM_H_
 
+#include <cstddef>
 #include <random>
 
 namespace locator {
@@ -23,6 +24,13 @@ inline double UnitDouble(std::mt19937_64& rng) {
 // A double uniform in [lo, hi) (for lo < hi; rounding may reach hi).
 inline double UniformDouble(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * UnitDouble(rng);
+}
+
+// An index uniform in [0, n), for n >= 1: one UnitDouble() draw scaled to n
+// (clamped, as the product may round up to n).
+inline size_t UniformIndex(std::mt19937_64& rng, size_t n) {
+  const auto i = static_cast<size_t>(UnitDouble(rng) * static_cast<double>(n));
+  return i < n ? i : n - 1;
 }
 
 }  // namespace locator

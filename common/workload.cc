@@ -26,9 +26,7 @@ Point2 UniformPoint(std::mt19937_64& rng) {
 
 // One of the three 3-cluster squares, chosen uniformly.
 const Point2& ThreeClusterCorner(std::mt19937_64& rng) {
-  const size_t i =
-      std::min<size_t>(static_cast<size_t>(UnitDouble(rng) * 3), 2);
-  return kThreeClusterCorners[i];
+  return kThreeClusterCorners[UniformIndex(rng, 3)];
 }
 
 }  // namespace

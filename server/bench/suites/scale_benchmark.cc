@@ -72,10 +72,7 @@ std::vector<Point2> NearPointQueries(const Dataset& dataset,
   std::vector<Point2> queries(count);
   const double dx = kNearPoint * box.width(), dy = kNearPoint * box.height();
   for (Point2& q : queries) {
-    const size_t i =
-        std::min(dataset.points.size() - 1,
-                 static_cast<size_t>(UnitDouble(rng) * dataset.points.size()));
-    const Point2 p = dataset.points[i];
+    const Point2 p = dataset.points[UniformIndex(rng, dataset.points.size())];
     q.x = std::clamp(p.x + UniformDouble(rng, -dx, dx), box.min_x, box.max_x);
     q.y = std::clamp(p.y + UniformDouble(rng, -dy, dy), box.min_y, box.max_y);
   }
@@ -107,10 +104,7 @@ std::vector<Point2> SparseQueries(const Dataset& dataset,
   std::mt19937_64 rng(seed);
   queries.reserve(count);
   while (queries.size() < count) {
-    const size_t c = sparse[std::min(
-        sparse.size() - 1,
-        static_cast<size_t>(UnitDouble(rng) *
-                            static_cast<double>(sparse.size())))];
+    const size_t c = sparse[UniformIndex(rng, sparse.size())];
     const BoundingBox cell = grid.CellBox(static_cast<int>(c % kSparseGrid),
                                           static_cast<int>(c / kSparseGrid));
     queries.push_back(Point2{UniformDouble(rng, cell.min_x, cell.max_x),

@@ -44,9 +44,7 @@ Dataset GenerateClusters(size_t n, size_t k, uint64_t seed) {
   Dataset ds;
   ds.points.reserve(n);
   while (ds.points.size() < n) {
-    const size_t pick = std::min(
-        static_cast<size_t>(UnitDouble(rng) * static_cast<double>(k)), k - 1);
-    const Blob& b = blobs[pick];
+    const Blob& b = blobs[UniformIndex(rng, k)];
     // Box-Muller; 1 - u is in (0, 1], so the log is finite.
     const double radius = std::sqrt(-2.0 * std::log(1.0 - UnitDouble(rng)));
     const double angle = 2.0 * std::numbers::pi * UnitDouble(rng);
