@@ -197,12 +197,14 @@ std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
   return significant;
 }
 
+double HotRegionTuner::CellLeaves(size_t c, uint32_t r) const {
+  const size_t n = ShapeOf(c, r).cells();
+  return n > 1 ? static_cast<double>(n) : 0;
+}
+
 double HotRegionTuner::Leaves(const std::vector<uint32_t>& levels) const {
   double sum = 0;
-  for (size_t c = 0; c < levels.size(); ++c) {
-    const size_t n = ShapeOf(c, levels[c]).cells();
-    sum += n > 1 ? static_cast<double>(n) : 0;
-  }
+  for (size_t c = 0; c < levels.size(); ++c) sum += CellLeaves(c, levels[c]);
   return sum;
 }
 
@@ -228,16 +230,14 @@ std::vector<uint32_t> HotRegionTuner::KeepStableCells(
   // The cells that change get what the stable ones leave, in the fresh
   // plan's proportions (levels scale with the square root of the starts),
   // so that a re-tune rebuilds only the cells whose traffic changed.
-  std::vector<uint32_t> kept(fresh.size(), 1);
-  std::vector<uint32_t> changing(fresh.size(), 1);
+  double kept = 0, wanted = 0;
   for (size_t c = 0; c < fresh.size(); ++c) {
     // A cell that must shrink means the traffic left it: the hot spot
     // moved, and the fresh plan is the one to build.
     if (!stable[c] && fresh[c] < levels_[c]) return fresh;
-    (stable[c] ? kept : changing)[c] = mixed[c];
+    (stable[c] ? kept : wanted) += CellLeaves(c, mixed[c]);
   }
-  const double left = static_cast<double>(leaf_budget_) - Leaves(kept);
-  const double wanted = Leaves(changing);
+  const double left = static_cast<double>(leaf_budget_) - kept;
   if (left > 0 && wanted > 0) {
     const double scale = std::sqrt(kPlanFill * left / wanted);
     for (size_t c = 0; c < fresh.size(); ++c) {

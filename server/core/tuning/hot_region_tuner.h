@@ -136,7 +136,9 @@ class HotRegionTuner {
   // significant[c]: cell c's count departs from the share the current
   // table was planned for by more than Poisson noise (all, without a table).
   std::vector<char> SignificantChanges(double total) const;
-  // Sub-grid starts (beyond the coarse cells) that `levels` place.
+  // Sub-grid starts (beyond the coarse cell's own) that level r places in
+  // cell c, and that `levels` place in all cells.
+  double CellLeaves(size_t c, uint32_t r) const;
   double Leaves(const std::vector<uint32_t>& levels) const;
   // The fresh plan, except for cells without a significant change, whose
   // new level is within hysteresis of the current one, or (while the
