@@ -33,9 +33,15 @@ void WriteDem(const std::string& path, const DemFixture& dem) {
   }
   for (int b = 1; b <= dem.bands; ++b) {
     GDALRasterBand* band = out->GetRasterBand(b);
-    if (dem.has_nodata) ASSERT_EQ(band->SetNoDataValue(dem.nodata), CE_None);
-    if (dem.scale != 1) ASSERT_EQ(band->SetScale(dem.scale), CE_None);
-    if (dem.offset != 0) ASSERT_EQ(band->SetOffset(dem.offset), CE_None);
+    if (dem.has_nodata) {
+      ASSERT_EQ(band->SetNoDataValue(dem.nodata), CE_None);
+    }
+    if (dem.scale != 1) {
+      ASSERT_EQ(band->SetScale(dem.scale), CE_None);
+    }
+    if (dem.offset != 0) {
+      ASSERT_EQ(band->SetOffset(dem.offset), CE_None);
+    }
     std::vector<double> values = dem.values;
     for (double& v : values) {
       if (!(dem.has_nodata && v == dem.nodata)) v += 1000.0 * (b - 1);
