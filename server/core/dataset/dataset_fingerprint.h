@@ -10,14 +10,35 @@
 #define LOCATOR_CORE_DATASET_FINGERPRINT_H_
 
 #include <cstdint>
+#include <span>
 
 #include "locator/dataset.h"
+#include "server/core/geometry/xxh3_digest.h"
 
 namespace locator {
 
 // Equal for datasets with equal contents (bit for bit); different, but for
 // a 2^-64 chance, otherwise.
 uint64_t DatasetFingerprint(const Dataset& dataset);
+
+// DatasetFingerprint of a plain point set (no constraints) fed in pieces,
+// for a build that streams its points: Begin the points with their count,
+// add them in order, Begin the values (0 without values), add them, Finish.
+class PointSetFingerprint {
+ public:
+  void Begin(uint64_t count) { digest_.Add(&count, sizeof(count)); }
+  void AddPoints(std::span<const Point2> points) {
+    digest_.Add(points.data(), points.size_bytes());
+  }
+  void AddValues(std::span<const double> values) {
+    digest_.Add(values.data(), values.size_bytes());
+  }
+  // The fingerprint; call once, after the values.
+  uint64_t Finish();
+
+ private:
+  Xxh3Digest digest_;
+};
 
 }  // namespace locator
 

@@ -118,8 +118,12 @@ HullEdges HullEdges::Compute(std::span<const Point2> points, unsigned threads) {
     return LexLess(points[a], points[b]);
   });
 
+  return FromRing(MonotoneChain(points, order, /*strict=*/false));
+}
+
+HullEdges HullEdges::FromRing(std::vector<uint32_t> ring) {
   HullEdges hull;
-  hull.ring_ = MonotoneChain(points, order, /*strict=*/false);
+  hull.ring_ = std::move(ring);
   const size_t h = hull.ring_.size();
   for (size_t k = 0; k < h; ++k) {
     const auto [a, b] = std::minmax(hull.ring_[k], hull.ring_[(k + 1) % h]);
@@ -127,6 +131,13 @@ HullEdges HullEdges::Compute(std::span<const Point2> points, unsigned threads) {
   }
   std::sort(hull.edges_.begin(), hull.edges_.end());
   return hull;
+}
+
+HullEdges HullEdges::Renumbered(std::span<const uint32_t> index) const {
+  std::vector<uint32_t> ring;
+  ring.reserve(ring_.size());
+  for (const uint32_t i : ring_) ring.push_back(index[i]);
+  return FromRing(std::move(ring));
 }
 
 bool HullEdges::Contains(uint32_t a, uint32_t b) const {

@@ -25,6 +25,12 @@ class HullEdges {
   // monotone chain runs on the rest.
   static HullEdges Compute(std::span<const Point2> points, unsigned threads);
 
+  // This hull with every point index i replaced by index[i]: the hull of a
+  // point set computed from a subset that holds every point on its hull
+  // (the out-of-core build's candidates), in the set's own numbering.
+  // Precondition: index has an entry for every index of ring().
+  HullEdges Renumbered(std::span<const uint32_t> index) const;
+
   // Whether a and b are consecutive points along the hull's boundary.
   bool Contains(uint32_t a, uint32_t b) const;
   // The hull's points in counter-clockwise order, each point on its
@@ -32,6 +38,9 @@ class HullEdges {
   const std::vector<uint32_t>& ring() const { return ring_; }
 
  private:
+  // The hull whose points, counter-clockwise, are `ring`.
+  static HullEdges FromRing(std::vector<uint32_t> ring);
+
   std::vector<uint32_t> ring_;
   // (min << 32 | max) of each edge's ends, sorted.
   std::vector<uint64_t> edges_;

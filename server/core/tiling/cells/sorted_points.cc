@@ -56,6 +56,31 @@ class RepeatFinder {
 
 }  // namespace
 
+void AppendDistinct(std::span<const uint64_t> items,
+                    std::span<const Point2> input, const CellGrid& grid,
+                    LargeVector<Point2>* points, LargeVector<uint32_t>* indices,
+                    std::span<uint32_t> cell_sizes) {
+  const size_t n = items.size();
+  RepeatFinder finder(input);
+  std::vector<bool> repeated;
+  for (size_t group = 0; group < n;) {
+    const uint32_t key = static_cast<uint32_t>(items[group] >> 32);
+    size_t end = group + 1;
+    while (end < n && static_cast<uint32_t>(items[end] >> 32) == key) ++end;
+    const bool single = end - group == 1;  // most keys: nothing to merge
+    if (!single) finder.Mark(&items[group], end - group, &repeated);
+    const uint32_t cell = grid.CellOfKey(key);
+    for (size_t k = group; k < end; ++k) {
+      if (!single && repeated[k - group]) continue;
+      const auto index = static_cast<uint32_t>(items[k]);
+      points->push_back(input[index]);
+      indices->push_back(index);
+      ++cell_sizes[cell];
+    }
+    group = end;
+  }
+}
+
 void SortPoints(std::span<const Point2> input, size_t per_cell,
                 unsigned threads, SortedPoints* out) {
   const size_t n = input.size();
@@ -77,24 +102,8 @@ void SortPoints(std::span<const Point2> input, size_t per_cell,
   out->points.reserve(n);
   out->ids.reserve(n);
   out->cell_start.assign(out->grid.num_cells() + 1, 0);
-  RepeatFinder finder(input);
-  std::vector<bool> repeated;
-  for (size_t group = 0; group < n;) {
-    const uint32_t key = static_cast<uint32_t>(items[group] >> 32);
-    size_t end = group + 1;
-    while (end < n && static_cast<uint32_t>(items[end] >> 32) == key) ++end;
-    const bool single = end - group == 1;  // most keys: nothing to merge
-    if (!single) finder.Mark(&items[group], end - group, &repeated);
-    const uint32_t cell = out->grid.CellOfKey(key);
-    for (size_t k = group; k < end; ++k) {
-      if (!single && repeated[k - group]) continue;
-      const auto index = static_cast<uint32_t>(items[k]);
-      out->points.push_back(input[index]);
-      out->ids.push_back(index);
-      ++out->cell_start[cell + 1];
-    }
-    group = end;
-  }
+  AppendDistinct(items, input, out->grid, &out->points, &out->ids,
+                 std::span<uint32_t>(out->cell_start).subspan(1));
   for (size_t c = 1; c < out->cell_start.size(); ++c) {
     out->cell_start[c] += out->cell_start[c - 1];
   }

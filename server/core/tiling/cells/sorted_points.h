@@ -61,6 +61,16 @@ class SortedPointsSource : public CellSource {
   const SortedPoints& s_;
 };
 
+// Appends the distinct points of `input` to *points, and their indices in
+// `input` to *indices, in the order of `items` (FineKey << 32 | index into
+// `input`, sorted), a repeat merged into the first of its key group, and
+// counts each in cell_sizes[its cell] (grid.num_cells() entries): the
+// grouping step of SortPoints, which the out-of-core build runs per bin.
+void AppendDistinct(std::span<const uint64_t> items,
+                    std::span<const Point2> input, const CellGrid& grid,
+                    LargeVector<Point2>* points, LargeVector<uint32_t>* indices,
+                    std::span<uint32_t> cell_sizes);
+
 // Sorts `input` (finite points, at most ServingMesh::kMaxElements of them,
 // not empty) on `threads` threads into *out, with cells holding about
 // `per_cell` points on average.

@@ -1,0 +1,49 @@
+// The manifest of a tile set (manifest.json beside its tile files): what
+// the set is built from, its bounds, fingerprints and statistics, and each
+// tile's file, ranges, bounds and checksum. Every number a reader needs is
+// there, so that a server can route by it without opening the tiles.
+//
+// Thread-safety: plain values and a pure function.
+
+#ifndef LOCATOR_CORE_TILESET_TILESET_MANIFEST_H_
+#define LOCATOR_CORE_TILESET_TILESET_MANIFEST_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "locator/geometry.h"
+#include "server/core/tileset/tile_file.h"
+
+namespace locator {
+
+inline constexpr uint32_t kTileSetManifestVersion = 1;
+
+struct TileSetManifest {
+  struct TileEntry {
+    std::string file;  // relative to the manifest
+    TileFileInfo info;
+    BoundingBox bounds;  // of the tile's own vertices
+  };
+  std::string source;
+  std::string crs;           // WKT; empty when the source has none
+  uint64_t fingerprint = 0;  // DatasetFingerprint of the source
+  uint64_t build_key = 0;
+  uint64_t input_points = 0;
+  uint64_t vertices = 0;
+  bool has_values = false;
+  BoundingBox bounds;
+  int grid_level = 0;
+  // The hull of all vertices, counter-clockwise, as global vertex indices.
+  std::vector<uint32_t> hull;
+  std::vector<TileEntry> tiles;
+  double build_seconds = 0;
+};
+
+// The manifest as JSON text (keys in a fixed order, 64-bit digests as 16
+// hex digits).
+std::string ManifestJson(const TileSetManifest& manifest);
+
+}  // namespace locator
+
+#endif  // LOCATOR_CORE_TILESET_TILESET_MANIFEST_H_
