@@ -55,8 +55,7 @@ std::string TemporaryNameFor(const std::string& path) {
          std::to_string(counter.fetch_add(1));
 }
 
-Status WriteAndSync(const std::string& path,
-                    std::span<const std::string_view> pieces) {
+Status WriteAndSync(const std::string& path, const FileFiller& fill) {
   const int fd =
       ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
@@ -64,13 +63,12 @@ Status WriteAndSync(const std::string& path,
                            ErrorText(errno));
   }
   FdCloser closer{fd};
-  for (const std::string_view bytes : pieces) {
+  RETURN_IF_ERROR(fill([&](std::string_view bytes) {
     const Status status = WriteAll(fd, bytes);
-    if (!status.ok()) {
-      return Status::IOError("cannot write " + Quoted(path) + ": " +
-                             status.message());
-    }
-  }
+    if (status.ok()) return status;
+    return Status::IOError("cannot write " + Quoted(path) + ": " +
+                           status.message());
+  }));
   if (::fsync(fd) != 0) {
     return Status::IOError("cannot fsync " + Quoted(path) + ": " +
                            ErrorText(errno));
@@ -147,8 +145,15 @@ Status WriteFileAtomically(const std::string& path, std::string_view bytes) {
 
 Status WriteFileAtomically(const std::string& path,
                            std::span<const std::string_view> pieces) {
+  return WriteFileAtomically(path, [pieces](const FileAppender& append) {
+    for (const std::string_view bytes : pieces) RETURN_IF_ERROR(append(bytes));
+    return Status::OK();
+  });
+}
+
+Status WriteFileAtomically(const std::string& path, const FileFiller& fill) {
   const std::string temporary = TemporaryNameFor(path);
-  Status status = WriteAndSync(temporary, pieces);
+  Status status = WriteAndSync(temporary, fill);
   if (status.ok() && ::rename(temporary.c_str(), path.c_str()) != 0) {
     status = Status::IOError("cannot rename " + Quoted(temporary) + " to " +
                              Quoted(path) + ": " + ErrorText(errno));

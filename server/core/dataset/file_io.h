@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <string>
@@ -37,6 +38,14 @@ Status WriteFileAtomically(const std::string& path, std::string_view bytes);
 // without first concatenating them in memory).
 Status WriteFileAtomically(const std::string& path,
                            std::span<const std::string_view> pieces);
+
+// As above, the file's bytes being what `fill` appends, in order, through
+// the function it is given (which fails with IOError if a write does):
+// files written from other files without holding them. A failure of
+// `fill` is returned as it is.
+using FileAppender = std::function<Status(std::string_view bytes)>;
+using FileFiller = std::function<Status(const FileAppender& append)>;
+Status WriteFileAtomically(const std::string& path, const FileFiller& fill);
 
 // "DIR/PREFIX<digest as 16 hex digits>SUFFIX": the file in `dir` named by a
 // 64-bit digest (just the name for an empty `dir`; one '/' when `dir` ends

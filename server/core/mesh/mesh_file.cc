@@ -144,70 +144,105 @@ Status CheckHeader(std::string_view bytes, uint64_t fingerprint, Header* h) {
   return Status::OK();
 }
 
+Header HeaderOf(const MeshFileSummary& m) {
+  Header h{};
+  std::memcpy(h.magic, kMagic, sizeof(kMagic));
+  h.version = kMeshFileVersion;
+  h.byte_order = kByteOrderMark;
+  h.fingerprint = m.fingerprint;
+  h.triangles = m.triangles;
+  h.points = m.points;
+  h.values = m.values;
+  h.ids = m.ids;
+  h.hull = m.hull;
+  h.boundary = m.boundary;
+  h.breaklines = m.breaklines;
+  h.edge_sample = m.edge_sample;
+  h.in_domain = m.in_domain;
+  h.input_points = m.input_points;
+  h.digest = m.digest;
+  h.constraints = m.constraints;
+  h.holes = m.holes;
+  h.duplicates_merged = m.duplicates_merged;
+  h.box[0] = m.box.min_x;
+  h.box[1] = m.box.min_y;
+  h.box[2] = m.box.max_x;
+  h.box[3] = m.box.max_y;
+  h.file_bytes = LayoutOf(h).end;
+  return h;
+}
+
 }  // namespace
+
+MeshFileSections MeshFileSectionsOf(const MeshFileSummary& summary) {
+  const Layout l = LayoutOf(HeaderOf(summary));
+  return {l.triangles, l.points,     l.values,      l.ids, l.hull,
+          l.boundary,  l.breaklines, l.edge_sample, l.end};
+}
+
+Status CheckMeshFileCounts(const MeshFileSummary& summary) {
+  return CountsInRange(HeaderOf(summary))
+             ? Status::OK()
+             : Status::InvalidArgument("the mesh is too large for a mesh file");
+}
+
+std::string MeshFileHeader(const MeshFileSummary& summary,
+                           uint64_t payload_checksum) {
+  Header h = HeaderOf(summary);
+  h.payload_checksum = payload_checksum;
+  h.header_checksum = HeaderChecksum(h);
+  return std::string(reinterpret_cast<const char*>(&h), sizeof(h));
+}
 
 Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
                      const BuiltMesh& built) {
   const ServingMesh::Arrays& a = built.mesh->arrays();
   const MeshFacts& facts = built.facts;
-  Header h{};
-  std::memcpy(h.magic, kMagic, sizeof(kMagic));
-  h.version = kMeshFileVersion;
-  h.byte_order = kByteOrderMark;
-  h.fingerprint = fingerprint;
-  h.triangles = a.triangles.size();
-  h.points = a.points.size();
-  h.values = a.values.size();
-  h.ids = a.ids.size();
-  h.hull = a.hull.size();
-  h.boundary = facts.outline.boundary.size();
-  h.breaklines = facts.outline.breaklines.size();
-  h.edge_sample = facts.edge_sample.size();
-  h.in_domain = a.in_domain;
-  h.input_points = a.input_points;
-  h.digest = a.digest;
-  h.constraints = facts.constraints;
-  h.holes = facts.holes;
-  h.duplicates_merged = facts.duplicates_merged;
-  h.box[0] = a.box.min_x;
-  h.box[1] = a.box.min_y;
-  h.box[2] = a.box.max_x;
-  h.box[3] = a.box.max_y;
-  if (!CountsInRange(h)) {
-    return Status::InvalidArgument("the mesh is too large for a mesh file");
-  }
-  const Layout layout = LayoutOf(h);
-  h.file_bytes = layout.end;
+  MeshFileSummary m;
+  m.fingerprint = fingerprint;
+  m.triangles = a.triangles.size();
+  m.points = a.points.size();
+  m.values = a.values.size();
+  m.ids = a.ids.size();
+  m.hull = a.hull.size();
+  m.boundary = facts.outline.boundary.size();
+  m.breaklines = facts.outline.breaklines.size();
+  m.edge_sample = facts.edge_sample.size();
+  m.in_domain = a.in_domain;
+  m.input_points = a.input_points;
+  m.digest = a.digest;
+  m.constraints = facts.constraints;
+  m.holes = facts.holes;
+  m.duplicates_merged = facts.duplicates_merged;
+  m.box = a.box;
+  RETURN_IF_ERROR(CheckMeshFileCounts(m));
+  const MeshFileSections offsets = MeshFileSectionsOf(m);
 
   // The sections with the zero padding before each, in file order.
-  const std::pair<uint64_t, std::string_view> sections[] = {
-      {layout.triangles, BytesOf(a.triangles)},
-      {layout.points, BytesOf(a.points)},
-      {layout.values, BytesOf(a.values)},
-      {layout.ids, BytesOf(a.ids)},
-      {layout.hull, BytesOf(a.hull)},
-      {layout.boundary,
-       BytesOf(std::span<const Segment>(facts.outline.boundary))},
-      {layout.breaklines,
-       BytesOf(std::span<const Segment>(facts.outline.breaklines))},
-      {layout.edge_sample,
-       BytesOf(std::span<const Segment>(facts.edge_sample))},
+  const std::string_view sections[] = {
+      BytesOf(a.triangles),
+      BytesOf(a.points),
+      BytesOf(a.values),
+      BytesOf(a.ids),
+      BytesOf(a.hull),
+      BytesOf(std::span<const Segment>(facts.outline.boundary)),
+      BytesOf(std::span<const Segment>(facts.outline.breaklines)),
+      BytesOf(std::span<const Segment>(facts.edge_sample)),
   };
   static constexpr char kZeros[kSectionAlignment] = {};
   std::vector<std::string_view> pieces = {{}};  // the header, set below
   Xxh3Digest payload_digest;
   uint64_t at = kMeshFileHeaderBytes;
-  for (const auto& [offset, bytes] : sections) {
-    const std::string_view padding(kZeros, offset - at);
+  for (size_t k = 0; k < std::size(sections); ++k) {
+    const std::string_view padding(kZeros, offsets.start[k] - at);
     pieces.push_back(padding);
-    pieces.push_back(bytes);
+    pieces.push_back(sections[k]);
     payload_digest.Add(padding);
-    payload_digest.Add(bytes);
-    at = offset + bytes.size();
+    payload_digest.Add(sections[k]);
+    at = offsets.start[k] + sections[k].size();
   }
-  h.payload_checksum = payload_digest.digest();
-  h.header_checksum = HeaderChecksum(h);
-  pieces[0] = std::string_view(reinterpret_cast<const char*>(&h), sizeof(h));
+  const std::string header = MeshFileHeader(m, payload_digest.digest());
+  pieces[0] = header;
   return WriteFileAtomically(path, pieces);
 }
 

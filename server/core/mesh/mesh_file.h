@@ -79,6 +79,34 @@ struct BuiltMesh {
 Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
                      const BuiltMesh& built);
 
+// What a mesh file's header records, for a writer that streams the large
+// sections from disk instead of holding a mesh (the tile-set build).
+struct MeshFileSummary {
+  uint64_t fingerprint = 0;
+  // Element counts of the sections, in file order.
+  uint64_t triangles = 0, points = 0, values = 0, ids = 0, hull = 0;
+  uint64_t boundary = 0, breaklines = 0, edge_sample = 0;
+  uint64_t in_domain = 0;
+  uint64_t input_points = 0;
+  uint64_t digest = 0;
+  uint64_t constraints = 0, holes = 0, duplicates_merged = 0;
+  BoundingBox box;
+};
+// Where the sections of a file with a summary's counts start (in file
+// order: triangles, points, values, ids, hull, boundary, breaklines, edge
+// sample; zero bytes pad the gaps), and the file's length.
+struct MeshFileSections {
+  uint64_t start[8];
+  uint64_t end;
+};
+MeshFileSections MeshFileSectionsOf(const MeshFileSummary& summary);
+// InvalidArgument if a count is past what a mesh file holds.
+Status CheckMeshFileCounts(const MeshFileSummary& summary);
+// The kMeshFileHeaderBytes header of a file with `summary`, whose bytes
+// after the header have the XXH3-64 digest `payload_checksum`.
+std::string MeshFileHeader(const MeshFileSummary& summary,
+                           uint64_t payload_checksum);
+
 // Checks `bytes` (a whole mesh file) as described above and, if it holds a
 // mesh built for `fingerprint`, points *arrays into `bytes` and fills
 // *facts. InvalidArgument naming the first check that failed.

@@ -24,9 +24,6 @@ constexpr size_t kChunkPoints = size_t{1} << 20;
 // candidates (HullEdges needs three points off one line).
 constexpr size_t kAllCandidates = 16;
 
-std::string InputPointsPath(const std::string& dir) {
-  return dir + "/input.points";
-}
 std::string InputValuesPath(const std::string& dir) {
   return dir + "/input.values";
 }
@@ -123,22 +120,6 @@ Status CountCells(const std::string& dir, BinnedPoints* out,
   return Status::OK();
 }
 
-// The first cell of every bin: ranges of whole cells of at most
-// `bin_points` points (or one cell, if it alone holds more).
-std::vector<uint32_t> CutBins(const std::vector<uint64_t>& cell_points,
-                              size_t bin_points) {
-  std::vector<uint32_t> first_cells{0};
-  uint64_t in_bin = 0;
-  for (uint32_t cell = 0; cell < cell_points.size(); ++cell) {
-    if (in_bin > 0 && in_bin + cell_points[cell] > bin_points) {
-      first_cells.push_back(cell);
-      in_bin = 0;
-    }
-    in_bin += cell_points[cell];
-  }
-  return first_cells;
-}
-
 // Step 3: every point to its bin's files.
 Status Scatter(const std::string& dir, const BinningOptions& options,
                const BinnedPoints& binned,
@@ -191,13 +172,13 @@ Status Scatter(const std::string& dir, const BinningOptions& options,
 }
 
 // The output files of step 4.
-struct VertexFiles {
+struct SortedVertexOutput {
   AppendFile points, ids, values;
 };
 
 // Step 4 for one bin: sorted, repeats merged, appended to the vertex files.
 Status SortBin(const std::string& dir, size_t bin, BinnedPoints* binned,
-               VertexFiles* files) {
+               SortedVertexOutput* files) {
   RandomAccessFile record_file;
   RETURN_IF_ERROR(record_file.Open(BinPath(dir, bin, "records")));
   const size_t count = record_file.size() / sizeof(BinRecord);
@@ -260,6 +241,23 @@ std::string BinnedPointsPath(const std::string& dir) {
   return dir + "/points.bin";
 }
 std::string BinnedIdsPath(const std::string& dir) { return dir + "/ids.bin"; }
+std::string InputPointsPath(const std::string& dir) {
+  return dir + "/input.points";
+}
+
+std::vector<uint32_t> CutCellRanges(std::span<const uint64_t> cell_weights,
+                                    uint64_t max_weight) {
+  std::vector<uint32_t> first_cells{0};
+  uint64_t in_range = 0;
+  for (uint32_t cell = 0; cell < cell_weights.size(); ++cell) {
+    if (in_range > 0 && in_range + cell_weights[cell] > max_weight) {
+      first_cells.push_back(cell);
+      in_range = 0;
+    }
+    in_range += cell_weights[cell];
+  }
+  return first_cells;
+}
 std::string BinnedValuesPath(const std::string& dir) {
   return dir + "/values.bin";
 }
@@ -277,14 +275,13 @@ Status BinPoints(PointStream* stream, const std::string& dir,
   std::vector<uint64_t> cell_points;
   RETURN_IF_ERROR(CountCells(dir, &binned, &cell_points));
   const std::vector<uint32_t> first_cells =
-      CutBins(cell_points, std::max<size_t>(options.bin_points, 1));
+      CutCellRanges(cell_points, std::max<size_t>(options.bin_points, 1));
   binned.bins = first_cells.size();
   RETURN_IF_ERROR(Scatter(dir, options, binned, first_cells));
-  std::remove(InputPointsPath(dir).c_str());
   std::remove(InputValuesPath(dir).c_str());
 
   binned.cell_start.assign(binned.grid.num_cells() + 1, 0);
-  VertexFiles files;
+  SortedVertexOutput files;
   RETURN_IF_ERROR(
       files.points.Create(BinnedPointsPath(dir), options.buffer_bytes));
   RETURN_IF_ERROR(files.ids.Create(BinnedIdsPath(dir), options.buffer_bytes));

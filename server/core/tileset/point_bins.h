@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -59,10 +60,19 @@ struct BinnedPoints {
   size_t bins = 0;
 };
 
+// The first cell of each of the ranges that cut the cells, along the
+// curve, into runs of at most `max_weight` (or one cell, if it alone
+// weighs more): the bins of points (weight: points per cell) or of
+// triangles.
+std::vector<uint32_t> CutCellRanges(std::span<const uint64_t> cell_weights,
+                                    uint64_t max_weight);
+
 // The files BinPoints leaves in `dir`.
 std::string BinnedPointsPath(const std::string& dir);  // "points.bin"
 std::string BinnedIdsPath(const std::string& dir);     // "ids.bin"
 std::string BinnedValuesPath(const std::string& dir);  // "values.bin"
+// The input points as streamed, kept for the mesh's digest.
+std::string InputPointsPath(const std::string& dir);  // "input.points"
 
 // Sorts the points of `stream` into `dir` (an existing directory) as
 // described above, recording `key` (what the source is) in the state.

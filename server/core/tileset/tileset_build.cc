@@ -17,8 +17,10 @@
 #include "common/status_macros.h"
 #include "server/core/dataset/file_io.h"
 #include "server/core/geometry/xxh3_digest.h"
+#include "server/core/mesh/mesh_cache.h"
 #include "server/core/tileset/binary_files.h"
 #include "server/core/tileset/point_bins.h"
+#include "server/core/tileset/tileset_mesh.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/halo_cells.h"
 #include "server/core/tiling/cells/parallel.h"
@@ -33,6 +35,8 @@ namespace {
 constexpr size_t kBinBytesPerPoint = 80;
 constexpr size_t kTileBytesPerPoint = 800;
 constexpr size_t kMinTilePoints = size_t{1} << 15;
+// Bytes per triangle of the mesh assembly's bins sorted in memory.
+constexpr size_t kMeshBytesPerTriangle = 100;
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -265,12 +269,21 @@ Status BuildTileSet(PointStream* stream, const TileSetSource& source,
   for (const Status& s : status) RETURN_IF_ERROR(s);
   stats->tile_seconds = SecondsSince(tiles_start);
 
+  const auto mesh_start = std::chrono::steady_clock::now();
+  report.stage = TileSetProgress::Stage::kMesh;
+  progress(report);
+  m.mesh_file = MeshFilePath("", m.fingerprint);
+  RETURN_IF_ERROR(WriteTileSetMesh(
+      {dir, work, binned, m, options.memory_bytes / kMeshBytesPerTriangle},
+      dir + "/" + m.mesh_file));
+  stats->mesh_seconds = SecondsSince(mesh_start);
+
   m.build_seconds = SecondsSince(start);
   RETURN_IF_ERROR(
       WriteFileAtomically(dir + "/manifest.json", ManifestJson(m) + "\n"));
   for (const std::string& path :
        {BinnedPointsPath(work), BinnedIdsPath(work), BinnedValuesPath(work),
-        work + "/bins.state"}) {
+        InputPointsPath(work), work + "/bins.state"}) {
     std::remove(path.c_str());
   }
   ::rmdir(work.c_str());

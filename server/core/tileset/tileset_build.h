@@ -7,10 +7,12 @@
 // comes from each bin's hull candidates; CutTiles cuts the cells into tiles
 // of about tile_points vertices along the Hilbert curve; each tile is
 // triangulated with a certified halo read from disk (TriangulateTile, as
-// the in-memory tiled build) and written to "tile-NNNNN.tile"; last
-// "manifest.json". The union of the tiles' triangles is exactly the
-// canonical Delaunay triangulation of all the points (the triangles of
-// Triangulation::Build and BuildTiledMesh for the same points).
+// the in-memory tiled build) and written to "tile-NNNNN.tile";
+// WriteTileSetMesh assembles them into the mesh file locatord maps
+// ("mesh-<fingerprint>.mesh", tileset_mesh.h); last "manifest.json". The
+// union of the tiles' triangles is exactly the canonical Delaunay
+// triangulation of all the points, and the mesh file is byte for byte the
+// one a build in memory (Triangulation::Build, BuildTiledMesh) writes.
 //
 // Resumable: the sorted points stay in DIR/work until the manifest is
 // written, and a tile file already there for the same build is kept, so a
@@ -19,8 +21,11 @@
 //
 // Memory: about memory_bytes at the peak (bins of memory_bytes / 80
 // points; tiles of memory_bytes / (800 threads) points unless tile_points
-// says otherwise), plus 4 bytes per grid cell (at most 4^12) and per hull
-// candidate.
+// says otherwise; triangle bins of memory_bytes / 100 triangles), plus 4
+// bytes per grid cell (at most 4^12), per hull candidate and, while the
+// mesh is assembled, per triangle. Disk: the tiles (about 68 bytes per
+// point) and the mesh file (about 76) stay; the work files (about 110 bytes
+// per point at the peak) are removed at the end.
 //
 // Thread-safety: a pure function; it starts and joins its own threads and
 // calls `progress` from them, one call at a time.
@@ -51,7 +56,7 @@ struct TileSetOptions {
 
 // Where a build is, for a progress line.
 struct TileSetProgress {
-  enum class Stage { kBinning, kTiles, kDone };
+  enum class Stage { kBinning, kTiles, kMesh, kDone };
   Stage stage = Stage::kBinning;
   size_t tiles_done = 0;  // written or kept from an earlier run
   size_t tiles = 0;
@@ -65,6 +70,7 @@ struct TileSetStats {
   size_t tiles_reused = 0;
   double bin_seconds = 0;
   double tile_seconds = 0;
+  double mesh_seconds = 0;
 };
 
 // What a build is of: a description that differs whenever the points may

@@ -51,6 +51,7 @@ std::string ManifestJson(const TileSetManifest& m) {
   json.Key("has_values").Bool(m.has_values);
   json.Key("bounds");
   WriteBox(m.bounds, &json);
+  json.Key("mesh_file").String(m.mesh_file);
   json.Key("grid_level").Integer(static_cast<uint64_t>(m.grid_level));
   json.Key("hull").BeginArray();
   for (const uint32_t v : m.hull) json.Integer(v);

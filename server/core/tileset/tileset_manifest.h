@@ -37,6 +37,8 @@ struct TileSetManifest {
   // The hull of all vertices, counter-clockwise, as global vertex indices.
   std::vector<uint32_t> hull;
   std::vector<TileEntry> tiles;
+  // The assembled serving mesh (mesh_file.h), relative to the manifest.
+  std::string mesh_file;
   double build_seconds = 0;
 };
 

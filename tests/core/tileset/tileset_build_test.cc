@@ -21,7 +21,9 @@
 #include "server/core/cgal/triangulation.h"
 #include "server/core/dataset/dataset_fingerprint.h"
 #include "server/core/dataset/file_io.h"
+#include "server/core/mesh/mesh_file.h"
 #include "server/core/tileset/tile_file.h"
+#include "server/core/tiling/tiled_build.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/core/test_datasets.h"
 
@@ -151,6 +153,22 @@ TEST_P(TileSetBuildTest, TilesAreTheGlobalCanonicalTriangulation) {
   }
   std::sort(triangles.begin(), triangles.end());
   EXPECT_EQ(triangles, test::TriangleSet(global->mesh()));
+
+  // The assembled mesh file is the one a build in memory writes, byte for
+  // byte (so its arrays are Triangulation::Build's, tiled_build_test.cc).
+  BuiltMesh in_memory;
+  ASSERT_TRUE(
+      BuildTiledMesh(dataset.points, dataset.values, {}, &in_memory).ok());
+  const std::string expected_path = dir.path() + "/expected.mesh";
+  ASSERT_TRUE(
+      WriteMeshFile(expected_path, manifest.fingerprint, in_memory).ok());
+  std::string expected, assembled;
+  ASSERT_TRUE(ReadWholeFile(expected_path, "mesh", &expected).ok());
+  ASSERT_TRUE(
+      ReadWholeFile(dir.path() + "/" + manifest.mesh_file, "mesh", &assembled)
+          .ok());
+  EXPECT_EQ(assembled.size(), expected.size());
+  EXPECT_TRUE(assembled == expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Datasets, TileSetBuildTest,
