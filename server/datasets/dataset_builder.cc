@@ -7,12 +7,14 @@
 #include <thread>
 #include <utility>
 
+#include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "server/config/server_log.h"
 #include "server/core/mesh/mesh_cache.h"
 #include "server/datasets/build_heartbeat.h"
 #include "server/datasets/dataset_source.h"
 #include "server/datasets/source_key.h"
+#include "server/datasets/tile_set_source.h"
 
 namespace locator {
 namespace {
@@ -129,6 +131,7 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   if (Status status = EngineOptionsFor(slot, &options); !status.ok()) {
     return status;
   }
+  if (IsTileSetSpec(spec)) return MapTileSet(slot, spec, options, built);
   if (MapGenerated(slot, spec, options, built) ||
       MapBySourceKey(slot, spec, options, built)) {
     return Status::OK();
@@ -212,6 +215,30 @@ bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
   LogBuilt(**created, tag);
   *built = *std::move(created);
   return true;
+}
+
+Status DatasetBuilder::MapTileSet(const DatasetSlot& slot,
+                                  const std::string& spec,
+                                  EngineOptions options,
+                                  std::shared_ptr<Engine>* built) {
+  TileSetManifestSummary manifest;
+  RETURN_IF_ERROR(ReadTileSetSpec(spec, &manifest, &options.mesh_cache_dir));
+  if (manifest.mesh_file != MeshFilePath("", manifest.fingerprint)) {
+    return Status::InvalidArgument(spec + ": mesh_file '" + manifest.mesh_file +
+                                   "' is not the fingerprint's mesh file");
+  }
+  LogLine(LogLevel::kInfo, Tag(slot))
+      << "mapping the tile set " << spec << " (" << manifest.source << ", "
+      << manifest.input_points << " points)";
+  DatasetOrigin origin;
+  origin.source = manifest.source;
+  origin.crs = manifest.crs;
+  ASSIGN_OR_RETURN(std::unique_ptr<Engine> engine,
+                   Engine::CreateFromMeshFile(manifest.fingerprint,
+                                              std::move(origin), options));
+  LogBuilt(*engine, Tag(slot));
+  *built = std::move(engine);
+  return Status::OK();
 }
 
 bool DatasetBuilder::MapGenerated(const DatasetSlot& slot,

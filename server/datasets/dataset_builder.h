@@ -70,6 +70,11 @@ class DatasetBuilder {
                uint64_t fingerprint, DatasetOrigin origin,
                const EngineOptions& options, std::string_view how,
                std::shared_ptr<Engine>* built);
+  // The engine of the tile set `spec` names (tile_set_source.h): its mesh
+  // file mapped, outside the point budget (its memory is the page
+  // cache's). The manifest's or the mesh file's error otherwise.
+  Status MapTileSet(const DatasetSlot& slot, const std::string& spec,
+                    EngineOptions options, std::shared_ptr<Engine>* built);
   // With --mesh-cache and a generator spec whose mesh was recorded there:
   // MapMesh without generating the points. False otherwise.
   bool MapGenerated(const DatasetSlot& slot, const std::string& spec,

@@ -1,6 +1,9 @@
 #include "server/core/tileset/tileset_manifest.h"
 
+#include <charconv>
 #include <cstdio>
+#include <system_error>
+#include <utility>
 
 #include "common/json_writer.h"
 
@@ -27,7 +30,114 @@ void WriteRange(uint64_t first, uint64_t end, JsonWriter* json) {
   json->BeginArray().Integer(first).Integer(end).EndArray();
 }
 
+// The value of the top-level member `key` of `text`: the text after
+// "key": (every '"' inside a JsonWriter string is escaped, so the first
+// such run is the member). Empty if there is none.
+std::string_view ValueOf(std::string_view text, std::string_view key) {
+  const std::string pattern = "\"" + std::string(key) + "\":";
+  const size_t at = text.find(pattern);
+  if (at == std::string_view::npos) return {};
+  return text.substr(at + pattern.size());
+}
+
+// Decodes the JSON string at the start of `value` into *out.
+bool ParseString(std::string_view value, std::string* out) {
+  if (value.empty() || value[0] != '"') return false;
+  out->clear();
+  for (size_t k = 1; k < value.size(); ++k) {
+    const char c = value[k];
+    if (c == '"') return true;
+    if (c != '\\') {
+      out->push_back(c);
+      continue;
+    }
+    if (++k == value.size()) return false;
+    switch (value[k]) {
+      case 'n':
+        out->push_back('\n');
+        break;
+      case 't':
+        out->push_back('\t');
+        break;
+      case 'r':
+        out->push_back('\r');
+        break;
+      case 'b':
+        out->push_back('\b');
+        break;
+      case 'f':
+        out->push_back('\f');
+        break;
+      case 'u': {
+        unsigned code = 0;
+        if (k + 4 >= value.size() ||
+            std::sscanf(std::string(value.substr(k + 1, 4)).c_str(), "%4x",
+                        &code) != 1) {
+          return false;
+        }
+        k += 4;
+        if (code < 0x80) {
+          out->push_back(static_cast<char>(code));
+        } else if (code < 0x800) {
+          out->push_back(static_cast<char>(0xc0 | code >> 6));
+          out->push_back(static_cast<char>(0x80 | (code & 0x3f)));
+        } else {
+          out->push_back(static_cast<char>(0xe0 | code >> 12));
+          out->push_back(static_cast<char>(0x80 | (code >> 6 & 0x3f)));
+          out->push_back(static_cast<char>(0x80 | (code & 0x3f)));
+        }
+        break;
+      }
+      default:
+        out->push_back(value[k]);  // '"', '\\', '/'
+    }
+  }
+  return false;
+}
+
+bool ParseUnsigned(std::string_view value, uint64_t* out, int base) {
+  const auto [end, error] =
+      std::from_chars(value.data(), value.data() + value.size(), *out, base);
+  return error == std::errc() && end != value.data();
+}
+
 }  // namespace
+
+Status ParseManifestSummary(std::string_view text, std::string_view name,
+                            TileSetManifestSummary* out) {
+  const auto bad = [&](std::string_view what) {
+    return Status::InvalidArgument(std::string(name) + ": " +
+                                   std::string(what));
+  };
+  std::string format, fingerprint;
+  uint64_t version = 0;
+  if (!ParseString(ValueOf(text, "format"), &format) ||
+      format != "locator-tileset") {
+    return bad("not a locator tile-set manifest (format)");
+  }
+  if (!ParseUnsigned(ValueOf(text, "version"), &version, 10) ||
+      version != kTileSetManifestVersion) {
+    return bad("manifest version is not " +
+               std::to_string(kTileSetManifestVersion));
+  }
+  TileSetManifestSummary s;
+  if (!ParseString(ValueOf(text, "source"), &s.source)) return bad("no source");
+  if (!ParseString(ValueOf(text, "crs"), &s.crs)) return bad("no crs");
+  if (!ParseString(ValueOf(text, "fingerprint"), &fingerprint) ||
+      fingerprint.size() != 16 ||
+      !ParseUnsigned(fingerprint, &s.fingerprint, 16)) {
+    return bad("no fingerprint of 16 hex digits");
+  }
+  if (!ParseUnsigned(ValueOf(text, "input_points"), &s.input_points, 10)) {
+    return bad("no input_points");
+  }
+  if (!ParseString(ValueOf(text, "mesh_file"), &s.mesh_file) ||
+      s.mesh_file.empty() || s.mesh_file.find('/') != std::string::npos) {
+    return bad("no mesh_file (a file name beside the manifest)");
+  }
+  *out = std::move(s);
+  return Status::OK();
+}
 
 std::string ManifestJson(const TileSetManifest& m) {
   uint64_t triangles = 0, halo_points = 0, file_bytes = 0;

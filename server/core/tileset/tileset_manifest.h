@@ -10,9 +10,11 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "locator/geometry.h"
+#include "locator/status.h"
 #include "server/core/tileset/tile_file.h"
 
 namespace locator {
@@ -45,6 +47,22 @@ struct TileSetManifest {
 // The manifest as JSON text (keys in a fixed order, 64-bit digests as 16
 // hex digits).
 std::string ManifestJson(const TileSetManifest& manifest);
+
+// What a server reads of a manifest to serve the tile set.
+struct TileSetManifestSummary {
+  std::string source;
+  std::string crs;
+  uint64_t fingerprint = 0;
+  uint64_t input_points = 0;
+  std::string mesh_file;  // relative to the manifest's directory
+};
+
+// Reads the fields above from manifest text as ManifestJson writes it.
+// InvalidArgument naming `name` and the first field that is missing or
+// malformed (or the format or version that is not this one).
+[[nodiscard]] Status ParseManifestSummary(std::string_view text,
+                                          std::string_view name,
+                                          TileSetManifestSummary* out);
 
 }  // namespace locator
 
