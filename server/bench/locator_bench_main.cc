@@ -7,8 +7,16 @@
 //   locator-bench --build [--sizes 1000000] [--threads 1,2] [--repeats 3]
 //                 [--verify] [--format csv|md]
 //
+//   locator-bench --tiled DIR/manifest.json [--ram-dataset uniform:10000000]
+//                 [--queries 100000]
+//
 // --build times points in memory to a mesh ready to serve: today's CGAL
 // build against the tiled build on each thread count (build_benchmark.h).
+//
+// --tiled serves a tile set locator-build wrote (its mesh file mapped) from
+// a cold page cache: ready time, uniform locates first and warm, a hot
+// region against the same on a dataset in RAM, resident memory
+// (tileset_benchmark.h).
 //
 // --scale runs the workloads of common/workload.h plus `raster` (a row-major
 // grid of queries over the bounding box, in row order) on uniform points,
@@ -40,6 +48,7 @@
 #include "server/bench/suites/build_benchmark.h"
 #include "server/bench/suites/paper_benchmark.h"
 #include "server/bench/suites/scale_benchmark.h"
+#include "server/bench/suites/tileset_benchmark.h"
 
 namespace {
 
@@ -57,6 +66,7 @@ struct BenchRun {
   locator::bench::PaperOptions paper_options;
   locator::bench::ScaleOptions scale_options;
   locator::bench::BuildOptions build_options;
+  locator::bench::TileSetBenchOptions tileset_options;
 };
 
 // Declares the flags on `flags`, into `run`.
@@ -69,6 +79,11 @@ void AddBenchFlags(BenchRun* run, locator::FlagSet* flags) {
              "ns per locate at n = 100K and 1M vs CGAL");
   flags->Add("build", flag::Switch(&run->build),
              "seconds to a mesh ready to serve: CGAL vs tiled (n = 1M)");
+  flags->Add("tiled", flag::Text(&run->tileset_options.manifest),
+             "serving the tile set DIR/manifest.json (locator-build) against "
+             "--ram-dataset in RAM");
+  flags->Add("ram-dataset", flag::Text(&run->tileset_options.ram_dataset),
+             "--tiled: the dataset served in RAM for the hot-region ratio");
   flags->Add("threads", flag::Counts(&run->build_options.threads, 1, 1024),
              "--build: the tiled build's thread counts");
   flags->Add("big", flag::Switch(&run->big), "with --scale: also n = 4M");
@@ -105,6 +120,17 @@ void AddBenchFlags(BenchRun* run, locator::FlagSet* flags) {
              "always run)");
 }
 
+int RunTiled(const BenchRun& run, bool queries_given) {
+  locator::bench::TileSetBenchOptions options = run.tileset_options;
+  if (queries_given) options.queries = run.scale_options.queries;
+  const locator::Status s = locator::bench::RunTileSet(options, std::cout);
+  if (!s.ok()) {
+    std::cerr << kProgram << ": " << s.ToString() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 int RunBuild(const BenchRun& run, bool repeats_given) {
   locator::bench::BuildOptions build = run.build_options;
   if (!run.sizes.empty()) build.sizes = run.sizes;
@@ -124,20 +150,24 @@ int RunBuild(const BenchRun& run, bool repeats_given) {
 int main(int argc, char** argv) {
   BenchRun run;
   locator::FlagSet flags(
-      "Usage: locator-bench --paper|--scale|--build [flags]\n\n"
+      "Usage: locator-bench --paper|--scale|--build|--tiled MANIFEST "
+      "[flags]\n\n"
       "In-process point-location benchmark: figures, not tests.");
   AddBenchFlags(&run, &flags);
   locator::Status parsed = flags.Parse(argc, argv);
   if (parsed.ok() && !flags.help_requested() && !run.paper && !run.scale &&
-      !run.build) {
-    parsed =
-        locator::Status::InvalidArgument("give --paper, --scale or --build");
+      !run.build && run.tileset_options.manifest.empty()) {
+    parsed = locator::Status::InvalidArgument(
+        "give --paper, --scale, --build or --tiled");
   }
   if (std::optional<int> exit_code = locator::ExitCodeForFlags(
           kProgram, parsed, flags.help_requested() ? flags.Help() : "")) {
     return *exit_code;
   }
   if (run.build) return RunBuild(run, flags.Given("repeats"));
+  if (!run.tileset_options.manifest.empty()) {
+    return RunTiled(run, flags.Given("queries"));
+  }
 
   locator::bench::PaperOptions& paper = run.paper_options;
   locator::bench::ScaleOptions& scale = run.scale_options;

@@ -92,18 +92,26 @@ class ProgressPrinter {
   void operator()(const TileSetProgress& p) {
     if (quiet_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (p.stage == TileSetProgress::Stage::kBinning) {
-      std::cerr << "sorting points to disk ..." << std::flush;
-      return;
+    switch (p.stage) {
+      case TileSetProgress::Stage::kBinning:
+        std::cerr << "sorting points to disk ..." << std::flush;
+        return;
+      case TileSetProgress::Stage::kMesh:
+        std::cerr << "\nassembling the serving mesh ..." << std::flush;
+        return;
+      case TileSetProgress::Stage::kDone:
+        std::cerr << " done\n";
+        return;
+      case TileSetProgress::Stage::kTiles:
+        break;
     }
     if (!tiles_started_) {
       tiles_started_ = true;
       tiles_start_ = now;
       points_at_start_ = p.points_done;
       std::cerr << " done\n";
-    }
-    if (p.stage != TileSetProgress::Stage::kDone &&
-        now - last_ < std::chrono::milliseconds(500)) {
+    } else if (p.tiles_done < p.tiles &&
+               now - last_ < std::chrono::milliseconds(500)) {
       return;
     }
     last_ = now;
@@ -114,11 +122,9 @@ class ProgressPrinter {
     const double left = rate > 0 ? (p.points - p.points_done) / rate : 0;
     char line[160];
     std::snprintf(line, sizeof(line),
-                  "\rtiles %zu/%zu  %.1f M points/s  ETA %.0f s   ",
+                  "\rtiles %zu/%zu  %.2f M points/s  ETA %.0f s   ",
                   p.tiles_done, p.tiles, rate / 1e6, left);
-    std::cerr << line;
-    if (p.stage == TileSetProgress::Stage::kDone) std::cerr << "\n";
-    std::cerr << std::flush;
+    std::cerr << line << std::flush;
   }
 
  private:
@@ -178,26 +184,33 @@ int Run(int argc, char** argv) {
     std::cerr << "\n" << kProgram << ": " << status.ToString() << "\n";
     return 1;
   }
-  uint64_t triangles = 0, bytes = 0;
+  uint64_t triangles = 0, tile_bytes = 0;
   for (const TileSetManifest::TileEntry& t : manifest.tiles) {
     triangles += t.info.triangles;
-    bytes += t.info.file_bytes;
+    tile_bytes += t.info.file_bytes;
   }
+  struct stat mesh;
+  const double mesh_bytes =
+      ::stat((f.out + "/" + manifest.mesh_file).c_str(), &mesh) == 0
+          ? static_cast<double>(mesh.st_size)
+          : 0.0;
   struct rusage usage;
   ::getrusage(RUSAGE_SELF, &usage);
+  const double vertices = static_cast<double>(manifest.vertices);
   std::printf(
       "%s: %llu points (%llu distinct), %zu tiles (%zu kept from an earlier "
       "run), %llu triangles\n"
-      "  sort %.1f s (%zu bins%s), tiles %.1f s, total %.1f s; peak memory "
-      "%.2f GB; %.1f bytes per point on disk (%.2f GB)\n",
+      "  sort %.1f s (%zu bins%s), tiles %.1f s, mesh %.1f s, total %.1f s; "
+      "peak memory %.2f GB\n"
+      "  on disk: tiles %.1f bytes per point (%.2f GB), mesh file %s %.1f "
+      "bytes per point (%.2f GB)\n",
       f.out.c_str(), static_cast<unsigned long long>(manifest.input_points),
       static_cast<unsigned long long>(manifest.vertices), manifest.tiles.size(),
       stats.tiles_reused, static_cast<unsigned long long>(triangles),
       stats.bin_seconds, stats.bins, stats.bins_reused ? ", kept" : "",
-      stats.tile_seconds, manifest.build_seconds,
-      usage.ru_maxrss * 1024.0 / 1e9,
-      static_cast<double>(bytes) / static_cast<double>(manifest.vertices),
-      bytes / 1e9);
+      stats.tile_seconds, stats.mesh_seconds, manifest.build_seconds,
+      usage.ru_maxrss * 1024.0 / 1e9, tile_bytes / vertices, tile_bytes / 1e9,
+      manifest.mesh_file.c_str(), mesh_bytes / vertices, mesh_bytes / 1e9);
   return 0;
 }
 

@@ -17,6 +17,7 @@
 #include "common/status_macros.h"
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
+#include "server/bench/process_status.h"
 #include "server/bench/stopwatch.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/mesh/mesh_check.h"
@@ -53,23 +54,12 @@ double CpuSeconds() {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-// A "Vm...:" line of /proc/self/status, in bytes.
-size_t StatusBytes(const std::string& field) {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);) {
-    if (line.rfind(field, 0) == 0) {
-      return std::stoull(line.substr(field.size())) * 1024;
-    }
-  }
-  return 0;
-}
-
 // Returns freed memory to the system and restarts the kernel's peak
 // resident set mark (clear_refs 5); the resident set now.
 size_t StartPeak() {
   malloc_trim(0);
   std::ofstream("/proc/self/clear_refs") << "5";
-  return StatusBytes("VmRSS:");
+  return ProcessStatusBytes("VmRSS:");
 }
 
 Status SetUpStrategy(const ServingMesh& mesh, Sample* sample) {
@@ -90,8 +80,8 @@ Status BuildWithCgal(const Dataset& dataset, Sample* sample) {
   t.reset();  // as the engine does: it serves from the mesh alone
   sample->wall_s = watch.Seconds();
   sample->cpu_s = CpuSeconds() - cpu;
-  sample->peak_bytes_per_point =
-      double(StatusBytes("VmHWM:") - before) / double(dataset.points.size());
+  sample->peak_bytes_per_point = double(ProcessStatusBytes("VmHWM:") - before) /
+                                 double(dataset.points.size());
   return SetUpStrategy(*sample->mesh, sample);
 }
 
@@ -106,8 +96,8 @@ Status BuildInTiles(const Dataset& dataset, unsigned threads, Sample* sample) {
                                  &built, &sample->phases));
   sample->wall_s = watch.Seconds();
   sample->cpu_s = CpuSeconds() - cpu;
-  sample->peak_bytes_per_point =
-      double(StatusBytes("VmHWM:") - before) / double(dataset.points.size());
+  sample->peak_bytes_per_point = double(ProcessStatusBytes("VmHWM:") - before) /
+                                 double(dataset.points.size());
   sample->mesh = built.mesh;
   RETURN_IF_ERROR(SetUpStrategy(*sample->mesh, sample));
   // The published path: what locatord does with these points.

@@ -206,7 +206,7 @@ MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
 }
 
 Status MappedFile::Open(const std::string& path, std::string_view what,
-                        MappedFile* out) {
+                        MappedFile* out, Pages pages) {
   OpenedFile file;
   RETURN_IF_ERROR(OpenRegularFile(path, what, &file));
   const std::string& name = file.name;
@@ -214,8 +214,8 @@ Status MappedFile::Open(const std::string& path, std::string_view what,
   const uint64_t file_size = file.size;
   if (file_size == 0) return Status::IOError(name + " is empty");
   const size_t size = static_cast<size_t>(file_size);
-  void* data =
-      ::mmap(nullptr, size, PROT_READ, MAP_SHARED | MAP_POPULATE, fd, 0);
+  const int populate = pages == Pages::kAtOnce ? MAP_POPULATE : 0;
+  void* data = ::mmap(nullptr, size, PROT_READ, MAP_SHARED | populate, fd, 0);
   if (data == MAP_FAILED) {
     return Status::IOError("cannot map " + name + ": " + ErrorText(errno));
   }

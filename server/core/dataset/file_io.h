@@ -62,11 +62,16 @@ class MappedFile {
   MappedFile(MappedFile&& other) noexcept;
   MappedFile& operator=(MappedFile&& other) noexcept;
 
-  // Maps `path`, reading its pages in at once (MAP_POPULATE). `what` names
-  // the file in messages. NotFound if it does not exist; IOError otherwise
-  // (not a regular file, empty, mmap failed).
+  // How a mapping's pages come in.
+  enum class Pages {
+    kAtOnce,    // read in at once (MAP_POPULATE): the file is read anyway
+    kOnDemand,  // as they are touched: files larger than RAM
+  };
+
+  // Maps `path`. `what` names the file in messages. NotFound if it does not
+  // exist; IOError otherwise (not a regular file, empty, mmap failed).
   static Status Open(const std::string& path, std::string_view what,
-                     MappedFile* out);
+                     MappedFile* out, Pages pages = Pages::kAtOnce);
 
   std::string_view bytes() const {
     return {static_cast<const char*>(data_), size_};

@@ -1,7 +1,10 @@
 #include "server/core/mesh/mesh_file.h"
 
+#include <sys/stat.h>
+
 #include <bit>
 #include <cstring>
+#include <ctime>
 #include <span>
 #include <utility>
 
@@ -246,12 +249,16 @@ Status WriteMeshFile(const std::string& path, uint64_t fingerprint,
   return WriteFileAtomically(path, pieces);
 }
 
-Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
-                      ServingMesh::Arrays* arrays, MeshFacts* facts) {
+namespace {
+
+// DecodeMeshFile; with `contents` false, of a file checked before (see
+// MapMeshFile): the header and layout only, not a byte of the sections.
+Status Decode(std::string_view bytes, uint64_t fingerprint, bool contents,
+              ServingMesh::Arrays* arrays, MeshFacts* facts) {
   Header h;
   RETURN_IF_ERROR(CheckHeader(bytes, fingerprint, &h));
   const std::string_view payload = bytes.substr(kMeshFileHeaderBytes);
-  if (Xxh3Of(payload) != h.payload_checksum) {
+  if (contents && Xxh3Of(payload) != h.payload_checksum) {
     return Unusable("checksum mismatch (corrupt contents)");
   }
   const Layout l = LayoutOf(h);
@@ -279,12 +286,14 @@ Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
   f.outline.boundary = segments(l.boundary, h.boundary);
   f.outline.breaklines = segments(l.breaklines, h.breaklines);
   f.edge_sample = segments(l.edge_sample, h.edge_sample);
-  if (Status s = CheckMeshArrays(a); !s.ok()) return Unusable(s.message());
-  for (const auto* list :
-       {&f.outline.boundary, &f.outline.breaklines, &f.edge_sample}) {
-    for (const Segment& segment : *list) {
-      if (!IsFinite(segment[0]) || !IsFinite(segment[1])) {
-        return Unusable("a drawing segment has a non-finite coordinate");
+  if (contents) {
+    if (Status s = CheckMeshArrays(a); !s.ok()) return Unusable(s.message());
+    for (const auto* list :
+         {&f.outline.boundary, &f.outline.breaklines, &f.edge_sample}) {
+      for (const Segment& segment : *list) {
+        if (!IsFinite(segment[0]) || !IsFinite(segment[1])) {
+          return Unusable("a drawing segment has a non-finite coordinate");
+        }
       }
     }
   }
@@ -293,7 +302,25 @@ Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
   return Status::OK();
 }
 
-namespace {
+// The stamp of a checked file: what identifies its bytes on this host.
+std::string StampOf(const struct stat& st) {
+  const uint64_t fields[] = {static_cast<uint64_t>(st.st_dev),
+                             static_cast<uint64_t>(st.st_ino),
+                             static_cast<uint64_t>(st.st_size),
+                             static_cast<uint64_t>(st.st_mtim.tv_sec),
+                             static_cast<uint64_t>(st.st_mtim.tv_nsec)};
+  return "locmesh checked " + std::to_string(kMeshFileVersion) + " " +
+         std::string(reinterpret_cast<const char*>(fields), sizeof(fields));
+}
+
+std::string StampPath(const std::string& path) { return path + ".checked"; }
+
+// Whether the stamp beside `path` describes the file `st` describes.
+bool Stamped(const std::string& path, const struct stat& st) {
+  std::string stamp;
+  return ReadWholeFile(StampPath(path), "stamp", &stamp, 256).ok() &&
+         stamp == StampOf(st);
+}
 
 // A mapped mesh file backing a mesh's arrays.
 class MappedStorage : public ServingMesh::Storage {
@@ -304,12 +331,29 @@ class MappedStorage : public ServingMesh::Storage {
 
 }  // namespace
 
+Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
+                      ServingMesh::Arrays* arrays, MeshFacts* facts) {
+  return Decode(bytes, fingerprint, /*contents=*/true, arrays, facts);
+}
+
 StatusOr<BuiltMesh> MapMeshFile(const std::string& path, uint64_t fingerprint) {
+  struct stat before;
+  const bool known = ::stat(path.c_str(), &before) == 0;
+  const bool checked = known && Stamped(path, before);
   MappedFile file;
-  RETURN_IF_ERROR(MappedFile::Open(path, "mesh file", &file));
+  RETURN_IF_ERROR(MappedFile::Open(
+      path, "mesh file", &file,
+      checked ? MappedFile::Pages::kOnDemand : MappedFile::Pages::kAtOnce));
   ServingMesh::Arrays arrays;
   MeshFacts facts;
-  RETURN_IF_ERROR(DecodeMeshFile(file.bytes(), fingerprint, &arrays, &facts));
+  RETURN_IF_ERROR(Decode(file.bytes(), fingerprint, !checked, &arrays, &facts));
+  struct stat after;
+  if (!checked && known && ::stat(path.c_str(), &after) == 0 &&
+      StampOf(after) == StampOf(before) &&
+      ::time(nullptr) > after.st_mtim.tv_sec + 1) {
+    // Best effort: without a stamp the next map checks the file again.
+    (void)WriteFileAtomically(StampPath(path), StampOf(after));
+  }
   BuiltMesh built;
   built.mesh = std::make_shared<const ServingMesh>(
       std::make_unique<MappedStorage>(std::move(file)), arrays);

@@ -116,6 +116,15 @@ Status DecodeMeshFile(std::string_view bytes, uint64_t fingerprint,
 // Maps the mesh file at `path` (shared with every process mapping it) and
 // decodes it; the mesh keeps the mapping. NotFound if there is no file;
 // IOError if it cannot be mapped; InvalidArgument as DecodeMeshFile.
+//
+// Checked once: the first map reads the whole file and checks all of it
+// (DecodeMeshFile), then records that in a stamp beside it,
+// "<path>.checked": the file's device, inode, size and modification time.
+// A later map of the file the stamp describes checks its header and layout
+// only and leaves its pages to be read as queries touch them, so that a
+// restart of a mesh far larger than RAM is ready at once. A file is
+// stamped only once its modification time is a second old, so that any
+// later write gives it another one.
 StatusOr<BuiltMesh> MapMeshFile(const std::string& path, uint64_t fingerprint);
 
 }  // namespace locator

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -301,6 +302,37 @@ INSTANTIATE_TEST_SUITE_P(Rows, BadMeshFileTest, ::testing::ValuesIn(kBadFiles),
                          [](const ::testing::TestParamInfo<BadFile>& info) {
                            return info.param.name;
                          });
+
+// MapMeshFile checks a file once: the first map reads all of it and stamps
+// it, later maps of the same file check the header only; a file written
+// since is checked again.
+TEST_F(MeshFileTest, ACheckedFileIsStampedAndLaterMapsReadOnlyItsHeader) {
+  namespace fs = std::filesystem;
+  const std::string stamp = first_.path + ".checked";
+  ASSERT_TRUE(MapMeshFile(first_.path, fingerprint_).ok());
+  // Written within the last second: a later write could keep its time.
+  EXPECT_FALSE(fs::exists(stamp));
+
+  const auto aged = fs::last_write_time(first_.path) - std::chrono::seconds(10);
+  fs::last_write_time(first_.path, aged);
+  ASSERT_TRUE(MapMeshFile(first_.path, fingerprint_).ok());
+  EXPECT_TRUE(fs::exists(stamp));
+
+  // Spoiled in place with its time put back, the file is what the stamp
+  // describes: its contents are not read, its header still is.
+  std::string bytes = ReadMeshBytes(first_.path);
+  bytes.back() ^= 1;
+  WriteMeshBytes(first_.path, bytes);
+  fs::last_write_time(first_.path, aged);
+  EXPECT_TRUE(MapMeshFile(first_.path, fingerprint_).ok());
+  EXPECT_THAT(MapMeshFile(first_.path, fingerprint_ + 1).status().message(),
+              HasSubstr("made for another dataset"));
+
+  // Written again (a new time): checked whole, and the damage found.
+  fs::last_write_time(first_.path, aged + std::chrono::seconds(1));
+  EXPECT_THAT(MapMeshFile(first_.path, fingerprint_).status().message(),
+              HasSubstr("checksum mismatch (corrupt contents)"));
+}
 
 TEST_F(MeshFileTest, ADirectoryInPlaceOfTheFileIsIgnoredAndNotOverwritten) {
   std::filesystem::remove(first_.path);
