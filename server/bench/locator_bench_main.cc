@@ -7,15 +7,14 @@
 //   locator-bench --build [--sizes 1000000] [--threads 1,2] [--repeats 3]
 //                 [--verify] [--format csv|md]
 //
-//   locator-bench --tiled DIR/manifest.json [--ram-dataset uniform:10000000]
-//                 [--queries 100000]
+//   locator-bench --tiled DIR/manifest.json [--queries 100000]
 //
 // --build times points in memory to a mesh ready to serve: today's CGAL
 // build against the tiled build on each thread count (build_benchmark.h).
 //
 // --tiled serves a tile set locator-build wrote (its mesh file mapped) from
 // a cold page cache: ready time, uniform locates first and warm, a hot
-// region against the same on a dataset in RAM, resident memory
+// region against the same region in RAM, resident memory
 // (tileset_benchmark.h).
 //
 // --scale runs the workloads of common/workload.h plus `raster` (a row-major
@@ -80,10 +79,8 @@ void AddBenchFlags(BenchRun* run, locator::FlagSet* flags) {
   flags->Add("build", flag::Switch(&run->build),
              "seconds to a mesh ready to serve: CGAL vs tiled (n = 1M)");
   flags->Add("tiled", flag::Text(&run->tileset_options.manifest),
-             "serving the tile set DIR/manifest.json (locator-build) against "
-             "--ram-dataset in RAM");
-  flags->Add("ram-dataset", flag::Text(&run->tileset_options.ram_dataset),
-             "--tiled: the dataset served in RAM for the hot-region ratio");
+             "serving the tile set DIR/manifest.json (locator-build); its hot "
+             "region against the same region in RAM");
   flags->Add("threads", flag::Counts(&run->build_options.threads, 1, 1024),
              "--build: the tiled build's thread counts");
   flags->Add("big", flag::Switch(&run->big), "with --scale: also n = 4M");
@@ -101,7 +98,8 @@ void AddBenchFlags(BenchRun* run, locator::FlagSet* flags) {
              "--paper on a non-Delaunay kind");
   flags->Add("verify", flag::Switch(&run->verify),
              "--paper: check every answer against CGAL's locate(); --build: "
-             "check the tiled mesh is the CGAL build's and canonical");
+             "check the tiled mesh is the CGAL build's and canonical; --tiled: "
+             "check the tile set against its source built in memory");
   flags->Add("sizes", flag::Counts(&run->sizes, 1, flag::kMaxOf<uint32_t>),
              "n values (default: the mode's own)");
   flags->Add("budget",
@@ -123,6 +121,8 @@ void AddBenchFlags(BenchRun* run, locator::FlagSet* flags) {
 int RunTiled(const BenchRun& run, bool queries_given) {
   locator::bench::TileSetBenchOptions options = run.tileset_options;
   if (queries_given) options.queries = run.scale_options.queries;
+  options.tuning = run.paper_options.tuning;
+  options.verify = run.verify;
   const locator::Status s = locator::bench::RunTileSet(options, std::cout);
   if (!s.ok()) {
     std::cerr << kProgram << ": " << s.ToString() << "\n";

@@ -15,8 +15,12 @@
 #include "server/bench/process_status.h"
 #include "server/bench/stopwatch.h"
 #include "server/core/dataset/file_io.h"
+#include "server/core/dataset/generated_points.h"
 #include "server/core/mesh/mesh_cache.h"
+#include "server/core/mesh/mesh_check.h"
+#include "server/core/mesh/mesh_file.h"
 #include "server/core/tileset/tileset_manifest.h"
+#include "server/core/tiling/tiled_build.h"
 
 namespace locator::bench {
 namespace {
@@ -46,13 +50,38 @@ StatusOr<double> NsPerLocate(const Engine& engine,
   return watch.Seconds() * 1e9 / static_cast<double>(queries.size());
 }
 
-// Untimed hot-region queries for the tuner, then the timed ones.
-StatusOr<double> HotRegionNs(const Engine& engine, size_t count) {
-  const BoundingBox& box = engine.dataset_info().bounding_box;
+// Untimed hot-region queries (the 1-cluster workload over `box`) for the
+// tuner, then the timed ones.
+StatusOr<double> HotRegionNs(const Engine& engine, const BoundingBox& box,
+                             size_t count) {
   RETURN_IF_ERROR(
       NsPerLocate(engine, Queries(WorkloadKind::kOneCluster, box, count, 1))
           .status());
   return NsPerLocate(engine, Queries(WorkloadKind::kOneCluster, box, count, 2));
+}
+
+// The points of the generator spec `source` in the part of `box` around
+// the 1-cluster square (its middle 0.08 x 0.08: the square and as much
+// again around it), streamed, for the same region in RAM.
+StatusOr<Dataset> HotRegionPoints(const std::string& source,
+                                  const BoundingBox& box) {
+  ASSIGN_OR_RETURN(const GeneratorSpec spec, ParseGeneratorSpec(source));
+  const auto at = [](double lo, double hi, double f) {
+    return lo + (hi - lo) * f;
+  };
+  const BoundingBox region{
+      at(box.min_x, box.max_x, 0.46), at(box.min_y, box.max_y, 0.46),
+      at(box.min_x, box.max_x, 0.54), at(box.min_y, box.max_y, 0.54)};
+  Dataset dataset;
+  GeneratedPoints points(spec);
+  for (size_t i = 0; i < spec.n; ++i) {
+    const Point2 p = points.Next();
+    if (p.x >= region.min_x && p.x <= region.max_x && p.y >= region.min_y &&
+        p.y <= region.max_y) {
+      dataset.points.push_back(p);
+    }
+  }
+  return dataset;
 }
 
 class Table {
@@ -79,6 +108,48 @@ class Table {
   std::ostream& out_;
 };
 
+// The tile set's engine against one built in memory from its source (a
+// generator), on `count` uniform queries: answers that differ (type,
+// triangle, vertices), and whether the mesh arrays are the same bytes.
+Status VerifyAgainstMemory(const Engine& tiled, const std::string& mesh_path,
+                           const TileSetManifestSummary& manifest, size_t count,
+                           Table* table) {
+  ASSIGN_OR_RETURN(
+      Dataset dataset,
+      LoadDataset(manifest.source, DatasetLimits{ServingMesh::kMaxElements}));
+  BuiltMesh built;
+  TiledBuildOptions build;
+  build.threads = 2;
+  RETURN_IF_ERROR(
+      BuildTiledMesh(dataset.points, dataset.values, build, &built));
+  ASSIGN_OR_RETURN(const BuiltMesh mapped,
+                   MapMeshFile(mesh_path, manifest.fingerprint));
+  const Status same =
+      CompareMeshArrays(mapped.mesh->arrays(), built.mesh->arrays());
+  table->Row("verify: mesh arrays identical to the build in memory (1 = yes)",
+             same.ok() ? 1 : 0, "");
+  ASSIGN_OR_RETURN(std::unique_ptr<Engine> in_memory,
+                   Engine::Create(std::move(dataset), EngineOptions()));
+  const std::vector<Point2> queries = Queries(
+      WorkloadKind::kUniform, tiled.dataset_info().bounding_box, count, 4);
+  std::vector<LocateResult> got, want;
+  RETURN_IF_ERROR(tiled.LocateBatch(queries, &got));
+  RETURN_IF_ERROR(in_memory->LocateBatch(queries, &want));
+  size_t differ = 0;
+  for (size_t k = 0; k < queries.size(); ++k) {
+    differ += got[k].type != want[k].type ||
+              got[k].triangle_id != want[k].triangle_id ||
+              got[k].vertex_ids != want[k].vertex_ids;
+  }
+  table->Row("verify: uniform queries", static_cast<double>(count), "");
+  table->Row("verify: answers that differ", static_cast<double>(differ), "");
+  return same.ok() && differ == 0
+             ? Status::OK()
+             : Status::Internal(
+                   "the tile set differs from the build in "
+                   "memory");
+}
+
 }  // namespace
 
 Status RunTileSet(const TileSetBenchOptions& options, std::ostream& out) {
@@ -93,40 +164,67 @@ Status RunTileSet(const TileSetBenchOptions& options, std::ostream& out) {
       MeshFilePath(engine_options.mesh_cache_dir, manifest.fingerprint);
 
   Table table(out);
+  // Ready as locatord is: the tuner on its own thread, the engine serving
+  // while the first table is built.
   DropFromPageCache(mesh_path);
-  Stopwatch watch;
   DatasetOrigin origin;
   origin.source = manifest.source;
+  engine_options.tuning = options.tuning;
+  engine_options.tuning.background = true;
+  Stopwatch watch;
   ASSIGN_OR_RETURN(
       std::unique_ptr<Engine> tiled,
       Engine::CreateFromMeshFile(manifest.fingerprint, origin, engine_options));
   table.Row("tile set: cold page cache to ready", watch.Seconds(), "s");
   table.Row("tile set: points", manifest.input_points / 1e6, "M");
   table.Memory("mapping");
+  tiled.reset();
+  // Measured as locator-bench --scale measures: the tuner in the query
+  // path, its first table built before the first query.
+  engine_options.tuning.background = false;
+  watch.Restart();
+  ASSIGN_OR_RETURN(tiled, Engine::CreateFromMeshFile(manifest.fingerprint,
+                                                     origin, engine_options));
+  table.Row("tile set: ready with the first table built", watch.Seconds(), "s");
+  table.Memory("the first table");
+  if (options.verify) {
+    RETURN_IF_ERROR(VerifyAgainstMemory(*tiled, mesh_path, manifest,
+                                        options.verify_queries, &table));
+  }
 
+  // The hot region first, as a server that has just started sees it.
   const BoundingBox& box = tiled->dataset_info().bounding_box;
+  ASSIGN_OR_RETURN(const double hot, HotRegionNs(*tiled, box, options.queries));
+  table.Row("tile set: hot region (1-cluster)", hot, "ns/locate");
+  table.Row("tile set: hot region, faces per locate",
+            tiled->Stats().mean_cost_recent, "");
+  table.Memory("the hot region");
   const std::vector<Point2> uniform =
       Queries(WorkloadKind::kUniform, box, options.queries, 3);
   ASSIGN_OR_RETURN(const double first, NsPerLocate(*tiled, uniform));
   table.Row("tile set: uniform, first pass", first, "ns/locate");
   ASSIGN_OR_RETURN(const double second, NsPerLocate(*tiled, uniform));
   table.Row("tile set: uniform, second pass (warm)", second, "ns/locate");
-  ASSIGN_OR_RETURN(const double hot, HotRegionNs(*tiled, options.queries));
-  table.Row("tile set: hot region (1-cluster)", hot, "ns/locate");
-  table.Memory("the tile set's queries");
+  table.Memory("the uniform passes");
   tiled.reset();
 
-  ASSIGN_OR_RETURN(
-      Dataset dataset,
-      LoadDataset(options.ram_dataset, DatasetLimits{size_t{1} << 31}));
+  // The same region in RAM: its points (and as many around them) built in
+  // memory, the same queries.
+  const Stopwatch region_watch;
+  ASSIGN_OR_RETURN(Dataset region, HotRegionPoints(manifest.source, box));
+  const size_t region_points = region.points.size();
+  EngineOptions in_ram_options;
+  in_ram_options.tuning = options.tuning;
   ASSIGN_OR_RETURN(std::unique_ptr<Engine> in_ram,
-                   Engine::Create(std::move(dataset), EngineOptions()));
-  ASSIGN_OR_RETURN(const double ram_hot, HotRegionNs(*in_ram, options.queries));
-  table.Row(
-      ("in RAM (" + options.ram_dataset + "): hot region (1-cluster)").c_str(),
-      ram_hot, "ns/locate");
+                   Engine::Create(std::move(region), in_ram_options));
+  table.Row("in RAM: the hot region's points", region_points / 1e6, "M");
+  ASSIGN_OR_RETURN(const double ram_hot,
+                   HotRegionNs(*in_ram, box, options.queries));
+  table.Row("in RAM: hot region (1-cluster)", ram_hot, "ns/locate");
+  table.Row("in RAM: hot region, faces per locate",
+            in_ram->Stats().mean_cost_recent, "");
   table.Row("hot region: tile set / in RAM", hot / ram_hot, "x");
-  table.Memory("the in-RAM dataset's queries");
+  table.Memory("the region in RAM");
   return Status::OK();
 }
 
