@@ -18,6 +18,7 @@
 #include "server/core/mesh/radix_sort.h"
 #include "server/core/tileset/binary_files.h"
 #include "server/core/tileset/tileset_vertices.h"
+#include "server/core/tiling/open_edges.h"
 
 namespace locator {
 namespace {
@@ -34,14 +35,6 @@ struct BinnedTriangle {
   MeshTriangle t;
 };
 static_assert(sizeof(BinnedTriangle) == 32);
-
-// An edge no tile closed: edge `edge` of triangle `number`.
-struct OpenEdge {
-  uint64_t ends;  // smaller vertex << 32 | larger vertex
-  uint32_t number;
-  uint32_t edge;
-  uint32_t start, end;
-};
 
 uint64_t FaceEdge(uint32_t number, uint32_t edge) {
   return uint64_t{number} << 2 | edge;
@@ -72,7 +65,8 @@ class MeshAssembler {
   std::vector<uint32_t> first_cells_;  // of the triangle bins
   uint64_t faces_ = 0;
   uint32_t next_position_ = 0;
-  std::vector<OpenEdge> open_;
+  // The edges the tiles left open, then the hull's in ring order.
+  std::vector<OpenEdge> open_, ring_;
   // (FaceEdge, neighbour number) of edges closed across tiles, and
   // (FaceEdge, position in the hull ring) of hull edges; sorted.
   std::vector<std::pair<uint64_t, uint32_t>> across_, hull_at_;
@@ -116,11 +110,8 @@ Status MeshAssembler::BinTriangles() {
       }
       for (uint32_t i = 0; i < 3; ++i) {
         if (out.t.neighbor[i] != kOpen) continue;
-        const uint32_t start = out.t.corner[Ccw(static_cast<int>(i))];
-        const uint32_t end = out.t.corner[Cw(static_cast<int>(i))];
-        open_.push_back(
-            {uint64_t{std::min(start, end)} << 32 | std::max(start, end),
-             out.number, i, start, end});
+        open_.push_back({out.number, i, out.t.corner[Ccw(static_cast<int>(i))],
+                         out.t.corner[Cw(static_cast<int>(i))]});
       }
       out.key = ServingMesh::CentroidKey(
           tile.Point(out.t.corner[0]), tile.Point(out.t.corner[1]),
@@ -138,34 +129,18 @@ Status MeshAssembler::BinTriangles() {
 }
 
 Status MeshAssembler::MatchOpenEdges() {
-  std::sort(open_.begin(), open_.end(),
-            [](const OpenEdge& x, const OpenEdge& y) {
-              return std::tie(x.ends, x.number, x.edge) <
-                     std::tie(y.ends, y.number, y.edge);
-            });
-  std::vector<OpenEdge> hull;
-  for (size_t k = 0; k < open_.size();) {
-    const OpenEdge& e = open_[k];
-    const std::string name = "tile set: edge " + std::to_string(e.ends >> 32) +
-                             "-" + std::to_string(e.ends & 0xffffffffu);
-    if (k + 2 < open_.size() && open_[k + 2].ends == e.ends) {
-      return Status::Internal(name + " borders more than two triangles");
-    }
-    if (k + 1 == open_.size() || open_[k + 1].ends != e.ends) {
-      hull.push_back(e);
-      ++k;
-      continue;
-    }
-    const OpenEdge& g = open_[k + 1];
-    if (e.start != g.end) {
-      return Status::Internal(name + ": its two triangles overlap");
-    }
-    across_.push_back({FaceEdge(e.number, e.edge), g.number});
-    across_.push_back({FaceEdge(g.number, g.edge), e.number});
-    k += 2;
+  std::vector<std::array<OpenEdge, 2>> pairs;
+  RETURN_IF_ERROR(locator::MatchOpenEdges(
+      "tile set", std::move(open_),
+      [this](uint32_t vertex, uint32_t* id) {
+        return vertices_.ReadId(vertex, id);
+      },
+      &pairs, &ring_));
+  for (const auto& [e, g] : pairs) {
+    across_.push_back({FaceEdge(e.face, e.edge), g.face});
+    across_.push_back({FaceEdge(g.face, g.edge), e.face});
   }
   std::sort(across_.begin(), across_.end());
-  open_ = std::move(hull);
   return Status::OK();
 }
 
@@ -214,59 +189,15 @@ Status MeshAssembler::SortBin(size_t bin) {
 }
 
 Status MeshAssembler::LinkHull() {
-  const size_t h = open_.size();
-  // (end vertex, index in open_), to find the edge that ends where one
-  // starts; the ring starts at the edge ending at the smallest public id.
-  std::vector<std::pair<uint32_t, uint32_t>> by_end(h);
-  size_t start = 0;
-  uint32_t start_id = 0;
-  for (size_t k = 0; k < h; ++k) {
-    by_end[k] = {open_[k].end, static_cast<uint32_t>(k)};
-    uint32_t id;
-    RETURN_IF_ERROR(vertices_.ReadId(open_[k].end, &id));
-    if (k == 0 || id < start_id) {
-      start = k;
-      start_id = id;
-    }
-  }
-  std::sort(by_end.begin(), by_end.end());
-  for (size_t k = 1; k < h; ++k) {
-    if (by_end[k].first == by_end[k - 1].first) {
-      return Status::Internal("tile set: hull vertex " +
-                              std::to_string(by_end[k].first) +
-                              " ends two hull edges");
-    }
-  }
-  size_t k = start;
-  for (size_t n = 0; n < h; ++n) {
-    if (n > 0 && k == start) {
-      return Status::Internal("tile set: the hull is more than one ring");
-    }
-    const OpenEdge& e = open_[k];
-    hull_at_.push_back({FaceEdge(e.number, e.edge), static_cast<uint32_t>(n)});
+  for (size_t n = 0; n < ring_.size(); ++n) {
+    const OpenEdge& e = ring_[n];
+    hull_at_.push_back({FaceEdge(e.face, e.edge), static_cast<uint32_t>(n)});
     hull_.push_back(
-        ServingMesh::Edge(position_[e.number], static_cast<int>(e.edge)));
-    const auto next =
-        std::lower_bound(by_end.begin(), by_end.end(),
-                         std::pair<uint32_t, uint32_t>{e.start, 0});
-    if (next == by_end.end() || next->first != e.start) {
-      return Status::Internal("tile set: the hull is not closed at vertex " +
-                              std::to_string(e.start));
-    }
-    k = next->second;
-  }
-  if (k != start) {
-    return Status::Internal("tile set: the hull is not one closed ring");
+        ServingMesh::Edge(position_[e.face], static_cast<int>(e.edge)));
   }
   std::sort(hull_at_.begin(), hull_at_.end());
-  // Euler's formula for a triangulated point set: 2V = F + H + 2.
-  if (2 * in_.binned.vertices != faces_ + h + 2) {
-    return Status::Internal("tile set: " + std::to_string(in_.binned.vertices) +
-                            " vertices, " + std::to_string(faces_) +
-                            " triangles and " + std::to_string(h) +
-                            " hull edges break Euler's formula");
-  }
-  return Status::OK();
+  return CheckEulerFormula("tile set", in_.binned.vertices, faces_,
+                           ring_.size());
 }
 
 uint32_t MeshAssembler::ClosedNeighbor(uint32_t number, uint32_t edge) const {

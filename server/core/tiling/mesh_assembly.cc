@@ -12,20 +12,13 @@
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/cells/parallel.h"
 #include "server/core/tiling/mesh_vectors.h"
+#include "server/core/tiling/open_edges.h"
 
 namespace locator {
 
 namespace {
 
 constexpr uint32_t kOpen = TileTriangles::kOpen;
-
-// A hull edge or an edge between two tiles' triangles: edge `edge` of
-// triangle `face`, keyed by its ends.
-struct OpenEdge {
-  uint64_t ends;  // smaller vertex << 32 | larger vertex
-  uint32_t face;
-  int edge;
-};
 
 uint32_t EdgeStart(const MeshTriangle& t, int i) { return t.corner[Ccw(i)]; }
 uint32_t EdgeEnd(const MeshTriangle& t, int i) { return t.corner[Cw(i)]; }
@@ -42,12 +35,12 @@ class Assembly {
   // turns neighbours into triangle numbers, and keys each triangle by its
   // centroid's Hilbert key.
   void Prepare();
-  // Pairs the open edges; the unpaired ones are the hull.
+  // Pairs the open edges; the unpaired ones are the hull, in ring order.
   Status MatchOpenEdges();
   // Orders the triangles and writes them into `storage`, freeing the
   // tiles' lists.
   void Order(MeshVectors* storage);
-  // Links the hull ring and checks Euler's formula.
+  // Marks the hull edges in ring order and checks Euler's formula.
   Status LinkHull(MeshVectors* storage);
 
  private:
@@ -119,13 +112,11 @@ Status Assembly::MatchOpenEdges() {
   ParallelTasks(tiles_.size(), threads_, [&](size_t t, size_t) {
     const LargeVector<MeshTriangle>& own = tiles_[t].triangles;
     for (size_t k = 0; k < own.size(); ++k) {
-      for (int i = 0; i < 3; ++i) {
+      for (uint32_t i = 0; i < 3; ++i) {
         if (own[k].neighbor[i] != kOpen) continue;
-        const uint32_t start = EdgeStart(own[k], i);
-        const uint32_t end = EdgeEnd(own[k], i);
-        per_tile[t].push_back(
-            {uint64_t{std::min(start, end)} << 32 | std::max(start, end),
-             static_cast<uint32_t>(first_[t] + k), i});
+        per_tile[t].push_back({static_cast<uint32_t>(first_[t] + k), i,
+                               EdgeStart(own[k], static_cast<int>(i)),
+                               EdgeEnd(own[k], static_cast<int>(i))});
       }
     }
   });
@@ -134,34 +125,17 @@ Status Assembly::MatchOpenEdges() {
     open.insert(open.end(), part.begin(), part.end());
     std::vector<OpenEdge>().swap(part);
   }
-  std::sort(open.begin(), open.end(), [](const OpenEdge& x, const OpenEdge& y) {
-    return std::tie(x.ends, x.face, x.edge) < std::tie(y.ends, y.face, y.edge);
-  });
-  for (size_t k = 0; k < open.size();) {
-    const OpenEdge& e = open[k];
-    const size_t same =
-        k + 1 < open.size() && open[k + 1].ends == e.ends ? 2 : 1;
-    const std::string name = "edge " + std::to_string(e.ends >> 32) + "-" +
-                             std::to_string(e.ends & 0xffffffffu);
-    if (k + 2 < open.size() && open[k + 2].ends == e.ends) {
-      return Status::Internal("tiled build: " + name +
-                              " borders more than two triangles");
-    }
-    if (same == 1) {
-      hull_.push_back(e);
-      ++k;
-      continue;
-    }
-    const OpenEdge& g = open[k + 1];
-    MeshTriangle& ft = Triangle(e.face);
-    MeshTriangle& gt = Triangle(g.face);
-    if (EdgeStart(ft, e.edge) != EdgeEnd(gt, g.edge)) {
-      return Status::Internal("tiled build: the two triangles of " + name +
-                              " overlap");
-    }
-    ft.neighbor[e.edge] = g.face;
-    gt.neighbor[g.edge] = e.face;
-    k += 2;
+  std::vector<std::array<OpenEdge, 2>> pairs;
+  RETURN_IF_ERROR(locator::MatchOpenEdges(
+      "tiled build", std::move(open),
+      [this](uint32_t vertex, uint32_t* id) {
+        *id = ids_[vertex];
+        return Status::OK();
+      },
+      &pairs, &hull_));
+  for (const auto& [e, g] : pairs) {
+    Triangle(e.face).neighbor[e.edge] = g.face;
+    Triangle(g.face).neighbor[g.edge] = e.face;
   }
   return Status::OK();
 }
@@ -203,58 +177,16 @@ void Assembly::Order(MeshVectors* storage) {
 
 Status Assembly::LinkHull(MeshVectors* storage) {
   LargeVector<MeshTriangle>& triangles = storage->triangles;
-  const size_t h = hull_.size();
-  // (end vertex, hull_ index), to find the edge that ends where one starts.
-  std::vector<std::pair<uint32_t, uint32_t>> by_end(h);
-  size_t start = 0;
-  for (size_t k = 0; k < h; ++k) {
-    OpenEdge& e = hull_[k];
-    e.face = position_[e.face];
-    by_end[k] = {EdgeEnd(triangles[e.face], e.edge), static_cast<uint32_t>(k)};
-    if (ids_[by_end[k].first] < ids_[by_end[start].first]) start = k;
-  }
-  std::sort(by_end.begin(), by_end.end());
-  for (size_t k = 1; k < h; ++k) {
-    if (by_end[k].first == by_end[k - 1].first) {
-      return Status::Internal("tiled build: hull vertex " +
-                              std::to_string(by_end[k].first) +
-                              " ends two hull edges");
-    }
-  }
-  storage->hull.reserve(h);
-  size_t k = start;
-  for (size_t n = 0; n < h; ++n) {
-    if (n > 0 && k == start) {
-      return Status::Internal("tiled build: the hull is more than one ring");
-    }
-    const OpenEdge& e = hull_[k];
-    triangles[e.face].neighbor[e.edge] =
+  storage->hull.reserve(hull_.size());
+  for (size_t n = 0; n < hull_.size(); ++n) {
+    const uint32_t face = position_[hull_[n].face];
+    triangles[face].neighbor[hull_[n].edge] =
         ServingMesh::kHullBit | static_cast<uint32_t>(n);
-    storage->hull.push_back(ServingMesh::Edge(e.face, e.edge));
-    // The ring runs as ServingMesh's: the next edge ends where this starts.
-    const uint32_t s = EdgeStart(triangles[e.face], e.edge);
-    const auto next = std::lower_bound(by_end.begin(), by_end.end(),
-                                       std::pair<uint32_t, uint32_t>{s, 0});
-    if (next == by_end.end() || next->first != s) {
-      return Status::Internal("tiled build: the hull is not closed at vertex " +
-                              std::to_string(s));
-    }
-    k = next->second;
+    storage->hull.push_back(
+        ServingMesh::Edge(face, static_cast<int>(hull_[n].edge)));
   }
-  if (k != start) {
-    return Status::Internal("tiled build: the hull is not one closed ring");
-  }
-  // Euler's formula for a triangulated point set: V - E + (F + 1) = 2,
-  // with 2E = 3F + H.
-  const size_t v = points_.size();
-  const size_t f = triangles.size();
-  if (2 * v != f + h + 2) {
-    return Status::Internal("tiled build: " + std::to_string(v) +
-                            " vertices, " + std::to_string(f) +
-                            " triangles and " + std::to_string(h) +
-                            " hull edges break Euler's formula");
-  }
-  return Status::OK();
+  return CheckEulerFormula("tiled build", points_.size(), triangles.size(),
+                           hull_.size());
 }
 
 }  // namespace
