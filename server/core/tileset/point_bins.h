@@ -11,8 +11,10 @@
 //      of cells of about `bin_points` points;
 //   4. each bin in turn is sorted and its repeats merged in memory, and
 //      appended to "points.bin", "ids.bin" (input indices) and "values.bin".
-// The state (grid, cell offsets, counts, hull candidates) goes to
-// "bins.state", so that a build killed later resumes without binning again.
+// "input.points" stays (the mesh digest reads the points in input order);
+// "input.values" and the bins are removed. The state (grid, cell offsets,
+// counts, hull candidates) goes to "bins.state", so that a build killed
+// later resumes without binning again.
 //
 // Thread-safety: free functions; BinnedCellSource allows concurrent reads.
 
