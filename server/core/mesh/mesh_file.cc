@@ -179,8 +179,9 @@ Header HeaderOf(const MeshFileSummary& m) {
 
 MeshFileSections MeshFileSectionsOf(const MeshFileSummary& summary) {
   const Layout l = LayoutOf(HeaderOf(summary));
-  return {l.triangles, l.points,     l.values,      l.ids, l.hull,
-          l.boundary,  l.breaklines, l.edge_sample, l.end};
+  return {{l.triangles, l.points, l.values, l.ids, l.hull, l.boundary,
+           l.breaklines, l.edge_sample},
+          l.end};
 }
 
 Status CheckMeshFileCounts(const MeshFileSummary& summary) {

@@ -74,7 +74,6 @@ class MeshAssembler {
   LargeVector<uint32_t> position_;
   std::vector<uint32_t> hull_;  // ServingMesh::Edge codes, in ring order
   std::vector<std::array<Point2, 2>> edge_sample_;
-  uint64_t triangles_digest_ = 0;
 };
 
 Status MeshAssembler::BinTriangles() {

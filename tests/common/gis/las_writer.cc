@@ -14,7 +14,6 @@ namespace {
 constexpr size_t kMinRecordLength[11] = {20, 28, 26, 34, 57, 63,
                                          30, 36, 38, 59, 67};
 constexpr size_t kVlrHeader = 54;
-constexpr size_t kEvlrHeader = 60;
 
 size_t HeaderSize(uint8_t minor) {
   return minor >= 4 ? 375 : minor == 3 ? 235 : 227;

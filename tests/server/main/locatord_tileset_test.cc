@@ -3,7 +3,8 @@
 // manifest, and its answers are CGAL's own on the same file (triangle ids
 // included) for the end-to-end query set, every tile's bounding-box corners
 // and edge midpoints, and the midpoint of every edge between two tiles'
-// vertices (where the halos meet). Bad tile sets fail startup naming why.
+// vertices (where the halos meet). Bad tile sets fail startup naming why,
+// and locator-build refuses bad flags and sources naming them.
 
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
@@ -142,6 +143,33 @@ TEST_F(LocatordTileSetTest, ABadTileSetFailsStartupNamingIt) {
   started = StartLocatord("tiles=" + tiles_ + "/manifest.json", {}, &server);
   EXPECT_FALSE(started.ok());
   EXPECT_THAT(started.message(), HasSubstr("not a locator tile-set manifest"));
+}
+
+// locator-build's own refusals: bad flags (exit 2), and a source it cannot
+// tile or read (exit 1), each named.
+TEST(LocatorBuildTest, RefusesWhatItCannotBuildNamingIt) {
+  ScratchDir dir;
+  const std::string out = dir.path() + "/tiles";
+  BinaryResult result = RunBinary(LOCATOR_BUILD_PATH, {"--out", out});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_THAT(result.err, HasSubstr("give exactly one SOURCE"));
+  result = RunBinary(LOCATOR_BUILD_PATH, {"uniform:1000"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_THAT(result.err, HasSubstr("--out DIR is required"));
+
+  const std::string csv = dir.path() + "/points.csv";
+  WriteUniformCsv(csv, 500, 3);
+  const std::string wkt = dir.path() + "/road.wkt";
+  std::ofstream(wkt) << "LINESTRING (0.1 0.1, 0.9 0.9)\n";
+  result = RunBinary(LOCATOR_BUILD_PATH, {csv + "+" + wkt, "--out", out});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("plain point sets only"));
+
+  const std::string bad = dir.path() + "/bad.csv";
+  std::ofstream(bad) << "0,0\n1,0\n0,nan\n";
+  result = RunBinary(LOCATOR_BUILD_PATH, {bad, "--out", out});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("bad.csv:3"));
 }
 
 }  // namespace
