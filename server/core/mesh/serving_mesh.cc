@@ -32,10 +32,16 @@ struct EdgeKey {
 
 ServingMesh::ServingMesh(std::unique_ptr<const Storage> storage,
                          const Arrays& arrays)
-    : storage_(std::move(storage)), a_(arrays), id_bound_(a_.input_points) {
-  for (const uint32_t id : a_.ids) {
-    id_bound_ = std::max<uint64_t>(id_bound_, uint64_t{id} + 1);
-  }
+    : storage_(std::move(storage)), a_(arrays) {}
+
+uint64_t ServingMesh::id_bound() const {
+  std::call_once(id_bound_once_, [this] {
+    id_bound_ = a_.input_points;
+    for (const uint32_t id : a_.ids) {
+      id_bound_ = std::max<uint64_t>(id_bound_, uint64_t{id} + 1);
+    }
+  });
+  return id_bound_;
 }
 
 std::array<uint32_t, 3> ServingMesh::CornerIds(uint32_t f) const {

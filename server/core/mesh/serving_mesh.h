@@ -39,6 +39,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -116,7 +117,9 @@ class ServingMesh {
   uint64_t input_points() const { return a_.input_points; }
   // One past the largest public vertex id, and at least input_points():
   // constraint points that are not input points take the ids after them.
-  uint64_t id_bound() const { return id_bound_; }
+  // The first call scans the ids (not the constructor: a mapped mesh larger
+  // than RAM serves without reading them).
+  uint64_t id_bound() const;
   // Equal for meshes of the same points and domain (VertexDigest()).
   uint64_t digest() const { return a_.digest; }
   const Arrays& arrays() const { return a_; }
@@ -232,7 +235,8 @@ class ServingMesh {
 
   std::unique_ptr<const Storage> storage_;
   Arrays a_;
-  uint64_t id_bound_;
+  mutable std::once_flag id_bound_once_;
+  mutable uint64_t id_bound_ = 0;
 };
 
 }  // namespace locator

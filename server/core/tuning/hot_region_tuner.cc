@@ -44,16 +44,16 @@ HotRegionTuner::HotRegionTuner(const ServingMesh& mesh,
                        grid.cells() * StartTable::kBytesPerCell;
   leaf_budget_ =
       budget_ > fixed ? (budget_ - fixed) / StartTable::kBytesPerStart : 0;
-  for (const Point2& p : mesh.arrays().points) points_[grid.CellOf(p)] += 1;
+}
+
+void HotRegionTuner::MeasureCells() {
+  if (cells_measured_) return;
+  cells_measured_ = true;
+  for (const Point2& p : mesh_.arrays().points) points_[grid_.CellOf(p)] += 1;
   cbrt_points_.resize(points_.size());
   for (size_t c = 0; c < points_.size(); ++c) {
     cbrt_points_[c] = std::cbrt(points_[c]);
   }
-}
-
-void HotRegionTuner::MeasureCrossingRatios() {
-  if (crossing_measured_) return;
-  crossing_measured_ = true;
   // A segment of length L along x crosses about L * sum|dy| / area edges
   // (and along y, L * sum|dx| / area), summing over the edges around it.
   // The sums are in Wide: an edge of a dataset spanning +-1e308 is longer
@@ -330,7 +330,7 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::SnapshotOf(
 }
 
 bool HotRegionTuner::Plan() {
-  MeasureCrossingRatios();
+  MeasureCells();
   builder_.reset();
   const size_t cells = grid_.cells();
   const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
@@ -403,7 +403,7 @@ void HotRegionTuner::ExportState(TuningState* state) const {
 Status HotRegionTuner::Restore(
     const TuningState& state, uint64_t version,
     std::shared_ptr<const TuningSnapshot>* snapshot) {
-  MeasureCrossingRatios();
+  MeasureCells();
   const size_t cells = grid_.cells();
   if (state.histogram.size() != cells || state.planned_share.size() != cells ||
       state.levels.size() != cells) {

@@ -165,10 +165,11 @@ class HotRegionTuner {
   // shaped by the cell's crossing ratio (1 x 1 for r = 1).
   SubGrid ShapeOf(size_t c, uint32_t r) const;
   std::vector<SubGrid> Shapes(const std::vector<uint32_t>& levels) const;
-  // Fills crossing_ratio_ from the triangulation's edges, once (a scan of
-  // every edge: deferred to the first plan or restore, so that a tuner is
-  // cheap to make).
-  void MeasureCrossingRatios();
+  // Fills points_, cbrt_points_ and crossing_ratio_ from the
+  // triangulation's vertices and edges, once (a scan of all of them:
+  // deferred to the first plan or restore, so that a tuner is cheap to make
+  // and a server mapping a mesh larger than RAM reads none of it to start).
+  void MeasureCells();
   // table as the snapshot `version`, with the current histogram.
   std::shared_ptr<const TuningSnapshot> SnapshotOf(
       std::shared_ptr<const StartTable> table, uint64_t version) const;
@@ -186,7 +187,7 @@ class HotRegionTuner {
   // width / height: a walk across the cell's width crosses this many times
   // as many edges as one across its height.
   std::vector<double> crossing_ratio_;
-  bool crossing_measured_ = false;
+  bool cells_measured_ = false;
   std::shared_ptr<const StartTable> table_;  // the last one built
   std::vector<uint32_t> levels_;             // the levels table_ was built at
   std::vector<double> walk_terms_;     // WalkTerm(c, levels_[c]) for every c

@@ -66,8 +66,11 @@ bool StartTable::Builder::Step(size_t max_units, size_t* units) {
       cell.sub_grid = sub;
       if (sub.cells() == 1) {
         ++done;
-        hint_ = cell.face =
-            FaceNear(mesh_, hint_, SubCellCentre(box, sub, 0, 0));
+        // From a triangle near the centre along the curve (a binary
+        // search), not from the last cell's: a walk across every cell reads
+        // a page per triangle, all of a mesh larger than RAM.
+        const Point2 centre = SubCellCentre(box, sub, 0, 0);
+        hint_ = cell.face = FaceNear(mesh_, mesh_.TriangleNear(centre), centre);
         ++next_cell_;
         continue;
       }
