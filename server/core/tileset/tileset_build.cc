@@ -61,9 +61,11 @@ Status SortedPointsOf(PointStream* stream, const std::string& work,
                       const TileSetOptions& options, uint64_t key,
                       BinnedPoints* binned, TileSetStats* stats) {
   if (LoadBinnedPoints(work, key, binned).ok()) {
-    RandomAccessFile points;
+    RandomAccessFile points, input;
     if (points.Open(BinnedPointsPath(work)).ok() &&
-        points.size() == binned->vertices * sizeof(Point2)) {
+        points.size() == binned->vertices * sizeof(Point2) &&
+        input.Open(InputPointsPath(work)).ok() &&
+        input.size() == binned->input_points * sizeof(Point2)) {
       stats->bins_reused = true;
       return Status::OK();
     }
