@@ -33,14 +33,6 @@ void DropFromPageCache(const std::string& path) {
   ::close(fd);
 }
 
-std::vector<Point2> Queries(WorkloadKind kind, const BoundingBox& box,
-                            size_t count, uint64_t seed) {
-  Workload workload(kind, box, seed);
-  std::vector<Point2> queries(count);
-  for (Point2& q : queries) q = workload.Next();
-  return queries;
-}
-
 // Mean ns per Locate() over `queries`, one at a time.
 StatusOr<double> NsPerLocate(const Engine& engine,
                              const std::vector<Point2>& queries) {
@@ -54,10 +46,11 @@ StatusOr<double> NsPerLocate(const Engine& engine,
 // tuner, then the timed ones.
 StatusOr<double> HotRegionNs(const Engine& engine, const BoundingBox& box,
                              size_t count) {
-  RETURN_IF_ERROR(
-      NsPerLocate(engine, Queries(WorkloadKind::kOneCluster, box, count, 1))
-          .status());
-  return NsPerLocate(engine, Queries(WorkloadKind::kOneCluster, box, count, 2));
+  RETURN_IF_ERROR(NsPerLocate(engine, WorkloadQueries(WorkloadKind::kOneCluster,
+                                                      box, count, 1))
+                      .status());
+  return NsPerLocate(engine,
+                     WorkloadQueries(WorkloadKind::kOneCluster, box, count, 2));
 }
 
 // The points of the generator spec `source` in the part of `box` around
@@ -130,7 +123,7 @@ Status VerifyAgainstMemory(const Engine& tiled, const std::string& mesh_path,
              same.ok() ? 1 : 0, "");
   ASSIGN_OR_RETURN(std::unique_ptr<Engine> in_memory,
                    Engine::Create(std::move(dataset), EngineOptions()));
-  const std::vector<Point2> queries = Queries(
+  const std::vector<Point2> queries = WorkloadQueries(
       WorkloadKind::kUniform, tiled.dataset_info().bounding_box, count, 4);
   std::vector<LocateResult> got, want;
   RETURN_IF_ERROR(tiled.LocateBatch(queries, &got));
@@ -200,7 +193,7 @@ Status RunTileSet(const TileSetBenchOptions& options, std::ostream& out) {
             tiled->Stats().mean_cost_recent, "");
   table.Memory("the hot region");
   const std::vector<Point2> uniform =
-      Queries(WorkloadKind::kUniform, box, options.queries, 3);
+      WorkloadQueries(WorkloadKind::kUniform, box, options.queries, 3);
   ASSIGN_OR_RETURN(const double first, NsPerLocate(*tiled, uniform));
   table.Row("tile set: uniform, first pass", first, "ns/locate");
   ASSIGN_OR_RETURN(const double second, NsPerLocate(*tiled, uniform));
