@@ -5,6 +5,7 @@
 #include "common/status_macros.h"
 #include "server/core/dataset/file_io.h"
 #include "server/core/geometry/xxh3_digest.h"
+#include "server/core/tiling/mesh_assembly.h"
 
 namespace locator {
 
@@ -78,12 +79,7 @@ StatusOr<uint64_t> VertexDigestOfFiles(const std::string& work,
   for (uint64_t first = 0; first < binned.input_points; first += chunk.size()) {
     chunk.resize(std::min(kChunk, binned.input_points - first));
     RETURN_IF_ERROR(input.ReadItems(first, std::span<Point2>(chunk)));
-    for (size_t k = 0; k < chunk.size(); ++k) {
-      if (!distinct[first + k]) continue;
-      digest.AddU64(first + k);
-      digest.AddDouble(chunk[k].x);
-      digest.AddDouble(chunk[k].y);
-    }
+    AddDistinctVertices(chunk, first, distinct, &digest);
   }
   return digest.digest();
 }

@@ -222,17 +222,22 @@ Status AssembleServingMesh(SortedPoints* sorted,
   return Status::OK();
 }
 
+void AddDistinctVertices(std::span<const Point2> points, uint64_t first,
+                         const std::vector<bool>& distinct, Xxh3Digest* hash) {
+  for (size_t k = 0; k < points.size(); ++k) {
+    if (!distinct[first + k]) continue;
+    hash->AddU64(first + k);
+    hash->AddDouble(points[k].x);
+    hash->AddDouble(points[k].y);
+  }
+}
+
 uint64_t VertexDigestOf(std::span<const Point2> input,
                         std::span<const uint32_t> ids) {
   std::vector<bool> distinct(input.size(), false);
   for (const uint32_t id : ids) distinct[id] = true;
   Xxh3Digest hash;
-  for (size_t id = 0; id < input.size(); ++id) {
-    if (!distinct[id]) continue;
-    hash.AddU64(id);
-    hash.AddDouble(input[id].x);
-    hash.AddDouble(input[id].y);
-  }
+  AddDistinctVertices(input, 0, distinct, &hash);
   return hash.digest();
 }
 

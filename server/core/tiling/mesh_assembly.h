@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "locator/status.h"
+#include "server/core/geometry/xxh3_digest.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tiling/cells/sorted_points.h"
 #include "server/core/tiling/tile_triangulation.h"
@@ -52,6 +53,12 @@ Status AssembleServingMesh(SortedPoints* sorted,
 // points' ids (any order) among the input's indices.
 uint64_t VertexDigestOf(std::span<const Point2> input,
                         std::span<const uint32_t> ids);
+
+// The step of VertexDigestOf for input points [first, first + size) given
+// as `points` (a chunk, for the out-of-core build): feeds the id, x and y
+// of each whose distinct[id] is set to *hash.
+void AddDistinctVertices(std::span<const Point2> points, uint64_t first,
+                         const std::vector<bool>& distinct, Xxh3Digest* hash);
 
 }  // namespace locator
 
