@@ -30,6 +30,7 @@
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tileset/tileset_build.h"
 #include "server/datasets/dataset_source.h"
+#include "server/datasets/source_key.h"
 
 namespace locator {
 namespace {
@@ -44,15 +45,16 @@ struct BuildFlags {
   bool quiet = false;
 };
 
-// What a file source's key adds: each file's size and modification time.
-std::string FileIdentity(const std::vector<std::string>& files) {
+// What a file source's key adds: each file's identity as the mesh cache
+// keys it (IdentifyFile: size, modification time, device and inode).
+std::string FilesKey(const std::vector<std::string>& files) {
   std::string key;
   for (const std::string& file : files) {
-    struct stat st;
-    if (::stat(file.c_str(), &st) != 0) continue;
-    key += "\n" + file + " " + std::to_string(st.st_size) + " " +
-           std::to_string(st.st_mtim.tv_sec) + "." +
-           std::to_string(st.st_mtim.tv_nsec);
+    const FileIdentity f = IdentifyFile(file);
+    if (!f.exists) continue;
+    key += "\n" + f.path + " " + std::to_string(f.size) + " " +
+           std::to_string(f.mtime_ns) + " " + std::to_string(f.device) + " " +
+           std::to_string(f.inode);
   }
   return key;
 }
@@ -78,7 +80,7 @@ Status OpenSource(const std::string& spec, unsigned threads,
         "' has constraints or is a simplified TIN; locator-build tiles plain "
         "point sets only (serve it with locatord --dataset)");
   }
-  source->key = spec + FileIdentity(served.files);
+  source->key = spec + FilesKey(served.files);
   source->crs = served.dataset.crs;
   *stream = DatasetPointStream(std::move(served.dataset));
   return Status::OK();
