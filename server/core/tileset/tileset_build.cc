@@ -146,11 +146,7 @@ bool KeepWrittenTile(const std::string& dir,
   const std::string path = TileFilePath(dir, entry->info.number);
   if (!ReadTileFileInfo(path, &info).ok() ||
       info.build_key != entry->info.build_key ||
-      info.number != entry->info.number ||
-      info.tile.first_cell != entry->info.tile.first_cell ||
-      info.tile.end_cell != entry->info.tile.end_cell ||
-      info.tile.first_vertex != entry->info.tile.first_vertex ||
-      info.tile.end_vertex != entry->info.tile.end_vertex) {
+      info.number != entry->info.number || info.tile != entry->info.tile) {
     return false;
   }
   RandomAccessFile file;

@@ -43,6 +43,8 @@ struct Tile {
   uint32_t end_cell = 0;
   uint32_t first_vertex = 0;  // its own vertices [first_vertex, end_vertex)
   uint32_t end_vertex = 0;
+
+  bool operator==(const Tile&) const = default;
 };
 
 // The cells of `grid`, cut along the curve into tiles of at least
