@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "client/channel_options.h"
+#include "common/channel_options.h"
 #include "client/cli_commands.h"
 #include "locator/status.h"
 

@@ -1,6 +1,6 @@
 // LocatorClient: the one client of locator.v1.Locator that the `locator` CLI
 // and the `locator-load` driver share (the channel it talks over is built by
-// client/channel_options.h).
+// common/channel_options.h).
 //
 // Owns a Locator stub and a health checker on a shared channel, the per-call
 // deadline and the request scope. Every call it starts, blocking or
@@ -26,7 +26,7 @@
 #include <string>
 #include <string_view>
 
-#include "client/channel_options.h"
+#include "common/channel_options.h"
 #include "client/health_check.h"
 #include "locator/geometry.h"
 #include "locator/v1/locator.grpc.pb.h"

@@ -55,6 +55,7 @@ StatusOr<LocatorApp::Admission> LocatorApp::Resolve(
   Admission admission;
   admission.dataset = slot;
   admission.engine = std::move(serving.engine);
+  admission.tiles = std::move(serving.tiles);
   admission.generation = serving.generation;
   return admission;
 }
@@ -107,19 +108,20 @@ StatusOr<LocatorApp::Admission> LocatorApp::Admit(
   return admission;
 }
 
-Status LocatorApp::LocateOn(const Engine& engine,
+Status LocatorApp::LocateOn(const Admission& call,
                             const v1::LocateRequest& request,
                             LocateResult* result) const {
   ASSIGN_OR_RETURN(const Point2 point, FromLocateRequest(request));
   ASSIGN_OR_RETURN(const QueryOptions options, QueryOptionsOf(request));
-  return LocateInRequestCrs(engine, point, options, result);
+  return LocateInRequestCrs(*call.engine, call.tiles.get(), point, options,
+                            result);
 }
 
 Status LocatorApp::Locate(const Admission& call,
                           const v1::LocateRequest& request,
                           v1::LocateResponse* response) const {
   LocateResult result;
-  RETURN_IF_ERROR(LocateOn(*call.engine, request, &result));
+  RETURN_IF_ERROR(LocateOn(call, request, &result));
   ToLocateResponse(result, response);
   return Status::OK();
 }
@@ -145,16 +147,24 @@ void LocatorApp::LocateBatch(Admission call,
           std::vector<LocateResult>* results,
           const std::function<bool()>& keep_going) {
         if (outside == OutsideAreaOfUse::kNoValue) {
-          return LocateBatchWhereDefined(*call.engine, options, points, results,
-                                         keep_going);
+          return LocateBatchWhereDefined(*call.engine, call.tiles.get(),
+                                         options, points, results, keep_going);
         }
         RETURN_IF_ERROR(
             PointsInDatasetCrs(*call.engine, options.crs, points, first_index));
+        if (call.tiles != nullptr) {
+          RETURN_IF_ERROR(call.tiles->CheckServed(points, first_index));
+        }
         return call.engine->LocateBatch(points, results, keep_going,
                                         options.interpolation, options.detail);
       },
       std::move(control), response,
       [&engine, &crs] { return CheckRequestCrs(engine, crs); });
+}
+
+void LocatorApp::GetTopology(const Admission& call,
+                             v1::GetTopologyResponse* response) const {
+  ToGetTopologyResponse(call.dataset->name(), call.tiles.get(), response);
 }
 
 void LocatorApp::ListDatasets(v1::ListDatasetsResponse* response) const {

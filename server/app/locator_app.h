@@ -129,6 +129,8 @@ class LocatorApp {
     // calls that name none (ListDatasets, LocateStream).
     DatasetSlot* dataset = nullptr;
     std::shared_ptr<Engine> engine;
+    // The tiles `engine` serves, for a tile set; null otherwise.
+    std::shared_ptr<const ShardTiles> tiles;
     uint64_t generation = 0;  // of `engine`
     DrainGate::Ticket ticket;
   };
@@ -148,9 +150,10 @@ class LocatorApp {
   // Locate on an admitted call.
   Status Locate(const Admission& call, const v1::LocateRequest& request,
                 v1::LocateResponse* response) const;
-  // Locates `request` on `engine` (a LocateStream's message, resolved by
-  // the stream with Resolve()).
-  Status LocateOn(const Engine& engine, const v1::LocateRequest& request,
+  // Locates `request` on the dataset `call` resolved (a LocateStream's
+  // message, resolved by the stream with Resolve()). FailedPrecondition for
+  // a point of a tile this server does not serve (ShardTiles).
+  Status LocateOn(const Admission& call, const v1::LocateRequest& request,
                   LocateResult* result) const;
   // What LocateBatch does with a point outside the area of use of the
   // request's CRS: fail the call (INVALID_ARGUMENT naming the point, the
@@ -163,6 +166,10 @@ class LocatorApp {
                    BatchLocator::CallControl control,
                    v1::LocateBatchResponse* response,
                    OutsideAreaOfUse outside = OutsideAreaOfUse::kFail);
+  // GetTopology on an admitted call: the tiles of a tile set and those this
+  // server serves, or one shard (this server) for any other dataset.
+  void GetTopology(const Admission& call,
+                   v1::GetTopologyResponse* response) const;
   // ListDatasets.
   void ListDatasets(v1::ListDatasetsResponse* response) const;
   // GetStats on an admitted call.

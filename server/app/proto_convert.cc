@@ -266,4 +266,27 @@ void ToDatasetEntry(const EngineStats& stats, uint64_t generation,
   entry->set_generation(generation);
 }
 
+void ToGetTopologyResponse(const std::string& name, const ShardTiles* tiles,
+                           v1::GetTopologyResponse* response) {
+  response->set_dataset(name);
+  v1::TopologyShard* self = response->add_shards();
+  response->set_complete(tiles == nullptr || tiles->serves_all());
+  if (tiles == nullptr) return;
+  const TileRouter& router = tiles->router();
+  response->set_tiled(true);
+  v1::BoundingBox* bounds = response->mutable_bounds();
+  bounds->set_min_x(router.box().min_x);
+  bounds->set_min_y(router.box().min_y);
+  bounds->set_max_x(router.box().max_x);
+  bounds->set_max_y(router.box().max_y);
+  response->set_grid_level(static_cast<uint32_t>(router.level()));
+  response->set_fingerprint(tiles->fingerprint());
+  for (size_t t = 0; t < router.num_tiles(); ++t) {
+    v1::TopologyTile* tile = response->add_tiles();
+    tile->set_first_cell(router.first_cell(t));
+    tile->set_end_cell(static_cast<uint32_t>(router.end_cell(t)));
+  }
+  for (const uint32_t t : tiles->served()) self->add_tiles(t);
+}
+
 }  // namespace locator

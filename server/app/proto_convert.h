@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
 
 #include "locator/engine.h"
 #include "locator/locate_result.h"
@@ -18,6 +19,7 @@
 #include "locator/status_or.h"
 #include "locator/v1/locator.pb.h"
 #include "server/core/strategies/point_locator.h"
+#include "server/datasets/shard_tiles.h"
 
 namespace locator {
 
@@ -80,6 +82,12 @@ void ToReloadResponse(const EngineStats& stats, uint64_t generation,
 // name and the serving flags).
 void ToDatasetEntry(const EngineStats& stats, uint64_t generation,
                     v1::DatasetEntry* entry);
+
+// The topology of dataset `name`: the tiles of a tile set and those this
+// server serves (`tiles`), or one shard serving all of a dataset that is
+// not a tile set (`tiles` null).
+void ToGetTopologyResponse(const std::string& name, const ShardTiles* tiles,
+                           v1::GetTopologyResponse* response);
 
 }  // namespace locator
 

@@ -53,12 +53,13 @@ Status PointsInRequestCrs(const Engine& engine, const std::string& crs,
   return transformer->ToRequest(points);
 }
 
-Status LocateBatchWhereDefined(const Engine& engine,
+Status LocateBatchWhereDefined(const Engine& engine, const ShardTiles* tiles,
                                const QueryOptions& options,
                                std::span<Point2> points,
                                std::vector<LocateResult>* results,
                                const std::function<bool()>& keep_going) {
   if (options.crs.empty()) {
+    if (tiles != nullptr) RETURN_IF_ERROR(tiles->CheckServed(points, 0));
     return engine.LocateBatch(points, results, keep_going,
                               options.interpolation, options.detail);
   }
@@ -75,6 +76,9 @@ Status LocateBatchWhereDefined(const Engine& engine,
       places.push_back(i);
     }
   }
+  for (size_t k = 0; tiles != nullptr && k < defined.size(); ++k) {
+    RETURN_IF_ERROR(tiles->CheckServed(std::span(&defined[k], 1), places[k]));
+  }
   std::vector<LocateResult> located;
   RETURN_IF_ERROR(engine.LocateBatch(defined, &located, keep_going,
                                      options.interpolation, options.detail));
@@ -87,15 +91,23 @@ Status LocateBatchWhereDefined(const Engine& engine,
   return Status::OK();
 }
 
-Status LocateInRequestCrs(const Engine& engine, Point2 point,
-                          const QueryOptions& options, LocateResult* result) {
+Status LocateInRequestCrs(const Engine& engine, const ShardTiles* tiles,
+                          Point2 point, const QueryOptions& options,
+                          LocateResult* result) {
+  const auto check_served = [&] {
+    return tiles == nullptr
+               ? Status::OK()
+               : tiles->CheckServed(std::span<const Point2>(&point, 1), 0);
+  };
   if (options.crs.empty()) {
+    RETURN_IF_ERROR(check_served());
     return engine.Locate(point, result, options.interpolation);
   }
   // One transformer for both ways.
   gis::CrsTransformer* transformer = nullptr;
   RETURN_IF_ERROR(TransformerFor(engine, options.crs, &transformer));
   RETURN_IF_ERROR(transformer->ToDataset(std::span<Point2>(&point, 1)));
+  RETURN_IF_ERROR(check_served());
   RETURN_IF_ERROR(engine.Locate(point, result, options.interpolation));
   if (!options.vertices_in_request_crs) return Status::OK();
   return transformer->ToRequest(result->vertices);

@@ -30,6 +30,7 @@
 #include "locator/locate_result.h"
 #include "locator/status.h"
 #include "server/app/query_options.h"
+#include "server/datasets/shard_tiles.h"
 
 namespace locator {
 
@@ -56,7 +57,9 @@ Status PointsInRequestCrs(const Engine& engine, const std::string& crs,
 // of use of options.crs or the dataset's CRS (or one PROJ cannot map) is
 // answered kOutsideConvexHull without a value instead of failing the call:
 // the elevation APIs answer null there. `points` are transformed in place.
-Status LocateBatchWhereDefined(const Engine& engine,
+// With `tiles`, a point this server does not serve fails the call
+// (ShardTiles::CheckServed), as in LocateInRequestCrs.
+Status LocateBatchWhereDefined(const Engine& engine, const ShardTiles* tiles,
                                const QueryOptions& options,
                                std::span<Point2> points,
                                std::vector<LocateResult>* results,
@@ -65,8 +68,9 @@ Status LocateBatchWhereDefined(const Engine& engine,
 // Locates `point` (in options.crs) on `engine` as `options` say; with
 // options.vertices_in_request_crs the result's vertices are returned in
 // options.crs.
-Status LocateInRequestCrs(const Engine& engine, Point2 point,
-                          const QueryOptions& options, LocateResult* result);
+Status LocateInRequestCrs(const Engine& engine, const ShardTiles* tiles,
+                          Point2 point, const QueryOptions& options,
+                          LocateResult* result);
 
 }  // namespace locator
 

@@ -8,8 +8,11 @@
 #include <limits>
 
 #include "common/flags/flag_set.h"
+#include "common/status_macros.h"
 #include "server/config/engine_flags.h"
 #include "server/config/http_flags.h"
+#include "server/datasets/shard_tiles.h"
+#include "server/datasets/tile_set_source.h"
 
 namespace locator {
 namespace {
@@ -113,6 +116,34 @@ Status ParseListenAddress(std::string_view text, std::string* host, int* port) {
   return Status::OK();
 }
 
+namespace {
+
+// --tiles needs a tile-set dataset to select from, --route its --shards.
+Status CheckShardFlags(const ServerConfig& config) {
+  if (!config.tiles.empty()) {
+    RETURN_IF_ERROR(ShardTiles::CheckSelector(config.tiles));
+    const bool any_tile_set =
+        std::any_of(config.datasets.begin(), config.datasets.end(),
+                    [](const DatasetConfig& d) { return IsTileSetSpec(d.spec); });
+    if (!any_tile_set) {
+      return FlagError("tiles", config.tiles,
+                       "no --dataset is a tile set (DIR/manifest.json)");
+    }
+  }
+  if (config.route && config.shards.empty()) {
+    return Status::InvalidArgument("--route needs --shards TARGET,...");
+  }
+  if (!config.route && !config.shards.empty()) {
+    return Status::InvalidArgument("--shards is for --route");
+  }
+  for (const std::string& target : config.shards) {
+    if (target.empty()) return FlagError("shards", "", "an empty target");
+  }
+  return Status::OK();
+}
+
+}  // namespace
+
 Status ParseServerConfig(int argc, const char* const argv[],
                          ServerConfig* config, std::string* help) {
   *config = ServerConfig();
@@ -138,6 +169,18 @@ Status ParseServerConfig(int argc, const char* const argv[],
             "this directory (resolved; no escape by .. or symlinks); "
             "everything else but a dataset's own spec is PERMISSION_DENIED; "
             "empty = only those");
+  flags.Add("tiles", flag::Text(&config->tiles).Shape("SELECTOR"),
+            "serve only these tiles of the tile-set datasets: K/N (the K-th, "
+            "from 0, of N contiguous parts) or tiles and ranges (0-9,12); "
+            "locates elsewhere are FAILED_PRECONDITION, GetTopology tells "
+            "clients which tiles this shard serves; empty = all");
+  flags.Add("route", flag::Switch(&config->route),
+            "run as a stateless router: forward Locate and LocateBatch to "
+            "the shard serving each point (GetTopology of --shards) and "
+            "other calls to a shard; serves no dataset itself");
+  flags.Add("shards", flag::Texts(&config->shards).Shape("TARGET,..."),
+            "with --route: the gRPC targets of the shards, one per shard "
+            "(a target may resolve to several replicas: dns:///NAME:PORT)");
   AddServingFlags(&config->serving, &transport_files, &flags);
   AddEngineFlags(config, &flags);
   AddHttpFlags(config, &flags);
@@ -156,6 +199,7 @@ Status ParseServerConfig(int argc, const char* const argv[],
       status = FlagError("reload-dir", config->reload_dir, "not a directory");
     }
   }
+  if (status.ok()) status = CheckShardFlags(*config);
   if (status.ok()) status = CheckEngineFlags(*config);
   if (status.ok()) status = CheckHttpFlags(*config);
   if (status.ok()) {

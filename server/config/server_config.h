@@ -106,6 +106,15 @@ struct ServerConfig {
   // --http-public-status: /api/stats and /api/edges answer without a
   // token even when tokens are required.
   bool http_public_status = false;
+  // --tiles SELECTOR: the tiles of its tile-set datasets this server
+  // serves (ShardTiles::Select); empty: all of them.
+  std::string tiles;
+  // --route: run as a stateless router forwarding to --shards, serving no
+  // dataset of its own.
+  bool route = false;
+  // --shards TARGET,...: the gRPC targets of the shards a router forwards
+  // to, one per shard.
+  std::vector<std::string> shards;
   // --log-level: the least severe log lines written (error, warning, info,
   // debug).
   LogLevel log_level = LogLevel::kInfo;

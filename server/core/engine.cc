@@ -8,7 +8,7 @@
 
 #include "common/input_text.h"
 #include "common/status_macros.h"
-#include "server/core/geometry/hilbert.h"
+#include "common/hilbert.h"
 #include "server/core/mesh/mesh_cache.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/strategies/locator_factory.h"

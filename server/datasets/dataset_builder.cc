@@ -125,15 +125,15 @@ Status DatasetBuilder::EngineOptionsFor(const DatasetSlot& slot,
 
 Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
                                           const std::string& spec,
-                                          std::shared_ptr<Engine>* built) {
+                                          BuiltDataset* built) {
   const std::string_view tag = Tag(slot);
   EngineOptions options;
   if (Status status = EngineOptionsFor(slot, &options); !status.ok()) {
     return status;
   }
   if (IsTileSetSpec(spec)) return MapTileSet(slot, spec, options, built);
-  if (MapGenerated(slot, spec, options, built) ||
-      MapBySourceKey(slot, spec, options, built)) {
+  if (MapGenerated(slot, spec, options, &built->engine) ||
+      MapBySourceKey(slot, spec, options, &built->engine)) {
     return Status::OK();
   }
   LogLine(LogLevel::kInfo, tag) << "loading dataset " << spec;
@@ -185,7 +185,7 @@ Status DatasetBuilder::LoadAndTriangulate(const DatasetSlot& slot,
   RecordGenerated(spec, options, info.mesh_cache, tag);
   RecordSourceKey(spec, options, served, info, tag);
   LogBuilt(*created, tag);
-  *built = std::move(created);
+  built->engine = std::move(created);
   return Status::OK();
 }
 
@@ -220,16 +220,26 @@ bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
 Status DatasetBuilder::MapTileSet(const DatasetSlot& slot,
                                   const std::string& spec,
                                   EngineOptions options,
-                                  std::shared_ptr<Engine>* built) {
+                                  BuiltDataset* built) {
   TileSetManifestSummary manifest;
   RETURN_IF_ERROR(ReadTileSetSpec(spec, &manifest, &options.mesh_cache_dir));
   if (manifest.mesh_file != MeshFilePath("", manifest.fingerprint)) {
     return Status::InvalidArgument(spec + ": mesh_file '" + manifest.mesh_file +
                                    "' is not the fingerprint's mesh file");
   }
+  ASSIGN_OR_RETURN(TileRouter router,
+                   TileRouter::Create(manifest.bounds, manifest.grid_level,
+                                      manifest.tile_first_cells));
+  StatusOr<std::shared_ptr<const ShardTiles>> tiles = ShardTiles::Select(
+      std::move(router), config_.tiles, manifest.fingerprint);
+  if (!tiles.ok()) {
+    return Status::InvalidArgument(spec + ": " + tiles.status().message());
+  }
   LogLine(LogLevel::kInfo, Tag(slot))
       << "mapping the tile set " << spec << " (" << manifest.source << ", "
-      << manifest.input_points << " points)";
+      << manifest.input_points << " points), serving "
+      << (*tiles)->served().size() << " of its "
+      << (*tiles)->router().num_tiles() << " tiles";
   DatasetOrigin origin;
   origin.source = manifest.source;
   origin.crs = manifest.crs;
@@ -237,7 +247,8 @@ Status DatasetBuilder::MapTileSet(const DatasetSlot& slot,
                    Engine::CreateFromMeshFile(manifest.fingerprint,
                                               std::move(origin), options));
   LogBuilt(*engine, Tag(slot));
-  *built = std::move(engine);
+  built->engine = std::move(engine);
+  built->tiles = *std::move(tiles);
   return Status::OK();
 }
 
@@ -326,7 +337,7 @@ void DatasetBuilder::RecordSourceKey(const std::string& spec,
 }
 
 Status DatasetBuilder::Build(const DatasetSlot& slot, const std::string& spec,
-                             Engine* serving, std::shared_ptr<Engine>* built) {
+                             Engine* serving, BuiltDataset* built) {
   if (serving != nullptr) {
     SaveTuningStateOrWarn(*serving, Tag(slot), "before the reload");
   }

@@ -50,7 +50,7 @@ class DatasetBuilder {
   // logged. A dataset over the budget is ResourceExhausted with the
   // loader's message and a pointer to --max-dataset-points.
   Status Build(const DatasetSlot& slot, const std::string& spec,
-               Engine* serving, std::shared_ptr<Engine>* built);
+               Engine* serving, BuiltDataset* built);
 
   // The tag of the log lines about `slot`: its name when the server holds
   // several datasets, else none.
@@ -72,9 +72,10 @@ class DatasetBuilder {
                std::shared_ptr<Engine>* built);
   // The engine of the tile set `spec` names (tile_set_source.h): its mesh
   // file mapped, outside the point budget (its memory is the page
-  // cache's). The manifest's or the mesh file's error otherwise.
+  // cache's), and the tiles --tiles selects of it (all by default). The
+  // manifest's, the selector's or the mesh file's error otherwise.
   Status MapTileSet(const DatasetSlot& slot, const std::string& spec,
-                    EngineOptions options, std::shared_ptr<Engine>* built);
+                    EngineOptions options, BuiltDataset* built);
   // With --mesh-cache and a generator spec whose mesh was recorded there:
   // MapMesh without generating the points. False otherwise.
   bool MapGenerated(const DatasetSlot& slot, const std::string& spec,
@@ -102,7 +103,7 @@ class DatasetBuilder {
                               const DatasetInfo& info, std::string_view tag);
   // Loads `spec` within the budget and triangulates it.
   Status LoadAndTriangulate(const DatasetSlot& slot, const std::string& spec,
-                            std::shared_ptr<Engine>* built);
+                            BuiltDataset* built);
   // The engine options of `slot` (its state dir), making that dir.
   Status EngineOptionsFor(const DatasetSlot& slot, EngineOptions* options);
 

@@ -13,25 +13,23 @@ DatasetSlot::DatasetSlot(size_t index, DatasetConfig config,
       reload_policy_(std::move(policy)),
       reloader_(
           [this, build = std::move(build)](const std::string& spec,
-                                           std::shared_ptr<Engine>* built) {
+                                           BuiltDataset* built) {
             if (!build) {
               return Status::FailedPrecondition("this server cannot reload");
             }
             return build(*this, spec.empty() ? config_.spec : spec,
                          serving().engine.get(), built);
           },
-          [this](std::shared_ptr<Engine> engine) {
-            return Publish(std::move(engine));
-          }) {}
+          [this](BuiltDataset built) { return Publish(std::move(built)); }) {}
 
 DatasetSlot::Serving DatasetSlot::serving() const {
   MutexLock lock(&mu_);
-  return Serving{engine_, generation_};
+  return Serving{built_.engine, built_.tiles, generation_};
 }
 
-uint64_t DatasetSlot::Publish(std::shared_ptr<Engine> engine) {
+uint64_t DatasetSlot::Publish(BuiltDataset built) {
   MutexLock lock(&mu_);
-  engine_ = std::move(engine);
+  built_ = std::move(built);
   return ++generation_;
 }
 

@@ -38,14 +38,16 @@ class DatasetSlot;
 // first build); runs on the slot's reload thread.
 using DatasetBuild =
     std::function<Status(const DatasetSlot& slot, const std::string& spec,
-                         Engine* serving, std::shared_ptr<Engine>* built)>;
+                         Engine* serving, BuiltDataset* built)>;
 
 class DatasetSlot {
  public:
   // What a slot serves at one moment.
   struct Serving {
     std::shared_ptr<Engine> engine;  // null while the first build runs
-    uint64_t generation = 0;         // 1 for the first engine, +1 per reload
+    // The tiles it serves, for a tile set (BuiltDataset); null otherwise.
+    std::shared_ptr<const ShardTiles> tiles;
+    uint64_t generation = 0;  // 1 for the first engine, +1 per reload
   };
 
   // Slot `index` of a registry, with `config`, reloading what `policy`
@@ -68,9 +70,9 @@ class DatasetSlot {
 
   // The engine new calls use, and its generation.
   Serving serving() const EXCLUDES(mu_);
-  // Makes `engine` serve new calls; calls already running keep theirs.
+  // Makes `built` serve new calls; calls already running keep theirs.
   // Returns its generation.
-  uint64_t Publish(std::shared_ptr<Engine> engine) EXCLUDES(mu_);
+  uint64_t Publish(BuiltDataset built) EXCLUDES(mu_);
 
   // Builds `spec` ("": the configured spec) on the slot's reload thread and
   // publishes it (see EngineReloader::Start). FailedPrecondition "reload in
@@ -84,7 +86,7 @@ class DatasetSlot {
   const DatasetConfig config_;
   const ReloadPolicy reload_policy_;
   mutable Mutex mu_;
-  std::shared_ptr<Engine> engine_ GUARDED_BY(mu_);
+  BuiltDataset built_ GUARDED_BY(mu_);
   uint64_t generation_ GUARDED_BY(mu_) = 0;
   EngineReloader reloader_;  // last: its thread uses the members above
 };

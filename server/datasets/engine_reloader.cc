@@ -19,9 +19,10 @@ Status EngineReloader::Start(const std::string& dataset, Done done) {
   if (worker_.joinable()) worker_.join();
   running_ = true;
   worker_ = std::thread([this, dataset, done = std::move(done)] {
-    std::shared_ptr<Engine> engine;
-    const Status status = build_(dataset, &engine);
-    const uint64_t generation = status.ok() ? publish_(engine) : 0;
+    BuiltDataset built;
+    const Status status = build_(dataset, &built);
+    std::shared_ptr<Engine> engine = built.engine;
+    const uint64_t generation = status.ok() ? publish_(std::move(built)) : 0;
     {
       // Finished before `done` answers: whoever hears of this reload may
       // start the next one at once.

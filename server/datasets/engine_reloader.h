@@ -21,16 +21,17 @@
 #include "common/mutex.h"
 #include "locator/engine.h"
 #include "locator/status.h"
+#include "server/datasets/built_dataset.h"
 
 namespace locator {
 
 class EngineReloader {
  public:
-  // Builds an engine from a dataset spec.
-  using Build = std::function<Status(const std::string& dataset,
-                                     std::shared_ptr<Engine>* engine)>;
+  // Builds an engine (and its tiles) from a dataset spec.
+  using Build =
+      std::function<Status(const std::string& dataset, BuiltDataset* built)>;
   // Makes a built engine serve; returns its generation.
-  using Publish = std::function<uint64_t(std::shared_ptr<Engine> engine)>;
+  using Publish = std::function<uint64_t(BuiltDataset built)>;
   // Receives a reload's outcome: OK, the engine and its generation; or the
   // error, null and 0.
   using Done =

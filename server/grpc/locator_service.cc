@@ -107,7 +107,7 @@ StreamReactor* LocatorService::LocateStream(
               const Admission& pinned =
                   resolved.try_emplace(dataset->dataset, *std::move(dataset))
                       .first->second;
-              return app->LocateOn(*pinned.engine, request, result);
+              return app->LocateOn(pinned, request, result);
             });
       });
 }
@@ -146,6 +146,17 @@ grpc::ServerUnaryReactor* LocatorService::Reload(
                        reactor->Finish(ToGrpcStatus(status));
                      });
         return reactor;
+      });
+}
+
+grpc::ServerUnaryReactor* LocatorService::GetTopology(
+    grpc::CallbackServerContext* context, const v1::GetTopologyRequest* request,
+    v1::GetTopologyResponse* response) {
+  return AdmitThen<grpc::ServerUnaryReactor>(
+      app_, context, AccessPolicy::Scope::kData, request->dataset(),
+      [&](Admission call) {
+        app_->GetTopology(call, response);
+        return FinishNow(context, Status::OK());
       });
 }
 

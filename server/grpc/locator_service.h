@@ -48,6 +48,10 @@ class LocatorService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
                                    const v1::ReloadRequest* request,
                                    v1::ReloadResponse* response) override;
+  grpc::ServerUnaryReactor* GetTopology(
+      grpc::CallbackServerContext* context,
+      const v1::GetTopologyRequest* request,
+      v1::GetTopologyResponse* response) override;
   grpc::ServerUnaryReactor* ListDatasets(
       grpc::CallbackServerContext* context,
       const v1::ListDatasetsRequest* request,

@@ -30,6 +30,7 @@
 #include "server/grpc/locator_service.h"
 #include "server/http/http_frontend.h"
 #include "server/main/server_runner.h"
+#include "server/route/router_main.h"
 #include "server/metrics/rpc_metrics.h"
 
 namespace locator {
@@ -176,6 +177,7 @@ int Main(int argc, char** argv) {
     return *exit_code;
   }
   SetLogLevel(config.log_level);
+  if (config.route) ExitWithoutTeardown(RunRouter(kProgram, config));
 
   DatasetBuilder builder(config);
   LocatorApp app(LocatorAppOptions{
@@ -190,8 +192,8 @@ int Main(int argc, char** argv) {
       .reload_dir = config.reload_dir,
       .build_engine = [&builder](const DatasetSlot& slot,
                                  const std::string& spec, Engine* serving,
-                                 std::shared_ptr<Engine>* engine) {
-        return builder.Build(slot, spec, serving, engine);
+                                 BuiltDataset* built) {
+        return builder.Build(slot, spec, serving, built);
       }});
   LocatorService service(&app);
   // With --http-listen, every gRPC call is counted for /metrics.

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "client/channel_options.h"
+#include "common/channel_options.h"
 #include "client/health_check.h"
 #include "locator/status.h"
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "client/channel_options.h"
+#include "common/channel_options.h"
 #include "locator/status.h"
 
 namespace locator::test {

@@ -13,7 +13,7 @@
 #include "common/status_macros.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/cgal/triangulation_builder.h"
-#include "server/core/geometry/hilbert.h"
+#include "common/hilbert.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/mesh_vectors.h"
 

@@ -10,7 +10,7 @@
 
 #include "server/core/cgal/orientation.h"
 #include "server/core/geometry/barycentric.h"
-#include "server/core/geometry/hilbert.h"
+#include "common/hilbert.h"
 #include "server/core/geometry/segment_distance.h"
 #include "server/core/geometry/wide_math.h"
 

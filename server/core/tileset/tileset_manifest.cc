@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <span>
 #include <system_error>
 #include <utility>
 
@@ -101,6 +102,48 @@ bool ParseUnsigned(std::string_view value, uint64_t* out, int base) {
   return error == std::errc() && end != value.data();
 }
 
+// Parses the JSON array of numbers at the start of `value` (as JsonWriter
+// writes one: no spaces) into *out, which must hold exactly that many.
+template <typename Number>
+bool ParseArray(std::string_view value, std::span<Number> out) {
+  if (value.empty() || value[0] != '[') return false;
+  const char* at = value.data() + 1;
+  const char* const end = value.data() + value.size();
+  for (size_t k = 0; k < out.size(); ++k) {
+    if (k > 0) {
+      if (at == end || *at != ',') return false;
+      ++at;
+    }
+    const auto [next, error] = std::from_chars(at, end, out[k]);
+    if (error != std::errc() || next == at) return false;
+    at = next;
+  }
+  return at != end && *at == ']';
+}
+
+// The first cell of each tile in the manifest's "tiles" array (every
+// "cells": member after it, in order), checked to follow each other from
+// cell 0 up to 4^level.
+bool ParseTileCells(std::string_view text, int level,
+                    std::vector<uint32_t>* first_cells) {
+  const size_t tiles_at = text.find("\"tiles\":[");
+  if (tiles_at == std::string_view::npos) return false;
+  constexpr std::string_view kCells = "\"cells\":";
+  uint64_t expected_first = 0;
+  for (size_t at = text.find(kCells, tiles_at); at != std::string_view::npos;
+       at = text.find(kCells, at + 1)) {
+    uint64_t range[2];
+    if (!ParseArray<uint64_t>(text.substr(at + kCells.size()), range) ||
+        range[0] != expected_first || range[1] <= range[0]) {
+      return false;
+    }
+    first_cells->push_back(static_cast<uint32_t>(range[0]));
+    expected_first = range[1];
+  }
+  return !first_cells->empty() &&
+         expected_first == uint64_t{1} << (2 * level);
+}
+
 }  // namespace
 
 Status ParseManifestSummary(std::string_view text, std::string_view name,
@@ -134,6 +177,20 @@ Status ParseManifestSummary(std::string_view text, std::string_view name,
   if (!ParseString(ValueOf(text, "mesh_file"), &s.mesh_file) ||
       s.mesh_file.empty() || s.mesh_file.find('/') != std::string::npos) {
     return bad("no mesh_file (a file name beside the manifest)");
+  }
+  double box[4];
+  if (!ParseArray<double>(ValueOf(text, "bounds"), box) ||
+      !(box[0] <= box[2] && box[1] <= box[3])) {
+    return bad("no bounds [min_x,min_y,max_x,max_y]");
+  }
+  s.bounds = BoundingBox{box[0], box[1], box[2], box[3]};
+  uint64_t level = 0;
+  if (!ParseUnsigned(ValueOf(text, "grid_level"), &level, 10) || level > 15) {
+    return bad("no grid_level of 0..15");
+  }
+  s.grid_level = static_cast<int>(level);
+  if (!ParseTileCells(text, s.grid_level, &s.tile_first_cells)) {
+    return bad("tiles' cells do not follow each other from cell 0");
   }
   *out = std::move(s);
   return Status::OK();

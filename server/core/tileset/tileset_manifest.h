@@ -55,11 +55,17 @@ struct TileSetManifestSummary {
   uint64_t fingerprint = 0;
   uint64_t input_points = 0;
   std::string mesh_file;  // relative to the manifest's directory
+  // The tiles as routing sees them (common/routing/tile_router.h): the
+  // grid's box and level, and the first cell of each tile, ascending.
+  BoundingBox bounds;
+  int grid_level = 0;
+  std::vector<uint32_t> tile_first_cells;
 };
 
 // Reads the fields above from manifest text as ManifestJson writes it.
 // InvalidArgument naming `name` and the first field that is missing or
-// malformed (or the format or version that is not this one).
+// malformed (or the format or version that is not this one, or tiles whose
+// cells do not follow each other from cell 0).
 [[nodiscard]] Status ParseManifestSummary(std::string_view text,
                                           std::string_view name,
                                           TileSetManifestSummary* out);

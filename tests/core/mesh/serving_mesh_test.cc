@@ -16,7 +16,7 @@
 
 #include "locator/dataset_sources.h"
 #include "server/core/cgal/triangulation.h"
-#include "server/core/geometry/hilbert.h"
+#include "common/hilbert.h"
 #include "server/core/mesh/mesh_walk.h"
 #include "tests/core/test_datasets.h"
 

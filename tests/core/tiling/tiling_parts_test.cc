@@ -15,7 +15,7 @@
 #include "locator/dataset_sources.h"
 #include "server/core/cgal/orientation.h"
 #include "server/core/cgal/triangulation.h"
-#include "server/core/geometry/hilbert.h"
+#include "common/hilbert.h"
 #include "server/core/tiling/cells/cell_grid.h"
 #include "server/core/tiling/cells/circumdisk.h"
 #include "server/core/tiling/cells/halo_cells.h"

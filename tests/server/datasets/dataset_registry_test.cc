@@ -45,7 +45,7 @@ class Builds {
  public:
   DatasetBuild Build() {
     return [this](const DatasetSlot& slot, const std::string& spec,
-                  Engine* serving, std::shared_ptr<Engine>* built) {
+                  Engine* serving, BuiltDataset* built) {
       std::lock_guard<std::mutex> lock(mu_);
       built_[slot.name()].push_back(spec);
       serving_[slot.name()] = serving;
@@ -55,7 +55,7 @@ class Builds {
       StatusOr<std::unique_ptr<Engine>> engine =
           Engine::Create(*std::move(dataset), EngineOptions());
       if (!engine.ok()) return engine.status();
-      *built = *std::move(engine);
+      built->engine = *std::move(engine);
       return Status::OK();
     };
   }
@@ -152,10 +152,10 @@ TEST(DatasetRegistryTest, ReloadsOfDifferentSlotsRunAtOnce) {
   std::atomic<int> started{0};
   DatasetRegistry registry(kDatasets, "",
                            [&](const DatasetSlot& slot, const std::string&,
-                               Engine*, std::shared_ptr<Engine>* built) {
+                               Engine*, BuiltDataset* built) {
                              if (++started == 2) both_started.set_value();
                              released.wait();
-                             *built =
+                             built->engine =
                                  SmallEngine(100 + slot.index(), slot.index());
                              return Status::OK();
                            });

@@ -30,12 +30,12 @@ std::shared_ptr<Engine> SmallEngine(uint64_t seed) {
 class HeldBuild {
  public:
   EngineReloader::Build Build() {
-    return [this](const std::string& dataset, std::shared_ptr<Engine>* engine) {
+    return [this](const std::string& dataset, BuiltDataset* built) {
       built_datasets_.push_back(dataset);
       if (built_datasets_.size() == 1) started_.set_value();
       released_.wait();
       if (dataset == "bad") return Status::InvalidArgument("bad dataset");
-      *engine = SmallEngine(built_datasets_.size());
+      built->engine = SmallEngine(built_datasets_.size());
       return Status::OK();
     };
   }
@@ -67,8 +67,8 @@ TEST(EngineReloaderTest, BuildsOnItsThreadPublishesThenCallsDone) {
   std::vector<std::shared_ptr<Engine>> published;
   std::unique_ptr<EngineReloader> reloader;
   reloader = std::make_unique<EngineReloader>(
-      held.Build(), [&](std::shared_ptr<Engine> engine) {
-        published.push_back(std::move(engine));
+      held.Build(), [&](BuiltDataset built) {
+        published.push_back(std::move(built.engine));
         return uint64_t{41 + published.size()};
       });
   std::promise<Outcome> outcome;
@@ -99,7 +99,7 @@ TEST(EngineReloaderTest, BuildsOnItsThreadPublishesThenCallsDone) {
 TEST(EngineReloaderTest, SecondStartWhileBuildingIsRefused) {
   HeldBuild held;
   std::atomic<int> publishes{0};
-  EngineReloader reloader(held.Build(), [&](std::shared_ptr<Engine>) {
+  EngineReloader reloader(held.Build(), [&](BuiltDataset) {
     return static_cast<uint64_t>(++publishes);
   });
   std::promise<uint64_t> first_generation;
@@ -138,7 +138,7 @@ TEST(EngineReloaderTest, SecondStartWhileBuildingIsRefused) {
 TEST(EngineReloaderTest, FailedBuildIsNotPublished) {
   HeldBuild held;
   std::atomic<int> publishes{0};
-  EngineReloader reloader(held.Build(), [&](std::shared_ptr<Engine>) {
+  EngineReloader reloader(held.Build(), [&](BuiltDataset) {
     return static_cast<uint64_t>(++publishes);
   });
   std::promise<Outcome> outcome;
@@ -164,7 +164,7 @@ TEST(EngineReloaderTest, DestructorWaitsForTheRunningBuild) {
   HeldBuild held;
   std::atomic<bool> published{false};
   auto reloader = std::make_unique<EngineReloader>(
-      held.Build(), [&](std::shared_ptr<Engine>) {
+      held.Build(), [&](BuiltDataset) {
         published = true;
         return uint64_t{1};
       });

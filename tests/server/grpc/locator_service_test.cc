@@ -49,10 +49,10 @@ class HeldBuild {
 
   DatasetBuild Build() {
     return [this](const DatasetSlot&, const std::string&, Engine*,
-                  std::shared_ptr<Engine>* built) {
+                  BuiltDataset* built) {
       started_.set_value();
       released_.get_future().wait();
-      *built = next_;
+      built->engine = next_;
       return Status::OK();
     };
   }
@@ -74,7 +74,7 @@ TEST(LocatorServiceTest, CallsInFlightFinishOnTheEngineTheyStartedWith) {
   LocatorApp app(options);
   LocatorService service(&app);
   DatasetSlot& dataset = app.datasets().default_slot();
-  EXPECT_EQ(dataset.Publish(old_engine), 1u);
+  EXPECT_EQ(dataset.Publish({.engine = old_engine}), 1u);
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
 
@@ -166,7 +166,7 @@ TEST(LocatorServiceTest, CallsBeforePublishAreRefusedAsLoading) {
 TEST(LocatorServiceTest, DrainRefusesNewCalls) {
   LocatorApp app(LocatorAppOptions{});
   LocatorService service(&app);
-  app.datasets().default_slot().Publish(UniformEngine(500, 3));
+  app.datasets().default_slot().Publish({.engine = UniformEngine(500, 3)});
   test::InProcessServer server(&service);
   auto stub = server.NewStub();
   app.Drain(std::chrono::system_clock::now());

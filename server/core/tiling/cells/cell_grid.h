@@ -22,7 +22,7 @@
 #include <cstdint>
 
 #include "locator/geometry.h"
-#include "server/core/geometry/hilbert.h"
+#include "common/hilbert.h"
 
 namespace locator {
 

@@ -3,8 +3,8 @@
 //
 // Thread-safety: pure functions.
 
-#ifndef LOCATOR_CORE_HILBERT_H_
-#define LOCATOR_CORE_HILBERT_H_
+#ifndef LOCATOR_COMMON_HILBERT_H_
+#define LOCATOR_COMMON_HILBERT_H_
 
 #include <algorithm>
 #include <array>
@@ -113,4 +113,4 @@ inline std::vector<uint32_t> HilbertOrder(std::span<const Point2> points,
 
 }  // namespace locator
 
-#endif  // LOCATOR_CORE_HILBERT_H_
+#endif  // LOCATOR_COMMON_HILBERT_H_

@@ -1,4 +1,4 @@
-#include "client/channel_options.h"
+#include "common/channel_options.h"
 
 #include <grpcpp/support/client_interceptor.h>
 
@@ -13,7 +13,7 @@ namespace {
 // Retries UNAVAILABLE only: it means the call never reached a live server
 // (connection refused or reset while it restarts), so even Retune is safe to
 // send again. Backoff 50 ms doubling to 1 s covers a typical restart.
-constexpr char kRetryServiceConfig[] = R"json({
+constexpr char kRetryMethodConfig[] = R"json(
   "methodConfig": [{
     "name": [{"service": "locator.v1.Locator"},
              {"service": "grpc.health.v1.Health"}],
@@ -24,8 +24,20 @@ constexpr char kRetryServiceConfig[] = R"json({
       "backoffMultiplier": 2,
       "retryableStatusCodes": ["UNAVAILABLE"]
     }
-  }]
-})json";
+  }])json";
+constexpr char kRoundRobinConfig[] = R"json(
+  "loadBalancingConfig": [{"round_robin": {}}])json";
+
+// The service config `options` ask for; empty: none.
+std::string ServiceConfig(const ChannelOptions& options) {
+  std::string parts;
+  if (options.retry_unavailable) parts += kRetryMethodConfig;
+  if (options.balance_addresses) {
+    if (!parts.empty()) parts += ",";
+    parts += kRoundRobinConfig;
+  }
+  return parts.empty() ? "" : "{" + parts + "}";
+}
 
 // Adds the authorization header to a call's initial metadata. (gRPC's call
 // credentials would do the same, but refuse to travel over plaintext.)
@@ -80,8 +92,8 @@ std::shared_ptr<grpc::Channel> CreateLocatorChannel(
   grpc::ChannelArguments args;
   args.SetMaxReceiveMessageSize(options.max_message_bytes);
   args.SetMaxSendMessageSize(options.max_message_bytes);
-  if (options.retry_unavailable) {
-    args.SetServiceConfigJSON(kRetryServiceConfig);
+  if (const std::string config = ServiceConfig(options); !config.empty()) {
+    args.SetServiceConfigJSON(config);
   }
   if (options.own_connection) {
     // Channels with equal arguments share subchannels (and so one TCP

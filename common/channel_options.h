@@ -1,4 +1,5 @@
-// ChannelOptions: how a client (`locator`, `locator-load`, the tests) reaches
+// ChannelOptions: how a client (`locator`, `locator-load`, the router, the
+// tests) reaches
 // a locator server (address, message limit, retries, TLS, bearer token), and
 // CreateLocatorChannel, which builds a channel from them.
 //
@@ -10,8 +11,8 @@
 //
 // Thread-safety: plain values and free functions; channels are thread-safe.
 
-#ifndef LOCATOR_CLIENT_CHANNEL_OPTIONS_H_
-#define LOCATOR_CLIENT_CHANNEL_OPTIONS_H_
+#ifndef LOCATOR_COMMON_CHANNEL_OPTIONS_H_
+#define LOCATOR_COMMON_CHANNEL_OPTIONS_H_
 
 #include <grpcpp/grpcpp.h>
 
@@ -49,6 +50,9 @@ struct ChannelOptions {
   // Open a TCP connection of this channel's own instead of sharing one with
   // other channels to the same target.
   bool own_connection = false;
+  // Spread calls round-robin over every address the target resolves to
+  // (a Kubernetes headless Service's replicas) instead of using the first.
+  bool balance_addresses = false;
   ChannelSecurity security = {};
 };
 
@@ -79,4 +83,4 @@ Status LoadChannelSecurity(const ChannelSecurityFlags& flags,
 
 }  // namespace locator
 
-#endif  // LOCATOR_CLIENT_CHANNEL_OPTIONS_H_
+#endif  // LOCATOR_COMMON_CHANNEL_OPTIONS_H_
