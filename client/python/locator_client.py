@@ -19,6 +19,13 @@
                                      cell_size=50, nodata=-9999)
         print(values.shape, header.geotransform)
 
+    # A tile set served by shards (locatord --tiles K/N) behind a router
+    # (locatord --route --shards ...): asks the router once for the
+    # dataset's topology, then sends each point straight to its shard.
+    with LocatorClient("router:50051", dataset="big", route=True) as client:
+        print(len(client.topology().shards))
+        answers = client.locate_batch(xs, ys, values=True)
+
 Every call gets the client's deadline (a Grid stream: one deadline for the
 whole stream). A failed call raises LocatorError with the gRPC status
 code's name and the server's message. LocateBatch sends the points as
@@ -32,16 +39,30 @@ are client-wide defaults given to the constructor, and every call may give
 its own (None: the client's). `interpolation=` is "linear" (the server's
 default), "natural-neighbor" or "nearest".
 
+Routing: with `route=True`, locate() and locate_batch() first ask the
+target for the dataset's topology (GetTopology, once per dataset; the
+client keeps it for its life) and send each point to the shard serving
+its tile, as a router (locatord --route) would: a batch is split into one
+LocateBatch per shard, sent concurrently, and its answers merged back into
+input order (the same Locations an unrouted call returns). A dataset that
+is not tiled, or served by one shard, is called on the target as without
+routing. An incomplete topology (a shard started with --tiles answers for
+itself alone) raises LocatorError FAILED_PRECONDITION; points in a `crs`
+raise INVALID_ARGUMENT (tiles are in the dataset's own coordinates: send
+those to a router). An error from a shard names it in its details.
+
 Needs grpcio and protobuf (Debian: python3-grpcio, python3-protobuf) and the
 stubs generated from proto/locator/v1/locator.proto; grid() also needs
 numpy (python3-numpy). The build puts the stubs and a copy of this module
 in build/python, so PYTHONPATH=build/python makes both importable.
 """
 
+import bisect
 import dataclasses
 import json
 import math
-from typing import Optional, Sequence, Tuple
+import threading
+from typing import List, Optional, Sequence, Tuple
 
 import grpc
 
@@ -74,6 +95,79 @@ _INTERPOLATIONS = {
     "natural-neighbor": locator_pb2.INTERPOLATION_NATURAL_NEIGHBOR,
     "nearest": locator_pb2.INTERPOLATION_NEAREST,
 }
+
+# HilbertKey (common/hilbert.h), by which tile sets are cut into tiles:
+# a 2^16 x 2^16 grid of cells over the tile set's bounds. A tile set's
+# grid is coarser, at most 2^15 x 2^15 (its cells count in a uint32).
+_HILBERT_BITS = 16
+_HILBERT_CELLS = 1 << _HILBERT_BITS
+_MAX_GRID_LEVEL = 15
+
+
+def _hilbert_walk_table() -> Tuple[int, ...]:
+    """hilbert.h's kWalkTable: the Hilbert walk four levels at a time.
+    From the largest quadrants down, a quadrant's bits, seen in the frame
+    the quadrants above it left (x and y exchanged or not, both
+    complemented or not), give two bits of the position, and the lower
+    left and right quadrants turn the frame. Entry (state << 8 | 4 bits of
+    x << 4 | 4 bits of y) holds the 8 position bits of those four levels
+    and, above them, the state after them (swap | complement << 1)."""
+    table = [0] * 1024
+    for state in range(4):
+        for xs in range(16):
+            for ys in range(16):
+                swap, complement = state & 1, state >> 1
+                d = 0
+                for level in range(3, -1, -1):
+                    bx = ((xs >> level) & 1) ^ complement
+                    by = ((ys >> level) & 1) ^ complement
+                    rx, ry = (by, bx) if swap else (bx, by)
+                    d = (d << 2) | ((3 * rx) ^ ry)
+                    if ry == 0:
+                        complement ^= rx
+                        swap ^= 1
+                table[state << 8 | xs << 4 | ys] = (
+                    d | (swap | complement << 1) << 8)
+    return tuple(table)
+
+
+_WALK_TABLE = _hilbert_walk_table()
+
+
+def _hilbert_index(x: int, y: int) -> int:
+    """The position of cell (x, y) of the 2^16 x 2^16 grid along the
+    Hilbert curve (HilbertIndex)."""
+    d = state = 0
+    for shift in (12, 8, 4, 0):
+        step = _WALK_TABLE[state << 8 | ((x >> shift) & 15) << 4 |
+                           ((y >> shift) & 15)]
+        d = d << 8 | (step & 0xff)
+        state = step >> 8
+    return d
+
+
+def _hilbert_cell(v: float, lo: float, hi: float) -> int:
+    """The cell of coordinate v in a 2^16 grid over [lo, hi]
+    (HilbertCell): values outside take the nearest border cell, NaN cell
+    0; computed on halves where hi - lo overflows a double."""
+    extent = hi - lo
+    t = 0.0
+    if math.isfinite(extent):
+        if extent > 0:
+            t = (v - lo) / extent * _HILBERT_CELLS
+    else:
+        t = (v * 0.5 - lo * 0.5) / (hi * 0.5 - lo * 0.5) * _HILBERT_CELLS
+    if not t > 0:  # also NaN
+        return 0
+    return _HILBERT_CELLS - 1 if t >= _HILBERT_CELLS - 1 else int(t)
+
+
+def _hilbert_key(x: float, y: float,
+                 bounds: Tuple[float, float, float, float]) -> int:
+    """The Hilbert position of (x, y)'s cell in the 2^16 x 2^16 grid over
+    `bounds` (min_x, min_y, max_x, max_y) (HilbertKey)."""
+    return _hilbert_index(_hilbert_cell(x, bounds[0], bounds[2]),
+                          _hilbert_cell(y, bounds[1], bounds[3]))
 
 
 class LocatorError(Exception):
@@ -235,35 +329,206 @@ def _broken_grid(what: str) -> LocatorError:
     return LocatorError("INTERNAL", f"the server's grid stream: {what}")
 
 
+def _rpc_error(error: grpc.RpcError,
+               shard: Optional[str] = None) -> LocatorError:
+    """A failed call as a LocatorError; a routed call's names its shard."""
+    details = error.details()
+    if shard is not None:
+        details = f"shard {shard}: {details}"
+    return LocatorError(error.code().name, details)
+
+
+def _location(answer: locator_pb2.LocateResponse) -> Location:
+    return Location(
+        type=_type_name(answer.type),
+        triangle_id=answer.triangle_id,
+        vertex_ids=tuple(answer.vertex_ids),
+        barycentric=tuple(answer.barycentric),
+        value=answer.value if answer.HasField("value") else None,
+        cost=answer.cost.total)
+
+
+def _batch_locations(answer: locator_pb2.LocateBatchResponse, count: int,
+                     server: str = "the server") -> list:
+    """The Location of each of the `count` points of a LocateBatch answer,
+    in order; INTERNAL if `server` answered another number of points."""
+    if len(answer.types) != count:
+        raise LocatorError(
+            "INTERNAL", f"{server} answered {len(answer.types)} of "
+            f"{count} points")
+
+    def triple(column, i):
+        return tuple(column[3 * i:3 * i + 3]) if column else ()
+
+    def value(i):
+        if not answer.values or math.isnan(answer.values[i]):
+            return None
+        return answer.values[i]
+
+    return [
+        Location(type=_type_name(answer.types[i]),
+                 triangle_id=answer.triangle_ids[i],
+                 vertex_ids=triple(answer.vertex_ids, i),
+                 barycentric=triple(answer.barycentric, i),
+                 value=value(i),
+                 cost=answer.costs[i])
+        for i in range(count)
+    ]
+
+
+@dataclasses.dataclass(frozen=True)
+class _ShardMap:
+    """A tiled dataset's topology as routing uses it (the C++ clients'
+    ShardMap, common/routing/shard_map.h). Tile t holds the cells
+    [first_cells[t], first_cells[t + 1]) along the Hilbert curve of the
+    2^grid_level x 2^grid_level grid over `bounds`; shard_of_tile[t]
+    serves it, at targets[shard_of_tile[t]] ("": the client's target)."""
+
+    dataset: str
+    bounds: Tuple[float, float, float, float]
+    grid_level: int
+    first_cells: Tuple[int, ...]
+    shard_of_tile: Tuple[int, ...]
+    targets: Tuple[str, ...]
+
+    def tile_of(self, x: float, y: float) -> int:
+        """The tile holding (x, y); every point has one (HilbertCell)."""
+        cell = _hilbert_key(x, y, self.bounds) >> (
+            2 * (_HILBERT_BITS - self.grid_level))
+        return bisect.bisect_right(self.first_cells, cell) - 1
+
+    def shard_of(self, x: float, y: float) -> int:
+        """The index in `targets` of the shard serving (x, y)."""
+        return self.shard_of_tile[self.tile_of(x, y)]
+
+    def split(self, xs: Sequence[float], ys: Sequence[float]
+              ) -> List[List[int]]:
+        """positions[s]: the indices of the points (xs[i], ys[i]) shard s
+        serves, ascending. LocatorError INVALID_ARGUMENT, as the server's,
+        for a point with a coordinate that is not finite (a shard would
+        name it by its index in its own part)."""
+        positions = [[] for _ in self.targets]
+        for i, (x, y) in enumerate(zip(xs, ys)):
+            x, y = float(x), float(y)
+            if not (math.isfinite(x) and math.isfinite(y)):
+                raise LocatorError(
+                    "INVALID_ARGUMENT",
+                    f"point {i} has a non-finite coordinate ({x!r}, {y!r})")
+            positions[self.shard_of(x, y)].append(i)
+        return positions
+
+
+def _shard_map(topology: locator_pb2.GetTopologyResponse
+               ) -> Optional[_ShardMap]:
+    """How to route the points of `topology`'s dataset: None when the
+    server that answered serves them all (a dataset that is not tiled, or
+    one shard). LocatorError FAILED_PRECONDITION when a tile has no shard,
+    INTERNAL when the topology is malformed."""
+    name = topology.dataset
+
+    def malformed(what: str) -> LocatorError:
+        return LocatorError(
+            "INTERNAL", f"the server's topology of dataset '{name}': {what}")
+
+    shard_of_tile = []
+    if topology.tiled:
+        level = topology.grid_level
+        if level > _MAX_GRID_LEVEL:
+            raise malformed(f"grid level {level} is above {_MAX_GRID_LEVEL}")
+        b = topology.bounds
+        bounds = (b.min_x, b.min_y, b.max_x, b.max_y)
+        if not (all(map(math.isfinite, bounds)) and b.min_x <= b.max_x and
+                b.min_y <= b.max_y):
+            raise malformed("the bounds must be finite with min <= max")
+        cells = 1 << (2 * level)
+        first_cells = [tile.first_cell for tile in topology.tiles]
+        if not first_cells or first_cells[0] != 0 or any(
+                tile.end_cell != end or tile.end_cell <= tile.first_cell
+                for tile, end in zip(topology.tiles,
+                                     first_cells[1:] + [cells])):
+            raise malformed(f"the tiles do not cover its {cells} cells in "
+                            "order from cell 0")
+        shard_of_tile = [None] * len(first_cells)
+        for s, shard in enumerate(topology.shards):
+            for tile in shard.tiles:
+                if tile >= len(shard_of_tile):
+                    raise malformed(f"shard {s} lists tile {tile}, which "
+                                    "does not exist")
+                if shard_of_tile[tile] is not None:
+                    raise malformed(f"shard {s} lists tile {tile}, which "
+                                    f"shard {shard_of_tile[tile]} lists")
+                shard_of_tile[tile] = s
+    missing = (shard_of_tile.index(None) if None in shard_of_tile
+               else None)
+    if not topology.complete or missing is not None:
+        hole = "" if missing is None else f": tile {missing} has no shard"
+        raise LocatorError(
+            "FAILED_PRECONDITION",
+            f"topology of dataset '{name}' is incomplete{hole}; route "
+            "through a router (locatord --route)")
+    if not topology.tiled or len(topology.shards) == 1:
+        return None
+    return _ShardMap(dataset=name, bounds=bounds, grid_level=level,
+                     first_cells=tuple(first_cells),
+                     shard_of_tile=tuple(shard_of_tile),
+                     targets=tuple(shard.target for shard in topology.shards))
+
+
+def _merge_batch(parts: Sequence[Tuple[Sequence[int], Sequence[Location]]],
+                 count: int) -> list:
+    """The Locations of a batch of `count` points from the answers to its
+    parts: (positions, locations) pairs, locations[j] the answer for the
+    batch's point positions[j]."""
+    merged = [None] * count
+    for positions, locations in parts:
+        for i, location in zip(positions, locations):
+            merged[i] = location
+    return merged
+
+
 class LocatorClient:
-    """A channel to one locator server and the calls on it.
+    """A channel to one locator server and the calls on it (with
+    `route=True`, also a channel to each shard it routes to).
 
     Thread-safe: gRPC channels and stubs may be shared between threads.
-    Close it (or use it as a context manager) to release the channel.
+    Close it (or use it as a context manager) to release the channels.
     """
 
     def __init__(self, target: str, deadline_s: float = 5.0,
                  retry_unavailable: bool = False,
                  max_message_bytes: int = 64 << 20,
-                 dataset: str = "", crs: str = ""):
+                 dataset: str = "", crs: str = "", route: bool = False):
         """Opens a plaintext channel to `target` ("HOST:PORT"); every call
         gets `deadline_s` seconds. `retry_unavailable` adds a gRPC retry
         policy for UNAVAILABLE (a restarting server or a proxy's 502).
-        `dataset` and `crs` are the defaults of every call."""
+        `dataset` and `crs` are the defaults of every call. `route` sends
+        locate() and locate_batch() to the shards serving the points, by
+        the dataset's topology (the module's docstring: Routing); shard
+        channels get the same options."""
         options = [("grpc.max_send_message_length", max_message_bytes),
                    ("grpc.max_receive_message_length", max_message_bytes)]
         if retry_unavailable:
             options += [("grpc.enable_retries", 1),
                         ("grpc.service_config", _RETRY_SERVICE_CONFIG)]
+        self._target = target
+        self._options = options
         self._channel = grpc.insecure_channel(target, options=options)
         self._stub = locator_pb2_grpc.LocatorStub(self._channel)
         self._deadline_s = deadline_s
         self._dataset = dataset
         self._crs = crs
+        self._route = route
+        self._topologies = {}  # dataset field -> GetTopologyResponse
+        self._shard_maps = {}  # dataset field -> Optional[_ShardMap]
+        self._shards_lock = threading.Lock()
+        self._shard_channels = {}  # target -> (channel, stub)
 
     def close(self):
-        """Closes the channel; calls after this fail."""
+        """Closes the channels; calls after this fail."""
         self._channel.close()
+        with self._shards_lock:
+            for channel, _ in self._shard_channels.values():
+                channel.close()
 
     def __enter__(self):
         return self
@@ -271,11 +536,42 @@ class LocatorClient:
     def __exit__(self, *exc_info):
         self.close()
 
-    def _call(self, method, request):
+    def _call(self, method, request, shard: Optional[str] = None):
+        """Calls `method`; a failure raises LocatorError, naming `shard`
+        when the call was routed there."""
         try:
             return method(request, timeout=self._deadline_s)
         except grpc.RpcError as error:
-            raise LocatorError(error.code().name, error.details()) from None
+            raise _rpc_error(error, shard) from None
+
+    def _shard_stub(self, target: str) -> locator_pb2_grpc.LocatorStub:
+        """The stub of the shard at `target` ("": this client's target),
+        its channel opened on first use."""
+        if not target or target == self._target:
+            return self._stub
+        with self._shards_lock:
+            if target not in self._shard_channels:
+                channel = grpc.insecure_channel(target, options=self._options)
+                self._shard_channels[target] = (
+                    channel, locator_pb2_grpc.LocatorStub(channel))
+            return self._shard_channels[target][1]
+
+    def _routing(self, dataset: str, crs: str) -> Optional[_ShardMap]:
+        """The shards to route a call on `dataset` to; None: call the
+        target (no routing, or the dataset needs none)."""
+        if not self._route:
+            return None
+        if dataset not in self._shard_maps:
+            self._shard_maps[dataset] = _shard_map(self.topology(dataset))
+        shard_map = self._shard_maps[dataset]
+        if shard_map is not None and crs:
+            raise LocatorError(
+                "INVALID_ARGUMENT",
+                f"points in crs {crs!r} cannot be routed to the shards of "
+                f"dataset '{shard_map.dataset}': routing needs the "
+                "dataset's own coordinates (crs=\"\"), or send them to a "
+                "router (locatord --route), which transforms them")
+        return shard_map
 
     def _dataset_of(self, dataset: Optional[str]) -> str:
         """The dataset field of a request: the call's, else the client's."""
@@ -290,26 +586,25 @@ class LocatorClient:
     def locate(self, x: float, y: float, dataset: Optional[str] = None,
                crs: Optional[str] = None,
                interpolation: Optional[str] = None) -> Location:
-        """Locates the point (x, y)."""
+        """Locates the point (x, y) (routed: at the shard serving it)."""
+        scope = self._scope(dataset, crs)
         request = locator_pb2.LocateRequest(
             point=locator_pb2.Point(x=x, y=y),
-            interpolation=_interpolation(interpolation),
-            **self._scope(dataset, crs))
-        answer = self._call(self._stub.Locate, request)
-        return Location(
-            type=_type_name(answer.type),
-            triangle_id=answer.triangle_id,
-            vertex_ids=tuple(answer.vertex_ids),
-            barycentric=tuple(answer.barycentric),
-            value=answer.value if answer.HasField("value") else None,
-            cost=answer.cost.total)
+            interpolation=_interpolation(interpolation), **scope)
+        shard_map = self._routing(**scope)
+        if shard_map is None:
+            return _location(self._call(self._stub.Locate, request))
+        target = shard_map.targets[shard_map.shard_of(float(x), float(y))]
+        return _location(self._call(self._shard_stub(target).Locate,
+                                    request, shard=target or self._target))
 
     def locate_batch(self, xs: Sequence[float], ys: Sequence[float],
                      vertex_ids: bool = False, barycentric: bool = False,
                      values: bool = False, dataset: Optional[str] = None,
                      crs: Optional[str] = None,
                      interpolation: Optional[str] = None) -> list:
-        """Locates the points (xs[i], ys[i]) in one LocateBatch call and
+        """Locates the points (xs[i], ys[i]) in one LocateBatch call
+        (routed: one per shard with points, sent concurrently) and
         returns a Location per point, in input order. The flags ask the
         server for the optional columns. ValueError if xs and ys differ in
         length; LocatorError (INVALID_ARGUMENT) if a coordinate is not
@@ -317,34 +612,63 @@ class LocatorClient:
         if len(xs) != len(ys):
             raise ValueError(
                 f"xs has {len(xs)} points but ys has {len(ys)}")
+        scope = self._scope(dataset, crs)
         request = locator_pb2.LocateBatchRequest(
-            xs=xs, ys=ys, include_vertex_ids=vertex_ids,
-            include_barycentric=barycentric, include_values=values,
-            interpolation=_interpolation(interpolation),
-            **self._scope(dataset, crs))
-        answer = self._call(self._stub.LocateBatch, request)
-        if len(answer.types) != len(xs):
-            raise LocatorError(
-                "INTERNAL", f"the server answered {len(answer.types)} of "
-                f"{len(xs)} points")
+            include_vertex_ids=vertex_ids, include_barycentric=barycentric,
+            include_values=values,
+            interpolation=_interpolation(interpolation), **scope)
+        shard_map = self._routing(**scope)
+        if shard_map is None:
+            request.xs.extend(xs)
+            request.ys.extend(ys)
+            return _batch_locations(
+                self._call(self._stub.LocateBatch, request), len(xs))
+        return self._routed_batch(request, xs, ys, shard_map)
 
-        def triple(column, i):
-            return tuple(column[3 * i:3 * i + 3]) if column else ()
+    def _routed_batch(self, request: locator_pb2.LocateBatchRequest,
+                      xs: Sequence[float], ys: Sequence[float],
+                      shard_map: _ShardMap) -> list:
+        """Locates the points at their shards: one LocateBatch with the
+        fields of `request` (which has no points) per shard with points,
+        all sent before any answer is awaited; the answers merged into
+        input order."""
+        calls = []  # (positions, shard, future)
+        try:
+            for target, positions in zip(shard_map.targets,
+                                         shard_map.split(xs, ys)):
+                if not positions:
+                    continue
+                part = locator_pb2.LocateBatchRequest()
+                part.CopyFrom(request)
+                part.xs.extend(xs[i] for i in positions)
+                part.ys.extend(ys[i] for i in positions)
+                future = self._shard_stub(target).LocateBatch.future(
+                    part, timeout=self._deadline_s)
+                calls.append((positions, target or self._target, future))
+            answers = []
+            for positions, shard, future in calls:
+                try:
+                    answer = future.result()
+                except grpc.RpcError as error:
+                    raise _rpc_error(error, shard) from None
+                answers.append((positions, _batch_locations(
+                    answer, len(positions), f"shard {shard}")))
+        finally:
+            for _, _, future in calls:
+                future.cancel()  # a no-op once the call has ended
+        return _merge_batch(answers, len(xs))
 
-        def value(i):
-            if not answer.values or math.isnan(answer.values[i]):
-                return None
-            return answer.values[i]
-
-        return [
-            Location(type=_type_name(answer.types[i]),
-                     triangle_id=answer.triangle_ids[i],
-                     vertex_ids=triple(answer.vertex_ids, i),
-                     barycentric=triple(answer.barycentric, i),
-                     value=value(i),
-                     cost=answer.costs[i])
-            for i in range(len(xs))
-        ]
+    def topology(self, dataset: Optional[str] = None
+                 ) -> locator_pb2.GetTopologyResponse:
+        """The dataset's topology: its tiles and the shards serving them
+        (GetTopology). Fetched once per dataset, then kept for the
+        client's life."""
+        name = self._dataset_of(dataset)
+        if name not in self._topologies:
+            topology = self._call(self._stub.GetTopology,
+                                  locator_pb2.GetTopologyRequest(dataset=name))
+            self._topologies.setdefault(name, topology)
+        return self._topologies[name]
 
     def stats(self, dataset: Optional[str] = None
               ) -> locator_pb2.GetStatsResponse:
@@ -440,7 +764,7 @@ class LocatorClient:
                     message.values, dtype=numpy.float64).reshape(
                         rows, header.width)
         except grpc.RpcError as error:
-            raise LocatorError(error.code().name, error.details()) from None
+            raise _rpc_error(error) from None
         finally:
             stream.cancel()  # a no-op once the stream has ended
         if header is None:
