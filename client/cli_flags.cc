@@ -134,6 +134,10 @@ void AddCliFlags(CliLine* line, int64_t* deadline_ms, GridValues* grid,
              "datasets, profile)");
   flags->Add("retry", flag::Switch(&line->channel.retry_unavailable),
              "retry calls that fail with UNAVAILABLE, with backoff");
+  flags->Add("route", flag::Switch(&line->route),
+             "locate and batch: send the points straight to the shards of a "
+             "tiled dataset, by GetTopology of --target (a router), a batch "
+             "split by shard and merged in order");
   flags->Add("dataset", flag::Text(&line->scope.dataset).Shape("NAME"),
              "all but health and datasets: the server's dataset to query, or "
              "to reload (default: its default dataset)");

@@ -12,8 +12,8 @@
 #include <string>
 #include <string_view>
 
-#include "common/channel_options.h"
 #include "client/cli_commands.h"
+#include "common/channel_options.h"
 #include "locator/status.h"
 
 namespace locator {
@@ -32,6 +32,8 @@ struct CliLine {
   CliArgs args;  // the command's arguments
   CliSettings settings;
   ChannelOptions channel;  // its security is loaded later, from `security`
+  // --route: locate and batch go straight to the shards (GetTopology).
+  bool route = false;
   ChannelSecurityFlags security;
   // --dataset, --crs and --interpolation.
   RequestScope scope;

@@ -33,6 +33,12 @@ int Main(int argc, char** argv) {
   }
   LocatorClient client(CreateLocatorChannel(line.channel), line.deadline,
                        line.scope);
+  if (line.route) {
+    if (grpc::Status routed = client.RouteByTopology(line.channel);
+        !routed.ok()) {
+      return ReportRpcError(routed);
+    }
+  }
   return line.command(client, line.settings, line.args);
 }
 

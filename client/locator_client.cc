@@ -1,7 +1,9 @@
 #include "client/locator_client.h"
 
+#include <future>
 #include <utility>
 
+#include "client/shard_routes.h"
 #include "common/grpc_code_name.h"
 
 namespace locator {
@@ -59,8 +61,30 @@ LocatorClient::LocatorClient(std::shared_ptr<grpc::Channel> channel,
       deadline_(deadline),
       scope_(std::move(scope)) {}
 
+LocatorClient::~LocatorClient() = default;
+
+grpc::Status LocatorClient::RouteByTopology(const ChannelOptions& channel) {
+  v1::GetTopologyRequest request;
+  request.set_dataset(scope_.dataset);
+  v1::GetTopologyResponse topology;
+  grpc::ClientContext context;
+  SetDeadlineFromNow(&context, deadline_);
+  if (grpc::Status status = stub_->GetTopology(&context, request, &topology);
+      !status.ok()) {
+    return status;
+  }
+  if (topology.shards_size() == 1 && topology.shards(0).target().empty() &&
+      topology.complete()) {
+    return grpc::Status::OK;  // this server serves all of it
+  }
+  return ShardRoutes::Create(topology, channel, deadline_, scope_, &routes_);
+}
+
 grpc::Status LocatorClient::Locate(const Point2& point,
                                    v1::LocateResponse* response) {
+  if (routes_ != nullptr) {
+    return routes_->ClientFor(point).Locate(point, response);
+  }
   v1::LocateRequest request;
   request.mutable_point()->set_x(point.x);
   request.mutable_point()->set_y(point.y);
@@ -79,6 +103,13 @@ grpc::Status LocatorClient::LocateBatch(std::span<const double> xs,
   request.mutable_ys()->Add(ys.begin(), ys.end());
   RequestColumns(columns, &request);
   ApplyScope(scope_, &request);
+  if (routes_ != nullptr) {
+    std::promise<grpc::Status> answered;
+    routes_->StartLocateBatch(
+        &request, response,
+        [&answered](grpc::Status status) { answered.set_value(status); });
+    return answered.get_future().get();
+  }
   grpc::ClientContext context;
   SetDeadlineFromNow(&context, deadline_);
   return stub_->LocateBatch(&context, request, response);
@@ -160,6 +191,12 @@ grpc::Status LocatorClient::CheckHealth(HealthStatus* status) {
 void LocatorClient::StartLocate(grpc::ClientContext* context,
                                 v1::LocateRequest* request,
                                 v1::LocateResponse* response, Completion done) {
+  if (routes_ != nullptr) {
+    const Point2 point{request->point().x(), request->point().y()};
+    routes_->ClientFor(point).StartLocate(context, request, response,
+                                          std::move(done));
+    return;
+  }
   ApplyScope(scope_, request);
   SetDeadlineFromNow(context, deadline_);
   stub_->async()->Locate(context, request, response, std::move(done));
@@ -170,6 +207,10 @@ void LocatorClient::StartLocateBatch(grpc::ClientContext* context,
                                      v1::LocateBatchResponse* response,
                                      Completion done) {
   ApplyScope(scope_, request);
+  if (routes_ != nullptr) {
+    routes_->StartLocateBatch(request, response, std::move(done));
+    return;
+  }
   SetDeadlineFromNow(context, deadline_);
   stub_->async()->LocateBatch(context, request, response, std::move(done));
 }

@@ -26,12 +26,14 @@
 #include <string>
 #include <string_view>
 
-#include "common/channel_options.h"
 #include "client/health_check.h"
+#include "common/channel_options.h"
 #include "locator/geometry.h"
 #include "locator/v1/locator.grpc.pb.h"
 
 namespace locator {
+
+class ShardRoutes;
 
 // Sets `context`'s deadline to `timeout` from now.
 void SetDeadlineFromNow(grpc::ClientContext* context,
@@ -81,6 +83,17 @@ class LocatorClient {
   // whose requests carry `scope`.
   LocatorClient(std::shared_ptr<grpc::Channel> channel,
                 std::chrono::milliseconds deadline, RequestScope scope = {});
+  ~LocatorClient();
+
+  // From now on sends Locate and LocateBatch straight to the shards of the
+  // scope's dataset, as its GetTopology (asked through this client) says:
+  // each point to the shard serving its tile, a batch split by shard and
+  // merged in input order (ShardRoutes), over channels made with `channel`
+  // (a shard's target replacing its own). A dataset on one server keeps
+  // going through this client. The GetTopology call's error, or
+  // FAILED_PRECONDITION for a topology without every tile's shard. Call it
+  // before any call starts.
+  grpc::Status RouteByTopology(const ChannelOptions& channel);
 
   std::chrono::milliseconds deadline() const { return deadline_; }
   const RequestScope& scope() const { return scope_; }
@@ -119,6 +132,8 @@ class LocatorClient {
   void StartLocate(grpc::ClientContext* context, v1::LocateRequest* request,
                    v1::LocateResponse* response, Completion done);
   // Starts a LocateBatch of `request`, after applying the scope to it.
+  // Routed, its parts get contexts of their own (same deadline) and
+  // `context` is not used.
   void StartLocateBatch(grpc::ClientContext* context,
                         v1::LocateBatchRequest* request,
                         v1::LocateBatchResponse* response, Completion done);
@@ -132,6 +147,7 @@ class LocatorClient {
 
  private:
   std::unique_ptr<v1::Locator::Stub> stub_;
+  std::unique_ptr<ShardRoutes> routes_;  // set by RouteByTopology
   HealthChecker health_;
   const std::chrono::milliseconds deadline_;
   const RequestScope scope_;

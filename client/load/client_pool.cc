@@ -5,14 +5,22 @@ namespace locator {
 ClientPool::ClientPool(const ChannelOptions& options, size_t channels,
                        std::chrono::milliseconds deadline,
                        const RequestScope& scope)
-    : deadline_(deadline) {
-  ChannelOptions own = options;
-  own.own_connection = true;
+    : deadline_(deadline), channel_(options) {
+  channel_.own_connection = true;
   for (size_t i = 0; i < channels; ++i) {
-    channels_.push_back(CreateLocatorChannel(own));
+    channels_.push_back(CreateLocatorChannel(channel_));
     clients_.push_back(
         std::make_unique<LocatorClient>(channels_.back(), deadline, scope));
   }
+}
+
+grpc::Status ClientPool::RouteByTopology() {
+  for (const std::unique_ptr<LocatorClient>& client : clients_) {
+    if (grpc::Status status = client->RouteByTopology(channel_); !status.ok()) {
+      return status;
+    }
+  }
+  return grpc::Status::OK;
 }
 
 }  // namespace locator

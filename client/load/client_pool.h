@@ -40,9 +40,14 @@ class ClientPool {
   LocatorClient& client(size_t i) { return *clients_[i]; }
   // The client for the next call, round-robin.
   LocatorClient& NextClient() { return client(NextIndex()); }
+  // Makes every client route Locate and LocateBatch straight to the shards
+  // (LocatorClient::RouteByTopology), each over channels of its own. The
+  // first client's error.
+  grpc::Status RouteByTopology();
 
  private:
   const std::chrono::milliseconds deadline_;
+  ChannelOptions channel_;  // of every channel, own_connection set
   std::vector<std::shared_ptr<grpc::Channel>> channels_;
   std::vector<std::unique_ptr<LocatorClient>> clients_;
   std::atomic<size_t> next_{0};

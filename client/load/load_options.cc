@@ -84,6 +84,10 @@ void AddLoadFlags(LoadOptions* options, LaterFlags* later, FlagSet* flags) {
              "deadline of every call, in milliseconds");
   flags->Add("retry", flag::Switch(&options->channel.retry_unavailable),
              "retry calls that fail with UNAVAILABLE, with backoff");
+  flags->Add("route", flag::Switch(&options->route),
+             "send unary and batch locates straight to the shards of a tiled "
+             "dataset, by GetTopology of --target (a router or a shard "
+             "knowing all of them), splitting batches by shard");
   flags->Add("cost-window", flag::Count(&options->cost_window, 1, kNoMax),
              "queries per window of the server's mean cost");
   flags->Add("format",

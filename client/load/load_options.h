@@ -28,6 +28,9 @@ enum class ReportFormat { kText, kJson };
 
 struct LoadOptions {
   ChannelOptions channel;
+  // --route: Locate and LocateBatch go straight to the shards, by the
+  // target's GetTopology.
+  bool route = false;
   size_t channels = 2;
   LoadMode mode = LoadMode::kUnary;
   // A workload name or "file:PATH" (client/load/query_source.h).

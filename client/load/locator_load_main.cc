@@ -115,6 +115,12 @@ int Main(int argc, char** argv) {
   ClientPool pool(options.channel, options.channels,
                   std::chrono::milliseconds(options.deadline_ms),
                   options.scope);
+  if (options.route) {
+    if (grpc::Status routed = pool.RouteByTopology(); !routed.ok()) {
+      std::cerr << "error: --route: " << DescribeRpcError(routed) << "\n";
+      return kExitCallsFailed;
+    }
+  }
   BoundingBox box;
   if (!QuerySource::IsReplay(options.workload) &&
       !ReadDatasetBox(pool.client(0), &box)) {

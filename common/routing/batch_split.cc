@@ -20,10 +20,9 @@ void CopyEntries(const Column& source, int from, Column* target, int to,
 Status SplitBatch(const v1::LocateBatchRequest& request, const ShardMap& map,
                   BatchSplit* split) {
   if (request.xs_size() != request.ys_size()) {
-    return Status::InvalidArgument("xs has " +
-                                   std::to_string(request.xs_size()) +
-                                   " values and ys " +
-                                   std::to_string(request.ys_size()));
+    return Status::InvalidArgument(
+        "xs has " + std::to_string(request.xs_size()) + " values and ys " +
+        std::to_string(request.ys_size()));
   }
   if (!request.crs().empty()) {
     return Status::InvalidArgument(
@@ -90,8 +89,7 @@ Status MergeBatch(const v1::LocateBatchRequest& request,
                   vertex_width);
       CopyEntries(answer.barycentric(), j, merged->mutable_barycentric(), i,
                   barycentric_width);
-      CopyEntries(answer.values(), j, merged->mutable_values(), i,
-                  value_width);
+      CopyEntries(answer.values(), j, merged->mutable_values(), i, value_width);
     }
     total_cost += answer.total_cost();
   }

@@ -40,10 +40,10 @@ struct BatchSplit {
 // without points) into *merged, in input order. Unavailable naming the
 // shard when an answer's columns do not match its part (a shard answered
 // for other points: it cannot happen but by a bug or a mixed deployment).
-[[nodiscard]] Status MergeBatch(const v1::LocateBatchRequest& request,
-                                const BatchSplit& split,
-                                std::span<const v1::LocateBatchResponse> answers,
-                                v1::LocateBatchResponse* merged);
+[[nodiscard]] Status MergeBatch(
+    const v1::LocateBatchRequest& request, const BatchSplit& split,
+    std::span<const v1::LocateBatchResponse> answers,
+    v1::LocateBatchResponse* merged);
 
 }  // namespace locator
 

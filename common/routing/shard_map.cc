@@ -38,7 +38,8 @@ StatusOr<ShardMap> ShardMap::FromTopology(
     const v1::TopologyTile& tile = topology.tiles(t);
     const uint64_t next_first = t + 1 < topology.tiles_size()
                                     ? topology.tiles(t + 1).first_cell()
-                                    : uint64_t{1} << (2 * topology.grid_level());
+                                    : uint64_t{1}
+                                          << (2 * topology.grid_level());
     if (tile.end_cell() != next_first || tile.end_cell() <= tile.first_cell()) {
       return Status::InvalidArgument(
           "topology of dataset '" + map.dataset_ + "': tile " +
@@ -87,8 +88,8 @@ uint32_t ShardMap::ShardOf(const Point2& p) const {
 Status NoShardFor(const std::string& dataset, size_t index, const Point2& p,
                   size_t tile) {
   return Status::FailedPrecondition(
-      "point " + std::to_string(index) + " " + PointText(p) + " lies in tile " + std::to_string(tile) +
-      " of dataset '" + dataset +
+      "point " + std::to_string(index) + " " + PointText(p) + " lies in tile " +
+      std::to_string(tile) + " of dataset '" + dataset +
       "', which no shard in its topology serves; route through a router "
       "(locatord --route) or a complete topology");
 }

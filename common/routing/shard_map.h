@@ -31,7 +31,8 @@ class ShardMap {
   // listing a tile that does not exist or that another shard lists, no
   // shard at all). A tile no shard serves is allowed (ShardOf() answers
   // kNoShard for its points; complete() is false).
-  static StatusOr<ShardMap> FromTopology(const v1::GetTopologyResponse& topology);
+  static StatusOr<ShardMap> FromTopology(
+      const v1::GetTopologyResponse& topology);
 
   // The shard serving p, or kNoShard.
   uint32_t ShardOf(const Point2& p) const;

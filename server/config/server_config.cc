@@ -122,9 +122,9 @@ namespace {
 Status CheckShardFlags(const ServerConfig& config) {
   if (!config.tiles.empty()) {
     RETURN_IF_ERROR(ShardTiles::CheckSelector(config.tiles));
-    const bool any_tile_set =
-        std::any_of(config.datasets.begin(), config.datasets.end(),
-                    [](const DatasetConfig& d) { return IsTileSetSpec(d.spec); });
+    const bool any_tile_set = std::any_of(
+        config.datasets.begin(), config.datasets.end(),
+        [](const DatasetConfig& d) { return IsTileSetSpec(d.spec); });
     if (!any_tile_set) {
       return FlagError("tiles", config.tiles,
                        "no --dataset is a tile set (DIR/manifest.json)");

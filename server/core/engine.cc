@@ -6,9 +6,9 @@
 #include <thread>
 #include <utility>
 
+#include "common/hilbert.h"
 #include "common/input_text.h"
 #include "common/status_macros.h"
-#include "common/hilbert.h"
 #include "server/core/mesh/mesh_cache.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/strategies/locator_factory.h"

@@ -219,8 +219,7 @@ bool DatasetBuilder::MapMesh(const DatasetSlot& slot, const std::string& spec,
 
 Status DatasetBuilder::MapTileSet(const DatasetSlot& slot,
                                   const std::string& spec,
-                                  EngineOptions options,
-                                  BuiltDataset* built) {
+                                  EngineOptions options, BuiltDataset* built) {
   TileSetManifestSummary manifest;
   RETURN_IF_ERROR(ReadTileSetSpec(spec, &manifest, &options.mesh_cache_dir));
   if (manifest.mesh_file != MeshFilePath("", manifest.fingerprint)) {

@@ -85,8 +85,7 @@ ShardTiles::ShardTiles(TileRouter router, std::vector<uint32_t> served,
 
 StatusOr<std::shared_ptr<const ShardTiles>> ShardTiles::Select(
     TileRouter router, std::string_view selector, uint64_t fingerprint) {
-  std::vector<std::pair<uint64_t, uint64_t>> ranges = {
-      {0, router.num_tiles()}};
+  std::vector<std::pair<uint64_t, uint64_t>> ranges = {{0, router.num_tiles()}};
   if (!selector.empty()) {
     ASSIGN_OR_RETURN(ranges, ParseSelector(selector, router.num_tiles()));
   }
@@ -98,9 +97,9 @@ StatusOr<std::shared_ptr<const ShardTiles>> ShardTiles::Select(
   for (size_t t = 0; t < selected.size(); ++t) {
     if (selected[t]) served.push_back(static_cast<uint32_t>(t));
   }
-  return std::shared_ptr<const ShardTiles>(new ShardTiles(
-      std::move(router), std::move(served), std::string(selector),
-      fingerprint));
+  return std::shared_ptr<const ShardTiles>(
+      new ShardTiles(std::move(router), std::move(served),
+                     std::string(selector), fingerprint));
 }
 
 Status ShardTiles::CheckSelector(std::string_view selector) {

@@ -30,8 +30,8 @@
 #include "server/grpc/locator_service.h"
 #include "server/http/http_frontend.h"
 #include "server/main/server_runner.h"
-#include "server/route/router_main.h"
 #include "server/metrics/rpc_metrics.h"
+#include "server/route/router_main.h"
 
 namespace locator {
 namespace {

@@ -1,8 +1,8 @@
 #include "server/route/router_main.h"
 
 #include <algorithm>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "common/channel_options.h"

@@ -27,10 +27,9 @@ std::optional<std::string> AuthorizationOf(
 grpc::Status FromShard(const ShardTopology& topology, size_t shard,
                        const grpc::Status& status) {
   if (status.ok()) return status;
-  return grpc::Status(status.error_code(),
-                      "shard " + std::to_string(shard) + " (" +
-                          topology.target(shard) +
-                          "): " + status.error_message());
+  return grpc::Status(status.error_code(), "shard " + std::to_string(shard) +
+                                               " (" + topology.target(shard) +
+                                               "): " + status.error_message());
 }
 
 grpc::Status CannotRouteCrs() {
@@ -120,8 +119,8 @@ grpc::ServerUnaryReactor* RouterService::Locate(
     std::shared_ptr<grpc::ClientContext> call = ShardContext(*context);
     topology_->async(shard)->Locate(
         call.get(), request, response,
-        [this, call, shard, reactor, dataset = request->dataset()](
-            grpc::Status status) {
+        [this, call, shard, reactor,
+         dataset = request->dataset()](grpc::Status status) {
           if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
             topology_->Forget(dataset);
           }
@@ -132,8 +131,8 @@ grpc::ServerUnaryReactor* RouterService::Locate(
 }
 
 grpc::ServerUnaryReactor* RouterService::LocateBatch(
-    grpc::CallbackServerContext* context,
-    const v1::LocateBatchRequest* request, v1::LocateBatchResponse* response) {
+    grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
+    v1::LocateBatchResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
   pool_.Submit([this, context, request, response, reactor] {
     RouteBatch(context, request, response, reactor);
@@ -196,8 +195,8 @@ void RouterService::RouteBatch(grpc::CallbackServerContext* context,
   for (const size_t s : called) {
     topology_->async(s)->LocateBatch(
         fan->contexts[s].get(), &fan->split.parts[s], &fan->answers[s],
-        [this, fan, s, merge, dataset = request->dataset()](
-            grpc::Status status) {
+        [this, fan, s, merge,
+         dataset = request->dataset()](grpc::Status status) {
           if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
             topology_->Forget(dataset);
           }

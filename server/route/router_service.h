@@ -72,8 +72,8 @@ class RouterService final : public v1::Locator::CallbackService {
   grpc::ServerUnaryReactor* Reload(grpc::CallbackServerContext* context,
                                    const v1::ReloadRequest* request,
                                    v1::ReloadResponse* response) override;
-  grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
-  LocateStream(grpc::CallbackServerContext* context) override;
+  grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>* LocateStream(
+      grpc::CallbackServerContext* context) override;
   grpc::ServerWriteReactor<v1::GridResponse>* Grid(
       grpc::CallbackServerContext* context,
       const v1::GridRequest* request) override;

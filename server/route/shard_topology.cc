@@ -4,7 +4,6 @@
 
 #include <utility>
 
-
 namespace locator {
 namespace {
 
@@ -61,8 +60,7 @@ void ShardTopology::Forget(const std::string& dataset) {
 }
 
 grpc::Status ShardTopology::Fetch(
-    const std::string& dataset,
-    const std::optional<std::string>& authorization,
+    const std::string& dataset, const std::optional<std::string>& authorization,
     std::shared_ptr<const Routed>* routed) const {
   std::vector<v1::GetTopologyResponse> answers(stubs_.size());
   v1::GetTopologyRequest request;
@@ -83,11 +81,11 @@ grpc::Status ShardTopology::Fetch(
   merged.clear_shards();
   for (size_t s = 0; s < answers.size(); ++s) {
     if (!SameTiles(answers[0], answers[s])) {
-      return grpc::Status(
-          grpc::StatusCode::FAILED_PRECONDITION,
-          "shards 0 (" + targets_[0] + ") and " + std::to_string(s) + " (" +
-              targets_[s] + ") serve different tile sets as dataset '" +
-              answers[0].dataset() + "'");
+      return grpc::Status(grpc::StatusCode::FAILED_PRECONDITION,
+                          "shards 0 (" + targets_[0] + ") and " +
+                              std::to_string(s) + " (" + targets_[s] +
+                              ") serve different tile sets as dataset '" +
+                              answers[0].dataset() + "'");
     }
     v1::TopologyShard* shard = merged.add_shards();
     shard->set_target(targets_[s]);
@@ -98,9 +96,9 @@ grpc::Status ShardTopology::Fetch(
   }
   StatusOr<ShardMap> map = ShardMap::FromTopology(merged);
   if (!map.ok()) {
-    return grpc::Status(grpc::StatusCode::FAILED_PRECONDITION,
-                        "the shards' topologies do not add up: " +
-                            map.status().message());
+    return grpc::Status(
+        grpc::StatusCode::FAILED_PRECONDITION,
+        "the shards' topologies do not add up: " + map.status().message());
   }
   merged.set_complete(map->complete());
   *routed = std::make_shared<const Routed>(

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "common/channel_options.h"
 #include "client/health_check.h"
+#include "common/channel_options.h"
 #include "locator/status.h"
 
 namespace locator::test {

@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
+#include "common/hilbert.h"
 #include "common/status_macros.h"
 #include "server/core/cgal/domain_outline.h"
 #include "server/core/cgal/given_mesh_builder.h"
-#include "common/hilbert.h"
 #include "server/core/geometry/xxh3_digest.h"
 #include "server/core/mesh/serving_mesh.h"
 

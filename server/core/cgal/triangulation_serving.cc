@@ -10,10 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include "common/hilbert.h"
 #include "common/status_macros.h"
 #include "server/core/cgal/triangulation.h"
 #include "server/core/cgal/triangulation_builder.h"
-#include "common/hilbert.h"
 #include "server/core/tiling/build_checks.h"
 #include "server/core/tiling/mesh_vectors.h"
 

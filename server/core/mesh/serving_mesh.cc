@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "common/hilbert.h"
 #include "server/core/cgal/orientation.h"
 #include "server/core/geometry/barycentric.h"
-#include "common/hilbert.h"
 #include "server/core/geometry/segment_distance.h"
 #include "server/core/geometry/wide_math.h"
 

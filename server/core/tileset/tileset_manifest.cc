@@ -140,8 +140,7 @@ bool ParseTileCells(std::string_view text, int level,
     first_cells->push_back(static_cast<uint32_t>(range[0]));
     expected_first = range[1];
   }
-  return !first_cells->empty() &&
-         expected_first == uint64_t{1} << (2 * level);
+  return !first_cells->empty() && expected_first == uint64_t{1} << (2 * level);
 }
 
 }  // namespace

@@ -14,9 +14,9 @@
 #include <random>
 #include <vector>
 
+#include "common/hilbert.h"
 #include "locator/dataset_sources.h"
 #include "server/core/cgal/triangulation.h"
-#include "common/hilbert.h"
 #include "server/core/mesh/mesh_walk.h"
 #include "tests/core/test_datasets.h"
 

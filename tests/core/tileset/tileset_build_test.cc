@@ -6,6 +6,7 @@
 
 #include "server/core/tileset/tileset_build.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include "server/core/dataset/file_io.h"
 #include "server/core/mesh/mesh_file.h"
 #include "server/core/tileset/tile_file.h"
+#include "server/core/tileset/tileset_manifest.h"
 #include "server/core/tiling/tiled_build.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/core/test_datasets.h"
@@ -121,6 +123,22 @@ TEST_P(TileSetBuildTest, TilesAreTheGlobalCanonicalTriangulation) {
   EXPECT_EQ(manifest.input_points, dataset.points.size());
   EXPECT_EQ(manifest.input_points - manifest.vertices,
             global->duplicates_merged());
+  // What a server routes by reads back from the manifest exactly.
+  TileSetManifestSummary summary;
+  ASSERT_TRUE(ParseManifestSummary(ManifestJson(manifest), "m", &summary).ok());
+  EXPECT_EQ(summary.bounds.min_x, manifest.bounds.min_x);
+  EXPECT_EQ(summary.bounds.max_y, manifest.bounds.max_y);
+  EXPECT_EQ(summary.grid_level, manifest.grid_level);
+  ASSERT_EQ(summary.tile_first_cells.size(), manifest.tiles.size());
+  for (size_t t = 0; t < manifest.tiles.size(); ++t) {
+    EXPECT_EQ(summary.tile_first_cells[t],
+              manifest.tiles[t].info.tile.first_cell);
+  }
+  // Tiles whose cells leave a gap are refused.
+  TileSetManifest gap = manifest;
+  gap.tiles[1].info.tile.first_cell += 1;
+  EXPECT_THAT(ParseManifestSummary(ManifestJson(gap), "m", &summary).message(),
+              ::testing::HasSubstr("cells do not follow each other"));
   // The working files are gone; the manifest and tiles stay.
   EXPECT_FALSE(std::filesystem::exists(dir.path() + "/work"));
   EXPECT_TRUE(std::filesystem::exists(dir.path() + "/manifest.json"));

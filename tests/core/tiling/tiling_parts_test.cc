@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "common/hilbert.h"
 #include "locator/dataset_sources.h"
 #include "server/core/cgal/orientation.h"
 #include "server/core/cgal/triangulation.h"
-#include "common/hilbert.h"
 #include "server/core/tiling/cells/cell_grid.h"
 #include "server/core/tiling/cells/circumdisk.h"
 #include "server/core/tiling/cells/halo_cells.h"

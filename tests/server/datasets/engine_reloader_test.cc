@@ -66,8 +66,8 @@ TEST(EngineReloaderTest, BuildsOnItsThreadPublishesThenCallsDone) {
   HeldBuild held;
   std::vector<std::shared_ptr<Engine>> published;
   std::unique_ptr<EngineReloader> reloader;
-  reloader = std::make_unique<EngineReloader>(
-      held.Build(), [&](BuiltDataset built) {
+  reloader =
+      std::make_unique<EngineReloader>(held.Build(), [&](BuiltDataset built) {
         published.push_back(std::move(built.engine));
         return uint64_t{41 + published.size()};
       });
@@ -163,8 +163,8 @@ TEST(EngineReloaderTest, FailedBuildIsNotPublished) {
 TEST(EngineReloaderTest, DestructorWaitsForTheRunningBuild) {
   HeldBuild held;
   std::atomic<bool> published{false};
-  auto reloader = std::make_unique<EngineReloader>(
-      held.Build(), [&](BuiltDataset) {
+  auto reloader =
+      std::make_unique<EngineReloader>(held.Build(), [&](BuiltDataset) {
         published = true;
         return uint64_t{1};
       });

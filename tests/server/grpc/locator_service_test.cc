@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "locator/dataset_sources.h"
-#include "tests/server/main/e2e_support.h"
 #include "tests/server/grpc/in_process_server.h"
+#include "tests/server/main/e2e_support.h"
 
 namespace locator {
 namespace {

@@ -3,8 +3,11 @@
 // manifest, and its answers are CGAL's own on the same file (triangle ids
 // included) for the end-to-end query set, every tile's bounding-box corners
 // and edge midpoints, and the midpoint of every edge between two tiles'
-// vertices (where the halos meet). Bad tile sets fail startup naming why,
-// and locator-build refuses bad flags and sources naming them.
+// vertices (where the halos meet). Sharded (two locatord --tiles behind a
+// locatord --route, or a client routing by GetTopology) it answers the
+// same, and a shard refuses a point it does not serve. Bad tile sets fail
+// startup naming why, and locator-build refuses bad flags and sources
+// naming them.
 
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
@@ -18,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "client/locator_client.h"
+#include "common/channel_options.h"
 #include "server/core/dataset/file_io.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tileset/tile_file.h"
@@ -125,6 +130,149 @@ TEST_F(LocatordTileSetTest, AnswersAsCgalOnTheWholeDatasetAcrossTiles) {
   const v1::GetStatsResponse stats = GetStats(*stub, "tiles");
   EXPECT_EQ(stats.dataset().input_points(), 20000u);
   EXPECT_EQ(stats.dataset().source(), csv_);
+}
+
+TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
+  const std::string spec = "tiles=" + tiles_ + "/manifest.json";
+  std::unique_ptr<ServerProcess> shard0, shard1, router;
+  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0/2"}, &shard0).ok());
+  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1).ok());
+  ASSERT_TRUE(StartLocatord(spec,
+                            {"--route", "--shards",
+                             shard0->target() + "," + shard1->target()},
+                            &router)
+                  .ok());
+  auto stub = NewStub(*router);
+
+  // The router lists both shards, each with its half of the tiles.
+  v1::GetTopologyRequest topology_request;
+  topology_request.set_dataset("tiles");
+  v1::GetTopologyResponse topology;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(stub->GetTopology(&context, topology_request, &topology).ok());
+  }
+  EXPECT_TRUE(topology.tiled());
+  EXPECT_TRUE(topology.complete());
+  ASSERT_EQ(topology.shards_size(), 2);
+  EXPECT_EQ(topology.shards(0).target(), shard0->target());
+  const int tiles = topology.tiles_size();
+  EXPECT_GT(tiles, 8);
+  EXPECT_EQ(topology.shards(0).tiles_size() + topology.shards(1).tiles_size(),
+            tiles);
+  // A shard knows only its own tiles.
+  v1::GetTopologyResponse own;
+  {
+    grpc::ClientContext context;
+    ASSERT_TRUE(
+        NewStub(*shard1)->GetTopology(&context, topology_request, &own).ok());
+  }
+  EXPECT_FALSE(own.complete());
+  ASSERT_EQ(own.shards_size(), 1);
+  EXPECT_EQ(own.shards(0).target(), "");
+  EXPECT_EQ(own.shards(0).tiles(0), static_cast<uint32_t>(tiles / 2));
+
+  // Through the router, CGAL's answers on the whole dataset, seams too.
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(csv_, &reference).ok());
+  std::vector<Point2> queries = TestQueries();
+  const std::vector<Point2> seams = TileSeamQueries(tiles_);
+  queries.insert(queries.end(), seams.begin(), seams.end());
+  std::vector<LocateResult> answers = LocateInBatches(*stub, queries, 4096);
+  ASSERT_EQ(answers.size(), queries.size());
+  EXPECT_EQ(reference->Disagreements(queries, answers, false), "");
+  const std::span<const Point2> first(queries.data(), 300);
+  answers = LocateEach(*stub, first);
+  EXPECT_EQ(reference->Disagreements(first, answers, false), "");
+
+  // A shard sent every point refuses those of the other shard's tiles.
+  v1::LocateBatchRequest all = BatchRequestFor(queries);
+  all.set_dataset("tiles");
+  v1::LocateBatchResponse refused;
+  grpc::ClientContext context;
+  const grpc::Status status =
+      NewStub(*shard0)->LocateBatch(&context, all, &refused);
+  EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
+  EXPECT_THAT(status.error_message(),
+              HasSubstr("which this server does not serve (--tiles '0/2')"));
+
+  // What the router cannot route is refused, saying what to do instead.
+  all.set_crs("EPSG:4326");
+  grpc::ClientContext crs_context;
+  EXPECT_EQ(stub->LocateBatch(&crs_context, all, &refused).error_code(),
+            grpc::StatusCode::INVALID_ARGUMENT);
+  grpc::ClientContext retune_context;
+  v1::RetuneResponse retuned;
+  const grpc::Status retune =
+      stub->Retune(&retune_context, v1::RetuneRequest(), &retuned);
+  EXPECT_EQ(retune.error_code(), grpc::StatusCode::UNIMPLEMENTED);
+  EXPECT_THAT(retune.error_message(), HasSubstr("call a shard"));
+}
+
+TEST_F(LocatordTileSetTest, AClientRoutesByTopologyAsTheRouterDoes) {
+  const std::string spec = "tiles=" + tiles_ + "/manifest.json";
+  std::string manifest;
+  ASSERT_TRUE(
+      ReadWholeFile(tiles_ + "/manifest.json", "manifest", &manifest).ok());
+  size_t tiles = 0;
+  for (size_t at = manifest.find("\"cells\":"); at != std::string::npos;
+       at = manifest.find("\"cells\":", at + 1)) {
+    ++tiles;
+  }
+  ASSERT_GT(tiles, 8u);
+  std::unique_ptr<ServerProcess> shard0, shard1, router;
+  // A selector naming a tile the set does not have fails startup.
+  const Status bad =
+      StartLocatord(spec, {"--tiles", "4-" + std::to_string(tiles)}, &shard1);
+  EXPECT_FALSE(bad.ok());
+  EXPECT_THAT(bad.message(), HasSubstr("does not exist"));
+  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0-3"}, &shard0).ok());
+  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "4-" + std::to_string(tiles - 1)},
+                            &shard1)
+                  .ok());
+  ASSERT_TRUE(StartLocatord(spec,
+                            {"--route", "--shards",
+                             shard0->target() + "," + shard1->target()},
+                            &router)
+                  .ok());
+
+  // A client asking a shard alone learns that it cannot route.
+  RequestScope scope;
+  scope.dataset = "tiles";
+  const ChannelOptions to_shard{.target = shard0->target()};
+  LocatorClient lost(CreateLocatorChannel(to_shard), std::chrono::seconds(5),
+                     scope);
+  EXPECT_EQ(lost.RouteByTopology(to_shard).error_code(),
+            grpc::StatusCode::FAILED_PRECONDITION);
+
+  // Routed by the router's topology, straight to the shards.
+  const ChannelOptions to_router{.target = router->target()};
+  LocatorClient client(CreateLocatorChannel(to_router),
+                       std::chrono::seconds(30), scope);
+  ASSERT_TRUE(client.RouteByTopology(to_router).ok());
+  std::vector<Point2> queries = TestQueries();
+  const std::vector<Point2> seams = TileSeamQueries(tiles_);
+  queries.insert(queries.end(), seams.begin(), seams.end());
+  std::vector<double> xs, ys;
+  for (const Point2& q : queries) {
+    xs.push_back(q.x);
+    ys.push_back(q.y);
+  }
+  constexpr BatchColumns kEveryColumn{
+      .vertex_ids = true, .barycentric = true, .values = true};
+  v1::LocateBatchResponse response;
+  ASSERT_TRUE(client.LocateBatch(xs, ys, kEveryColumn, &response).ok());
+  ASSERT_EQ(response.types_size(), static_cast<int>(queries.size()));
+  std::vector<LocateResult> answers;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    answers.push_back(FromBatchRow(response, i));
+  }
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(csv_, &reference).ok());
+  EXPECT_EQ(reference->Disagreements(queries, answers, false), "");
+  v1::LocateResponse one;
+  ASSERT_TRUE(client.Locate(queries[7], &one).ok());
+  EXPECT_EQ(one.triangle_id(), response.triangle_ids(7));
 }
 
 TEST_F(LocatordTileSetTest, ABadTileSetFailsStartupNamingIt) {

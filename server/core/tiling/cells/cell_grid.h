@@ -21,8 +21,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "locator/geometry.h"
 #include "common/hilbert.h"
+#include "locator/geometry.h"
 
 namespace locator {
 
