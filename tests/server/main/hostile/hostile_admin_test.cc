@@ -1,6 +1,7 @@
 // The hostile-input property test (issue 26), part 2: the calls about
-// datasets and the server (GetStats, Retune, ListDatasets, Reload, their
-// HTTP forms /api/stats, /api/edges, /api/history and /v1/datasets) and
+// datasets and the server (GetStats, GetTopology, Retune, ListDatasets,
+// Reload, their HTTP forms /api/stats, /api/edges, /api/history and
+// /v1/datasets) and
 // calls to methods the service does not have, with the same rules as part
 // 1 (hostile_input_test.cc). A Reload must never read, write or wait on a
 // file the operator did not put in --reload-dir (the control checks the
@@ -19,12 +20,12 @@
 #include <vector>
 
 #include "client/locator_client.h"
+#include "tests/server/http/json_value.h"
+#include "tests/server/http/prometheus_text.h"
 #include "tests/server/main/hostile/hostile_calls.h"
 #include "tests/server/main/hostile/hostile_request_parts.h"
 #include "tests/server/main/hostile/hostile_requests.h"
 #include "tests/server/main/hostile/hostile_run.h"
-#include "tests/server/http/json_value.h"
-#include "tests/server/http/prometheus_text.h"
 
 namespace locator::test {
 namespace {
@@ -111,9 +112,10 @@ TEST_F(HostileTest, DatasetQueries) {
                Expectation(), [&] { return CheckList(list); });
         continue;
       }
-      grpc::ClientContext stats_context, retune_context, list_context;
-      for (grpc::ClientContext* context :
-           {&stats_context, &retune_context, &list_context}) {
+      grpc::ClientContext stats_context, retune_context, list_context,
+          topology_context;
+      for (grpc::ClientContext* context : {&stats_context, &retune_context,
+                                           &list_context, &topology_context}) {
         SetDeadlineFromNow(context, HostileServer::CallDeadline());
       }
       v1::GetStatsRequest stats_request;
@@ -130,6 +132,23 @@ TEST_F(HostileTest, DatasetQueries) {
              FromGrpc(server_->stub().Retune(&retune_context, retune_request,
                                              &retuned)),
              expect, fine);
+      v1::GetTopologyRequest topology_request;
+      topology_request.set_dataset(target.dataset);
+      v1::GetTopologyResponse topology;
+      record("GetTopology " + what,
+             FromGrpc(server_->stub().GetTopology(&topology_context,
+                                                  topology_request, &topology)),
+             expect, [&] {
+               // A dataset of one mesh: one shard, this server, all of it.
+               return topology.dataset() == target.oracle->name() &&
+                              !topology.tiled() &&
+                              topology.shards_size() == 1 &&
+                              topology.shards(0).target().empty() &&
+                              topology.complete()
+                          ? std::string()
+                          : "GetTopology of " + target.oracle->name() +
+                                " answered " + topology.ShortDebugString();
+             });
       record("ListDatasets",
              FromGrpc(server_->stub().ListDatasets(
                  &list_context, v1::ListDatasetsRequest(), &list)),
