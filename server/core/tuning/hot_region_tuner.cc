@@ -396,7 +396,9 @@ void HotRegionTuner::ExportState(TuningState* state) const {
   const std::vector<StartTable::Face> faces = table_->Starts();
   state->starts.resize(faces.size());
   for (size_t i = 0; i < faces.size(); ++i) {
-    state->starts[i] = mesh_.CornerIds(faces[i]);
+    state->starts[i] = faces[i] == StartTable::kUnresolved
+                           ? kUnresolvedStart
+                           : mesh_.CornerIds(faces[i]);
   }
 }
 
@@ -425,19 +427,24 @@ Status HotRegionTuner::Restore(
         "tuning state has " + std::to_string(state.starts.size()) +
         " starts, its levels need " + std::to_string(implied));
   }
-  const std::vector<StartTable::Face> faces =
-      mesh_.FacesWithCorners(state.starts);
-  for (size_t i = 0; i < faces.size(); ++i) {
-    if (faces[i] == ServingMesh::kNoFace) {
-      const auto& ids = state.starts[i];
-      return Status::InvalidArgument(
-          "tuning state start " + std::to_string(i) + ": vertices " +
-          std::to_string(ids[0]) + ", " + std::to_string(ids[1]) + ", " +
-          std::to_string(ids[2]) + " are not a triangle of this dataset");
+  std::vector<StartTable::Face> faces = mesh_.FacesWithCorners(state.starts);
+  size_t i = 0;
+  for (const SubGrid& shape : shapes) {
+    for (size_t k = 0; k < shape.cells(); ++k, ++i) {
+      // An unrefined cell may wait for its first use (kUnresolvedStart).
+      if (shape.cells() == 1 && state.starts[i] == kUnresolvedStart) {
+        faces[i] = StartTable::kUnresolved;
+      } else if (faces[i] == ServingMesh::kNoFace) {
+        const auto& ids = state.starts[i];
+        return Status::InvalidArgument(
+            "tuning state start " + std::to_string(i) + ": vertices " +
+            std::to_string(ids[0]) + ", " + std::to_string(ids[1]) + ", " +
+            std::to_string(ids[2]) + " are not a triangle of this dataset");
+      }
     }
   }
   builder_.reset();  // it may borrow the table replaced here
-  table_ = std::make_shared<StartTable>(grid_, shapes, faces);
+  table_ = std::make_shared<StartTable>(mesh_, grid_, shapes, faces);
   SetCurrentLevels(state.levels);
   counts_ = state.histogram;
   planned_share_ = state.planned_share;

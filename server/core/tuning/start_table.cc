@@ -24,7 +24,7 @@ Point2 SubCellCentre(const BoundingBox& cell, const SubGrid& sub_grid,
 StartTable::StartTable(const ServingMesh& mesh, const GridGeometry& grid,
                        const std::vector<SubGrid>& sub_grids,
                        const StartTable* previous)
-    : grid_(grid) {
+    : mesh_(&mesh), grid_(grid) {
   Builder builder(mesh, grid, sub_grids, previous);
   size_t units = 0;
   builder.Step(SIZE_MAX, &units);
@@ -37,7 +37,7 @@ StartTable::Builder::Builder(const ServingMesh& mesh, const GridGeometry& grid,
     : mesh_(mesh),
       sub_grids_(std::move(sub_grids)),
       previous_(previous),
-      table_(grid),
+      table_(mesh, grid),
       hint_(mesh.DefaultStart()) {}
 
 bool StartTable::Builder::Step(size_t max_units, size_t* units) {
@@ -58,23 +58,29 @@ bool StartTable::Builder::Step(size_t max_units, size_t* units) {
       if (sub.cells() > 1) table_.leaf_count_ += sub.cells();
       if (previous_ && previous_->cells_[index].sub_grid == sub) {
         ++done;
-        cell = previous_->cells_[index];
-        hint_ = cell.leaves ? cell.leaves[0] : cell.face;
+        const Cell& kept = previous_->cells_[index];
+        cell.sub_grid = kept.sub_grid;
+        cell.leaves = kept.leaves;
+        // Queries on the previous table may be resolving it right now.
+        cell.face =
+            std::atomic_ref<Face>(kept.face).load(std::memory_order_relaxed);
+        if (cell.leaves) hint_ = cell.leaves[0];
         ++next_cell_;
         continue;
       }
       cell.sub_grid = sub;
       if (sub.cells() == 1) {
         ++done;
-        // From a triangle near the centre along the curve (a binary
-        // search), not from the last cell's: a walk across every cell reads
-        // a page per triangle, all of a mesh larger than RAM.
-        const Point2 centre = SubCellCentre(box, sub, 0, 0);
-        hint_ = cell.face = FaceNear(mesh_, mesh_.TriangleNear(centre), centre);
+        cell.face = kUnresolved;  // found on first use (Resolve)
         ++next_cell_;
         continue;
       }
       leaves_ = std::make_shared_for_overwrite<Face[]>(sub.cells());
+      // From a triangle near the first sub-cell along the curve (a binary
+      // search), not from the last refined cell's: a walk across the cells
+      // between reads a page per triangle, all of a mesh larger than RAM.
+      const Point2 first = SubCellCentre(box, sub, 0, 0);
+      hint_ = FaceNear(mesh_, mesh_.TriangleNear(first), first);
     }
     for (; next_sub_ < sub.cells() && done < max_units; ++next_sub_, ++done) {
       const uint32_t sy = static_cast<uint32_t>(next_sub_ / sub.columns);
@@ -96,10 +102,10 @@ std::shared_ptr<const StartTable> StartTable::Builder::Finish() {
   return std::make_shared<const StartTable>(std::move(table_));
 }
 
-StartTable::StartTable(const GridGeometry& grid,
+StartTable::StartTable(const ServingMesh& mesh, const GridGeometry& grid,
                        const std::vector<SubGrid>& sub_grids,
                        std::span<const Face> starts)
-    : grid_(grid), cells_(grid.cells()) {
+    : mesh_(&mesh), grid_(grid), cells_(grid.cells()) {
   size_t next = 0;
   for (size_t index = 0; index < cells_.size(); ++index) {
     Cell& cell = cells_[index];
@@ -117,6 +123,17 @@ StartTable::StartTable(const GridGeometry& grid,
   }
 }
 
+StartTable::Face StartTable::Resolve(const Point2& q) const {
+  const int cx = static_cast<int>(grid_.GridX(q.x));
+  const int cy = static_cast<int>(grid_.GridY(q.y));
+  const Cell& cell = cells_[static_cast<size_t>(cy) * grid_.size() + cx];
+  const BoundingBox box = grid_.CellBox(cx, cy);
+  const Point2 centre = SubCellCentre(box, cell.sub_grid, 0, 0);
+  const Face face = FaceNear(*mesh_, mesh_->TriangleNear(centre), centre);
+  std::atomic_ref<Face>(cell.face).store(face, std::memory_order_relaxed);
+  return face;
+}
+
 std::vector<StartTable::Face> StartTable::Starts() const {
   std::vector<Face> starts;
   starts.reserve(start_count());
@@ -125,7 +142,8 @@ std::vector<StartTable::Face> StartTable::Starts() const {
       starts.insert(starts.end(), cell.leaves.get(),
                     cell.leaves.get() + cell.sub_grid.cells());
     } else {
-      starts.push_back(cell.face);
+      starts.push_back(
+          std::atomic_ref<Face>(cell.face).load(std::memory_order_relaxed));
     }
   }
   return starts;

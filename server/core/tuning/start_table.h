@@ -4,7 +4,10 @@
 // traffic, point density and the shape of the cell's triangles (a mesh
 // stretched 50:1 gets sub-cells stretched alike). Every (sub-)cell stores the
 // face containing its centre, so a query walks only from the centre of its
-// own small cell.
+// own small cell. An unrefined cell finds its face on first use (a binary
+// search along the mesh's curve, then a short walk): building a table reads
+// only the refined cells' part of the mesh, so a mesh larger than RAM is
+// not read whole by every re-tune, and a restart does not wait for it.
 //
 // A lookup costs one table read for an unrefined cell (1 x 1, the start is
 // stored inline) and two for a refined one. A refined cell's starts live in
@@ -15,14 +18,17 @@
 // (StartTable::Builder), so that a re-tune run inline in queries spreads its
 // walks over many of them.
 //
-// Thread-safety: immutable after construction; Start() from any thread.
+// Thread-safety: immutable after construction but for the unrefined cells'
+// faces, each written once (atomically; every writer writes the same face)
+// by the first Start() in it; Start() from any thread.
 // A Builder is not thread-safe; its owner serialises calls.
 // Invariant: every stored face is a face of the serving mesh it was built
-// on, which must outlive the table.
+// on, which must outlive the table, or kUnresolved in an unrefined cell.
 
 #ifndef LOCATOR_CORE_START_TABLE_H_
 #define LOCATOR_CORE_START_TABLE_H_
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -48,6 +54,8 @@ class StartTable {
  public:
   // A face of the serving mesh.
   using Face = uint32_t;
+  // An unrefined cell's face before its first use.
+  static constexpr Face kUnresolved = ServingMesh::kNoFace;
 
   // Bytes per stored start and per coarse cell (the cell, and the chunk's
   // control block and allocation header when refined), for budgeting.
@@ -63,21 +71,26 @@ class StartTable {
              const std::vector<SubGrid>& sub_grids,
              const StartTable* previous = nullptr);
 
-  // A table with the given sub-grids whose starts are `starts`, cell by
-  // cell in row-major order, a refined cell's sub-cells row-major (as
-  // Starts() lists them). Precondition: starts.size() is the sum of the
-  // sub-grids' cells, and every face is a finite face of the triangulation
-  // the mesh the table will be used with.
-  StartTable(const GridGeometry& grid, const std::vector<SubGrid>& sub_grids,
+  // A table on `mesh` with the given sub-grids whose starts are `starts`,
+  // cell by cell in row-major order, a refined cell's sub-cells row-major
+  // (as Starts() lists them). Precondition: starts.size() is the sum of the
+  // sub-grids' cells, and every face is a finite face of `mesh`, or
+  // kUnresolved for an unrefined cell.
+  StartTable(const ServingMesh& mesh, const GridGeometry& grid,
+             const std::vector<SubGrid>& sub_grids,
              std::span<const Face> starts);
 
   const SubGrid& sub_grid(size_t cell) const { return cells_[cell].sub_grid; }
-  // Every stored start, in the order the constructor above takes them.
+  // Every stored start, in the order the constructor above takes them
+  // (kUnresolved for an unrefined cell not used yet).
   std::vector<Face> Starts() const;
 
   // The start face for q; adds the table reads made to *lookups.
   Face Start(const Point2& q, uint32_t* lookups) const {
-    return *Slot(q, lookups);
+    const Face face =
+        std::atomic_ref<Face>(*const_cast<Face*>(Slot(q, lookups)))
+            .load(std::memory_order_relaxed);
+    return face != kUnresolved ? face : Resolve(q);
   }
   // Where Start() reads q's start, found with one read (of q's coarse
   // cell), so that a caller can prefetch it; adds the reads Start() makes
@@ -111,16 +124,21 @@ class StartTable {
 
  private:
   struct Cell {
-    Face face = 0;  // the start when the sub-grid is 1 x 1
+    // The start when the sub-grid is 1 x 1 (kUnresolved until first used).
+    mutable Face face = kUnresolved;
     // columns x rows starts, row-major, when the sub-grid is larger.
     std::shared_ptr<const Face[]> leaves;
     SubGrid sub_grid;
   };
 
-  // An empty table (every cell unset) for a Builder to fill.
-  explicit StartTable(const GridGeometry& grid)
-      : grid_(grid), cells_(grid.cells()) {}
+  // An empty table (every cell unresolved) on `mesh` for a Builder to fill.
+  StartTable(const ServingMesh& mesh, const GridGeometry& grid)
+      : mesh_(&mesh), grid_(grid), cells_(grid.cells()) {}
 
+  // Finds, stores and returns the face of q's unrefined cell.
+  Face Resolve(const Point2& q) const;
+
+  const ServingMesh* mesh_;
   GridGeometry grid_;
   std::vector<Cell> cells_;
   size_t leaf_count_ = 0;

@@ -155,8 +155,10 @@ Status ReadStarts(ByteReader* r, uint64_t min_starts, uint64_t max_starts,
   }
   state->starts.resize(count);
   for (size_t i = 0; i < count; ++i) {
-    for (uint32_t& id : state->starts[i]) {
-      id = r->U32();
+    std::array<uint32_t, 3>& ids = state->starts[i];
+    for (uint32_t& id : ids) id = r->U32();
+    if (ids == kUnresolvedStart) continue;
+    for (const uint32_t id : ids) {
       if (id >= input_points) {
         return Corrupt("start " + std::to_string(i) + " names vertex " +
                        std::to_string(id) + " of " +

@@ -88,9 +88,14 @@ struct TuningState {
   std::vector<double> planned_share;
   std::vector<uint32_t> levels;
   // The start faces by their corners' vertex ids (counter-clockwise), cell
-  // by cell; a refined cell's sub-grid row-major.
+  // by cell; a refined cell's sub-grid row-major. kUnresolvedStart for an
+  // unrefined cell whose start is found on its first use.
   std::vector<std::array<uint32_t, 3>> starts;
 };
+
+// The start of an unrefined cell not used yet (StartTable::kUnresolved).
+inline constexpr std::array<uint32_t, 3> kUnresolvedStart = {
+    0xffffffffu, 0xffffffffu, 0xffffffffu};
 
 // The file bytes of `state` learned under `fingerprint`. Precondition: the
 // state's sizes agree with the fingerprint (as DecodeTuningState checks).
