@@ -13,6 +13,9 @@ namespace locator {
 namespace {
 
 // A call without a deadline, whose router has no default either, gets this.
+// Batches up to this many points are split and merged on gRPC's threads
+// (as short as routing one point); larger ones on the router's pool.
+constexpr int kInlineBatchPoints = 4096;
 constexpr std::chrono::seconds kLastResortDeadline{60};
 
 std::optional<std::string> AuthorizationOf(
@@ -93,6 +96,13 @@ grpc::ServerUnaryReactor* RouterService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
     v1::LocateResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  // Routing one point is a table lookup, done here once the topology is
+  // known; fetching it waits on the shards, so that runs on the pool.
+  if (std::shared_ptr<const ShardTopology::Routed> routed =
+          topology_->Known(request->dataset())) {
+    ForwardLocate(context, request, response, reactor, *routed);
+    return reactor;
+  }
   pool_.Submit([this, context, request, response, reactor] {
     std::shared_ptr<const ShardTopology::Routed> routed;
     if (grpc::Status status = topology_->Get(
@@ -101,41 +111,64 @@ grpc::ServerUnaryReactor* RouterService::Locate(
       reactor->Finish(status);
       return;
     }
-    if (!request->crs().empty()) {
-      reactor->Finish(CannotRouteCrs());
-      return;
-    }
-    // Without a point the first shard says what is wrong.
-    uint32_t shard = 0;
-    if (request->has_point()) {
-      const Point2 p{request->point().x(), request->point().y()};
-      shard = routed->map.ShardOf(p);
-      if (shard == ShardMap::kNoShard) {
-        reactor->Finish(ToGrpcStatus(
-            NoShardFor(routed->map.dataset(), 0, p, routed->map.TileOf(p))));
-        return;
-      }
-    }
-    std::shared_ptr<grpc::ClientContext> call = ShardContext(*context);
-    topology_->async(shard)->Locate(
-        call.get(), request, response,
-        [this, call, shard, reactor,
-         dataset = request->dataset()](grpc::Status status) {
-          if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
-            topology_->Forget(dataset);
-          }
-          reactor->Finish(FromShard(*topology_, shard, status));
-        });
+    ForwardLocate(context, request, response, reactor, *routed);
   });
   return reactor;
+}
+
+void RouterService::ForwardLocate(grpc::CallbackServerContext* context,
+                                  const v1::LocateRequest* request,
+                                  v1::LocateResponse* response,
+                                  grpc::ServerUnaryReactor* reactor,
+                                  const ShardTopology::Routed& routed) {
+  if (!request->crs().empty()) {
+    reactor->Finish(CannotRouteCrs());
+    return;
+  }
+  // Without a point the first shard says what is wrong.
+  uint32_t shard = 0;
+  if (request->has_point()) {
+    const Point2 p{request->point().x(), request->point().y()};
+    shard = routed.map.ShardOf(p);
+    if (shard == ShardMap::kNoShard) {
+      reactor->Finish(ToGrpcStatus(
+          NoShardFor(routed.map.dataset(), 0, p, routed.map.TileOf(p))));
+      return;
+    }
+  }
+  std::shared_ptr<grpc::ClientContext> call = ShardContext(*context);
+  topology_->async(shard)->Locate(
+      call.get(), request, response,
+      [this, call, shard, reactor,
+       dataset = request->dataset()](grpc::Status status) {
+        if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
+          topology_->Forget(dataset);
+        }
+        reactor->Finish(FromShard(*topology_, shard, status));
+      });
 }
 
 grpc::ServerUnaryReactor* RouterService::LocateBatch(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
     v1::LocateBatchResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  // A small batch is split here as a point is routed; a large one, or the
+  // first for its dataset, on the pool.
+  if (std::shared_ptr<const ShardTopology::Routed> routed =
+          topology_->Known(request->dataset());
+      routed != nullptr && request->xs_size() <= kInlineBatchPoints) {
+    RouteBatch(context, request, response, reactor, *routed);
+    return reactor;
+  }
   pool_.Submit([this, context, request, response, reactor] {
-    RouteBatch(context, request, response, reactor);
+    std::shared_ptr<const ShardTopology::Routed> routed;
+    if (grpc::Status status = topology_->Get(
+            request->dataset(), AuthorizationOf(*context), &routed);
+        !status.ok()) {
+      reactor->Finish(status);
+      return;
+    }
+    RouteBatch(context, request, response, reactor, *routed);
   });
   return reactor;
 }
@@ -143,20 +176,14 @@ grpc::ServerUnaryReactor* RouterService::LocateBatch(
 void RouterService::RouteBatch(grpc::CallbackServerContext* context,
                                const v1::LocateBatchRequest* request,
                                v1::LocateBatchResponse* response,
-                               grpc::ServerUnaryReactor* reactor) {
-  std::shared_ptr<const ShardTopology::Routed> routed;
-  if (grpc::Status status = topology_->Get(request->dataset(),
-                                           AuthorizationOf(*context), &routed);
-      !status.ok()) {
-    reactor->Finish(status);
-    return;
-  }
+                               grpc::ServerUnaryReactor* reactor,
+                               const ShardTopology::Routed& routed) {
   if (!request->crs().empty()) {
     reactor->Finish(CannotRouteCrs());
     return;
   }
   auto fan = std::make_shared<BatchFanOut>();
-  if (Status split = SplitBatch(*request, routed->map, &fan->split);
+  if (Status split = SplitBatch(*request, routed.map, &fan->split);
       !split.ok()) {
     reactor->Finish(ToGrpcStatus(split));
     return;
@@ -195,7 +222,7 @@ void RouterService::RouteBatch(grpc::CallbackServerContext* context,
   for (const size_t s : called) {
     topology_->async(s)->LocateBatch(
         fan->contexts[s].get(), &fan->split.parts[s], &fan->answers[s],
-        [this, fan, s, merge,
+        [this, fan, s, merge, request,
          dataset = request->dataset()](grpc::Status status) {
           if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
             topology_->Forget(dataset);
@@ -216,7 +243,12 @@ void RouterService::RouteBatch(grpc::CallbackServerContext* context,
               }
             }
           }
-          if (last) pool_.Submit(merge);
+          if (!last) return;
+          if (request->xs_size() <= kInlineBatchPoints) {
+            merge();
+          } else {
+            pool_.Submit(merge);
+          }
         });
   }
 }

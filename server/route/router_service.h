@@ -21,8 +21,10 @@
 //
 // Every forwarded call carries the caller's deadline (or the router's
 // default) and authorization header, and is cancelled with the caller's.
-// Work beyond forwarding (topology fetches, splitting, merging) runs on the
-// router's worker pool, never on a gRPC callback thread.
+// Topology fetches, which wait on the shards, and the splitting and merging
+// of large batches run on the router's worker pool, never on a gRPC
+// callback thread; routing a point or a small batch by a known topology is
+// as short as a reaction should be and runs there.
 //
 // Thread-safety: gRPC calls its methods concurrently.
 
@@ -82,11 +84,20 @@ class RouterService final : public v1::Locator::CallbackService {
   // A context for a call to a shard on behalf of `context`'s caller.
   std::shared_ptr<grpc::ClientContext> ShardContext(
       const grpc::CallbackServerContext& context) const;
-  // Runs on the pool: routes a LocateBatch and finishes `reactor`.
+  // Sends a Locate to the shard of its point by `routed`; `reactor`
+  // finishes with the shard's answer.
+  void ForwardLocate(grpc::CallbackServerContext* context,
+                     const v1::LocateRequest* request,
+                     v1::LocateResponse* response,
+                     grpc::ServerUnaryReactor* reactor,
+                     const ShardTopology::Routed& routed);
+  // Splits a LocateBatch by `routed`, sends the parts and finishes
+  // `reactor` with the merged answers.
   void RouteBatch(grpc::CallbackServerContext* context,
                   const v1::LocateBatchRequest* request,
                   v1::LocateBatchResponse* response,
-                  grpc::ServerUnaryReactor* reactor);
+                  grpc::ServerUnaryReactor* reactor,
+                  const ShardTopology::Routed& routed);
 
   ShardTopology* const topology_;
   const std::chrono::milliseconds default_deadline_;
