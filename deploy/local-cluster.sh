@@ -39,6 +39,8 @@
 #   WORKLOAD       locator-load --workload                       (1-cluster;
 #                  uniform with --shards, so that every shard is queried)
 #   CONCURRENCY    calls in flight                               (16)
+#   MODE           locator-load --mode: unary or batch           (unary)
+#   BATCH_SIZE     with MODE=batch: points per call              (1000)
 #   RETUNE_EVERY   locatord --retune-every                       (its default)
 #   PLOT           also write locator-load's SVG chart here (the cluster's run)
 #   SUMMARY_JSON   also write the summary as JSON here (the ctests read it)
@@ -84,6 +86,13 @@ DATASET="${DATASET:-uniform:200000:1}"
 # shard and leave the victim's idle.
 if sharded; then WORKLOAD="${WORKLOAD:-uniform}"; else WORKLOAD="${WORKLOAD:-1-cluster}"; fi
 CONCURRENCY="${CONCURRENCY:-16}"
+MODE="${MODE:-unary}"
+BATCH_SIZE="${BATCH_SIZE:-1000}"
+case "$MODE" in
+  unary) mode_flags=(--mode unary) ;;
+  batch) mode_flags=(--mode batch --batch-size "$BATCH_SIZE") ;;
+  *) echo "local-cluster: MODE must be unary or batch" >&2; exit 2 ;;
+esac
 retune_flags=()
 if [ -n "${RETUNE_EVERY:-}" ]; then retune_flags=(--retune-every "$RETUNE_EVERY"); fi
 ROUTERS=2
@@ -235,8 +244,8 @@ if sharded; then
     > "$work/one-box.log" 2>&1 &
   pids[one-box]=$!
   wait_for 300 "${pids[one-box]}" "$work/one-box.log" health "$one_box"
-  log "one box: locator-load against one locatord serving all $tile_count tiles: $WORKLOAD, unary, $CONCURRENCY in flight, ${DURATION} s, --retry"
-  "$LOCATOR_LOAD" --target "$one_box" --workload "$WORKLOAD" --mode unary \
+  log "one box: locator-load against one locatord serving all $tile_count tiles: $WORKLOAD, ${mode_flags[*]}, $CONCURRENCY in flight, ${DURATION} s, --retry"
+  "$LOCATOR_LOAD" --target "$one_box" --workload "$WORKLOAD" "${mode_flags[@]}" \
     --concurrency "$CONCURRENCY" --duration "$DURATION" --retry \
     --format json > "$work/one-box.json" 2> "$work/one-box.err" || one_box_status=$?
   kill -TERM "${pids[one-box]}"
@@ -365,8 +374,8 @@ log "nginx on $target"
 
 plot_args=()
 if [ -n "${PLOT:-}" ]; then plot_args=(--plot "$PLOT"); fi
-log "locator-load: $WORKLOAD, unary, $CONCURRENCY in flight, ${DURATION} s, --retry; $victim_label dies at ${KILL_AT} s"
-"$LOCATOR_LOAD" --target "$target" --workload "$WORKLOAD" --mode unary \
+log "locator-load: $WORKLOAD, ${mode_flags[*]}, $CONCURRENCY in flight, ${DURATION} s, --retry; $victim_label dies at ${KILL_AT} s"
+"$LOCATOR_LOAD" --target "$target" --workload "$WORKLOAD" "${mode_flags[@]}" \
   --concurrency "$CONCURRENCY" --duration "$DURATION" --retry --phase-signal \
   --format json "${plot_args[@]}" > "$work/load.json" 2> "$work/load.err" &
 pids[load]=$!
