@@ -242,6 +242,7 @@ Status DatasetBuilder::MapTileSet(const DatasetSlot& slot,
   DatasetOrigin origin;
   origin.source = manifest.source;
   origin.crs = manifest.crs;
+  options.tuning.mesh_larger_than_memory = true;
   ASSIGN_OR_RETURN(std::unique_ptr<Engine> engine,
                    Engine::CreateFromMeshFile(manifest.fingerprint,
                                               std::move(origin), options));

@@ -163,6 +163,7 @@ Status RunTileSet(const TileSetBenchOptions& options, std::ostream& out) {
   DatasetOrigin origin;
   origin.source = manifest.source;
   engine_options.tuning = options.tuning;
+  engine_options.tuning.mesh_larger_than_memory = true;  // as locatord maps it
   engine_options.tuning.background = true;
   Stopwatch watch;
   ASSIGN_OR_RETURN(
@@ -178,8 +179,9 @@ Status RunTileSet(const TileSetBenchOptions& options, std::ostream& out) {
   watch.Restart();
   ASSIGN_OR_RETURN(tiled, Engine::CreateFromMeshFile(manifest.fingerprint,
                                                      origin, engine_options));
-  table.Row("tile set: ready with the first table built", watch.Seconds(), "s");
-  table.Memory("the first table");
+  table.Row("tile set: ready, the tuner in the query path", watch.Seconds(),
+            "s");
+  table.Memory("mapping again");
   if (options.verify) {
     RETURN_IF_ERROR(VerifyAgainstMemory(*tiled, mesh_path, manifest,
                                         options.verify_queries, &table));

@@ -22,6 +22,11 @@ constexpr double kStartsPerPointCap = 4;
 // Crossing ratios are clamped to [1 / kMaxCrossingRatio, kMaxCrossingRatio]:
 // a cell whose edges all run one way has no meaningful ratio.
 constexpr double kMaxCrossingRatio = 1e4;
+// With TuningOptions::mesh_larger_than_memory, a mesh of more faces than
+// this is measured on blocks of kMeasuredBlockFaces consecutive faces, this
+// many faces in all (about 200 MB of a mesh file read, however large).
+constexpr uint32_t kMaxMeasuredFaces = uint32_t{1} << 23;
+constexpr uint32_t kMeasuredBlockFaces = 4096;
 
 }  // namespace
 
@@ -49,11 +54,6 @@ HotRegionTuner::HotRegionTuner(const ServingMesh& mesh,
 void HotRegionTuner::MeasureCells() {
   if (cells_measured_) return;
   cells_measured_ = true;
-  for (const Point2& p : mesh_.arrays().points) points_[grid_.CellOf(p)] += 1;
-  cbrt_points_.resize(points_.size());
-  for (size_t c = 0; c < points_.size(); ++c) {
-    cbrt_points_[c] = std::cbrt(points_[c]);
-  }
   // A segment of length L along x crosses about L * sum|dy| / area edges
   // (and along y, L * sum|dx| / area), summing over the edges around it.
   // The sums are in Wide: an edge of a dataset spanning +-1e308 is longer
@@ -61,21 +61,53 @@ void HotRegionTuner::MeasureCells() {
   const size_t cells = grid_.cells();
   std::vector<Wide> sum_dx(cells, 0), sum_dy(cells, 0);
   Wide all_dx = 0, all_dy = 0;
-  // Each edge once: from the face with the smaller index, or the hull side.
-  for (uint32_t f = 0; f < mesh_.num_faces(); ++f) {
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t n = mesh_.Neighbor(f, i);
-      if (!ServingMesh::IsHull(n) && n < f) continue;
-      const Point2& a = mesh_.CornerPoint(f, Ccw(i));
-      const Point2& b = mesh_.CornerPoint(f, Cw(i));
-      const size_t c = grid_.CellOf(Midpoint(a, b));
-      const Wide dx = std::abs(Wide{a.x} - b.x);
-      const Wide dy = std::abs(Wide{a.y} - b.y);
-      sum_dx[c] += dx;
-      sum_dy[c] += dy;
-      all_dx += dx;
-      all_dy += dy;
+  const auto measure_edges = [&](uint32_t first, uint32_t end) {
+    // Each edge once: from the face with the smaller index, or the hull
+    // side.
+    for (uint32_t f = first; f < end; ++f) {
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t n = mesh_.Neighbor(f, i);
+        if (!ServingMesh::IsHull(n) && n < f) continue;
+        const Point2& a = mesh_.CornerPoint(f, Ccw(i));
+        const Point2& b = mesh_.CornerPoint(f, Cw(i));
+        const size_t c = grid_.CellOf(Midpoint(a, b));
+        const Wide dx = std::abs(Wide{a.x} - b.x);
+        const Wide dy = std::abs(Wide{a.y} - b.y);
+        sum_dx[c] += dx;
+        sum_dy[c] += dy;
+        all_dx += dx;
+        all_dy += dy;
+      }
     }
+  };
+  const uint32_t faces = mesh_.num_faces();
+  if (!options_.mesh_larger_than_memory || faces <= kMaxMeasuredFaces) {
+    for (const Point2& p : mesh_.arrays().points) {
+      points_[grid_.CellOf(p)] += 1;
+    }
+    measure_edges(0, faces);
+  } else {
+    // Evenly spaced blocks of consecutive faces (compact regions: faces
+    // follow a Hilbert curve), each face standing for `scale` faces, and a
+    // mesh has about half as many vertices as faces.
+    constexpr uint32_t kBlocks = kMaxMeasuredFaces / kMeasuredBlockFaces;
+    const double scale =
+        static_cast<double>(faces) / (double{kBlocks} * kMeasuredBlockFaces);
+    for (uint32_t b = 0; b < kBlocks; ++b) {
+      const uint32_t first =
+          static_cast<uint32_t>(uint64_t{b} * faces / kBlocks);
+      const uint32_t end = std::min(first + kMeasuredBlockFaces, faces);
+      for (uint32_t f = first; f < end; ++f) {
+        // Its first corner's cell: the face's vertices share its cell
+        // but for a few along the cell borders.
+        points_[grid_.CellOf(mesh_.CornerPoint(f, 0))] += scale / 2;
+      }
+      measure_edges(first, end);
+    }
+  }
+  cbrt_points_.resize(points_.size());
+  for (size_t c = 0; c < points_.size(); ++c) {
+    cbrt_points_[c] = std::cbrt(points_[c]);
   }
   const Wide aspect = grid_.CellAspect();
   for (size_t c = 0; c < cells; ++c) {
@@ -330,11 +362,13 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::SnapshotOf(
 }
 
 bool HotRegionTuner::Plan() {
+  const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
+  if (total == 0 && options_.mesh_larger_than_memory) return false;
   MeasureCells();
   builder_.reset();
   const size_t cells = grid_.cells();
-  const double total = std::accumulate(counts_.begin(), counts_.end(), 0.0);
-  const double prior = total > 0 ? kPriorShare : 1.0;
+  const double prior =
+      options_.mesh_larger_than_memory ? 0.0 : (total > 0 ? kPriorShare : 1.0);
   const std::vector<double> share = Shares(total);
   std::vector<double> weight(cells);
   for (size_t c = 0; c < cells; ++c) {
@@ -374,7 +408,8 @@ std::shared_ptr<const TuningSnapshot> HotRegionTuner::Build(uint64_t version) {
   Plan();
   size_t units = 0;
   BuildStep(SIZE_MAX, &units);
-  return Snapshot(version);
+  // Nothing planned yet (a mesh larger than memory, no traffic): coarse.
+  return table_ != nullptr ? Snapshot(version) : CoarseSnapshot(version);
 }
 
 TuningFingerprint HotRegionTuner::Fingerprint(std::string_view strategy) const {

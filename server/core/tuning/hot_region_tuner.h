@@ -105,13 +105,15 @@ class HotRegionTuner {
   // is pending (the planned table is then current).
   bool BuildStep(size_t max_units, size_t* units);
   bool building() const { return builder_ != nullptr; }
-  // Plan() and BuildStep() to completion; then Snapshot(version).
+  // Plan() and BuildStep() to completion; then Snapshot(version), or
+  // CoarseSnapshot(version) while nothing was ever planned.
   std::shared_ptr<const TuningSnapshot> Build(uint64_t version);
   // The snapshot of the current table and histogram, as `version`.
   std::shared_ptr<const TuningSnapshot> Snapshot(uint64_t version) const;
   // A snapshot, as `version`, of a table with one start per coarse cell and
-  // no sub-grids: O(cells) walks instead of the budget's. The tuner's own
-  // table stays as it was (none before the first Build()).
+  // no sub-grids, each found on its first use: nothing is walked to make
+  // it. The tuner's own table stays as it was (none before the first
+  // Build()).
   std::shared_ptr<const TuningSnapshot> CoarseSnapshot(uint64_t version) const;
 
   // What a state learned by this tuner means: the dataset, `strategy`, the
@@ -166,9 +168,11 @@ class HotRegionTuner {
   SubGrid ShapeOf(size_t c, uint32_t r) const;
   std::vector<SubGrid> Shapes(const std::vector<uint32_t>& levels) const;
   // Fills points_, cbrt_points_ and crossing_ratio_ from the
-  // triangulation's vertices and edges, once (a scan of all of them:
-  // deferred to the first plan or restore, so that a tuner is cheap to make
-  // and a server mapping a mesh larger than RAM reads none of it to start).
+  // triangulation's vertices and edges, once (a scan of all of them, or with
+  // options_.mesh_larger_than_memory of a bounded sample of a large mesh's
+  // faces: deferred to the first plan or restore, so that a tuner is cheap
+  // to make and a server mapping a mesh larger than RAM reads none of it to
+  // start).
   void MeasureCells();
   // table as the snapshot `version`, with the current histogram.
   std::shared_ptr<const TuningSnapshot> SnapshotOf(

@@ -73,5 +73,38 @@ TEST(HotRegionTunerTest, AHotSpotRebuildsItsCellsAndKeepsTheOthers) {
   }
 }
 
+// A mesh larger than RAM is tuned only where traffic goes: no table before
+// any, and then only the cells with traffic refined, the others left to find
+// their start on first use.
+TEST(HotRegionTunerTest, AMeshLargerThanMemoryIsTunedOnlyWhereTrafficIs) {
+  StatusOr<std::unique_ptr<Triangulation>> built =
+      Triangulation::Build(GenerateUniform(20'000, 3));
+  ASSERT_TRUE(built.ok()) << built.status().ToString();
+  const ServingMesh& mesh = (*built)->mesh();
+  const GridGeometry grid((*built)->bounding_box(), kTunerGrid);
+  TuningOptions options;
+  options.budget_bytes = kTunerBudgetBytes;
+  options.mesh_larger_than_memory = true;
+  HotRegionTuner tuner(mesh, grid, options, 0);
+  const std::shared_ptr<const TuningSnapshot> idle = tuner.Build(1);
+  for (const StartTable::Face face : idle->table->Starts()) {
+    EXPECT_EQ(face, StartTable::kUnresolved);
+  }
+
+  std::vector<double> counts(grid.cells(), 0.0);
+  for (size_t c = 0; c < counts.size(); ++c) {
+    counts[c] = IsHotCell(c) ? 1000 : 0;
+  }
+  tuner.AddCounts(counts);
+  const std::shared_ptr<const TuningSnapshot> hot = tuner.Build(2);
+  for (size_t c = 0; c < grid.cells(); ++c) {
+    if (IsHotCell(c)) {
+      EXPECT_GT(hot->table->sub_grid(c).cells(), 1u) << "hot cell " << c;
+    } else {
+      EXPECT_EQ(hot->table->sub_grid(c).cells(), 1u) << "cold cell " << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace locator

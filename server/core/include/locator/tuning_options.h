@@ -34,6 +34,12 @@ struct TuningOptions {
   // self-tuning: re-tune from a background thread (the server) instead of
   // inline in the query that crosses the threshold (deterministic benches).
   bool background = false;
+  // self-tuning: the mesh may be larger than RAM (a tile set), so tuning
+  // reads as little of it as it can: no table is planned before traffic
+  // arrives, plans give cells without traffic no share of the budget (they
+  // keep the start their first query finds), and the cells' densities are
+  // measured on a sample of the faces instead of all of them.
+  bool mesh_larger_than_memory = false;
   // Seed for the strategies' sampling.
   uint64_t seed = 1;
   // self-tuning: directory where the learned state persists, one file per
