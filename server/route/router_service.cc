@@ -7,23 +7,23 @@
 
 #include "common/mutex.h"
 #include "common/routing/batch_split.h"
+#include "server/grpc/call_context.h"
 #include "server/grpc/status_mapping.h"
 
 namespace locator {
 namespace {
 
 // A call without a deadline, whose router has no default either, gets this.
+constexpr std::chrono::seconds kLastResortDeadline{60};
 // Batches up to this many points are split and merged on gRPC's threads
 // (as short as routing one point); larger ones on the router's pool.
 constexpr int kInlineBatchPoints = 4096;
-constexpr std::chrono::seconds kLastResortDeadline{60};
 
-std::optional<std::string> AuthorizationOf(
+// The caller's authorization header, to send on to the shards.
+std::optional<std::string> Authorization(
     const grpc::CallbackServerContext& context) {
-  const auto& metadata = context.client_metadata();
-  const auto it = metadata.find("authorization");
-  if (it == metadata.end()) return std::nullopt;
-  return std::string(it->second.data(), it->second.size());
+  const std::optional<std::string_view> header = AuthorizationOf(context);
+  return header ? std::optional<std::string>(*header) : std::nullopt;
 }
 
 // `status` from shard `shard`, its message naming the shard.
@@ -86,7 +86,7 @@ std::shared_ptr<grpc::ClientContext> RouterService::ShardContext(
                              ? default_deadline_
                              : std::chrono::milliseconds(kLastResortDeadline)));
   }
-  if (std::optional<std::string> authorization = AuthorizationOf(context)) {
+  if (std::optional<std::string> authorization = Authorization(context)) {
     shard->AddMetadata("authorization", *authorization);
   }
   return shard;
@@ -96,24 +96,37 @@ grpc::ServerUnaryReactor* RouterService::Locate(
     grpc::CallbackServerContext* context, const v1::LocateRequest* request,
     v1::LocateResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  // Routing one point is a table lookup, done here once the topology is
-  // known; fetching it waits on the shards, so that runs on the pool.
-  if (std::shared_ptr<const ShardTopology::Routed> routed =
-          topology_->Known(request->dataset())) {
-    ForwardLocate(context, request, response, reactor, *routed);
-    return reactor;
+  // Routing one point is a table lookup: short enough for this thread.
+  WithTopology(context, request->dataset(), /*here=*/true, reactor,
+               [=, this](const ShardTopology::Routed& routed) {
+                 ForwardLocate(context, request, response, reactor, routed);
+               });
+  return reactor;
+}
+
+template <typename Route>
+void RouterService::WithTopology(grpc::CallbackServerContext* context,
+                                 const std::string& dataset, bool here,
+                                 grpc::ServerUnaryReactor* reactor,
+                                 Route route) {
+  if (here) {
+    if (std::shared_ptr<const ShardTopology::Routed> routed =
+            topology_->Known(dataset)) {
+      route(*routed);
+      return;
+    }
   }
-  pool_.Submit([this, context, request, response, reactor] {
+  // Fetching the topology waits on the shards.
+  pool_.Submit([this, context, dataset, reactor, route] {
     std::shared_ptr<const ShardTopology::Routed> routed;
-    if (grpc::Status status = topology_->Get(
-            request->dataset(), AuthorizationOf(*context), &routed);
+    if (grpc::Status status =
+            topology_->Get(dataset, Authorization(*context), &routed);
         !status.ok()) {
       reactor->Finish(status);
       return;
     }
-    ForwardLocate(context, request, response, reactor, *routed);
+    route(*routed);
   });
-  return reactor;
 }
 
 void RouterService::ForwardLocate(grpc::CallbackServerContext* context,
@@ -152,24 +165,13 @@ grpc::ServerUnaryReactor* RouterService::LocateBatch(
     grpc::CallbackServerContext* context, const v1::LocateBatchRequest* request,
     v1::LocateBatchResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  // A small batch is split here as a point is routed; a large one, or the
-  // first for its dataset, on the pool.
-  if (std::shared_ptr<const ShardTopology::Routed> routed =
-          topology_->Known(request->dataset());
-      routed != nullptr && request->xs_size() <= kInlineBatchPoints) {
-    RouteBatch(context, request, response, reactor, *routed);
-    return reactor;
-  }
-  pool_.Submit([this, context, request, response, reactor] {
-    std::shared_ptr<const ShardTopology::Routed> routed;
-    if (grpc::Status status = topology_->Get(
-            request->dataset(), AuthorizationOf(*context), &routed);
-        !status.ok()) {
-      reactor->Finish(status);
-      return;
-    }
-    RouteBatch(context, request, response, reactor, *routed);
-  });
+  // A small batch is split on this thread as a point is routed; a large
+  // one on the pool.
+  WithTopology(context, request->dataset(),
+               request->xs_size() <= kInlineBatchPoints, reactor,
+               [=, this](const ShardTopology::Routed& routed) {
+                 RouteBatch(context, request, response, reactor, routed);
+               });
   return reactor;
 }
 
@@ -257,13 +259,11 @@ grpc::ServerUnaryReactor* RouterService::GetTopology(
     grpc::CallbackServerContext* context, const v1::GetTopologyRequest* request,
     v1::GetTopologyResponse* response) {
   grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  pool_.Submit([this, context, request, response, reactor] {
-    std::shared_ptr<const ShardTopology::Routed> routed;
-    const grpc::Status status =
-        topology_->Get(request->dataset(), AuthorizationOf(*context), &routed);
-    if (status.ok()) *response = routed->topology;
-    reactor->Finish(status);
-  });
+  WithTopology(context, request->dataset(), /*here=*/true, reactor,
+               [response, reactor](const ShardTopology::Routed& routed) {
+                 *response = routed.topology;
+                 reactor->Finish(grpc::Status::OK);
+               });
   return reactor;
 }
 

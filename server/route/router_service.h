@@ -33,6 +33,7 @@
 
 #include <chrono>
 #include <memory>
+#include <string>
 
 #include "locator/v1/locator.grpc.pb.h"
 #include "server/route/shard_topology.h"
@@ -84,6 +85,13 @@ class RouterService final : public v1::Locator::CallbackService {
   // A context for a call to a shard on behalf of `context`'s caller.
   std::shared_ptr<grpc::ClientContext> ShardContext(
       const grpc::CallbackServerContext& context) const;
+  // Runs `route` with `dataset`'s topology: at once on this thread when it
+  // is known and `here`, else on the pool once known (a failed fetch
+  // finishes `reactor` with the shards' error).
+  template <typename Route>
+  void WithTopology(grpc::CallbackServerContext* context,
+                    const std::string& dataset, bool here,
+                    grpc::ServerUnaryReactor* reactor, Route route);
   // Sends a Locate to the shard of its point by `routed`; `reactor`
   // finishes with the shard's answer.
   void ForwardLocate(grpc::CallbackServerContext* context,

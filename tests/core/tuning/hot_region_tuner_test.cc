@@ -32,21 +32,40 @@ bool IsHotCell(size_t cell) {
          cell % kTunerGrid < kTunerHotColumns;
 }
 
-TEST(HotRegionTunerTest, AHotSpotRebuildsItsCellsAndKeepsTheOthers) {
-  StatusOr<std::unique_ptr<Triangulation>> built =
-      Triangulation::Build(GenerateUniform(20'000, 3));
-  ASSERT_TRUE(built.ok()) << built.status().ToString();
-  const ServingMesh& mesh = (*built)->mesh();
-  const GridGeometry grid((*built)->bounding_box(), kTunerGrid);
+// 20,000 uniform points and the tuners' grid over them.
+class HotRegionTunerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    StatusOr<std::unique_ptr<Triangulation>> built =
+        Triangulation::Build(GenerateUniform(20'000, 3));
+    ASSERT_TRUE(built.ok()) << built.status().ToString();
+    triangulation_ = *std::move(built);
+  }
+  const ServingMesh& mesh() const { return triangulation_->mesh(); }
+  GridGeometry grid() const {
+    return GridGeometry(triangulation_->bounding_box(), kTunerGrid);
+  }
+  // The traffic of the hot spot: 1000 queries in each hot cell.
+  std::vector<double> HotCounts() const {
+    std::vector<double> counts(grid().cells(), 0.0);
+    for (size_t c = 0; c < counts.size(); ++c) {
+      counts[c] = IsHotCell(c) ? 1000 : 0;
+    }
+    return counts;
+  }
+
+  std::unique_ptr<Triangulation> triangulation_;
+};
+
+TEST_F(HotRegionTunerTest, AHotSpotRebuildsItsCellsAndKeepsTheOthers) {
+  const ServingMesh& mesh = this->mesh();
+  const GridGeometry grid = this->grid();
   TuningOptions options;
   options.budget_bytes = kTunerBudgetBytes;
   HotRegionTuner tuner(mesh, grid, options, 0);
   const std::shared_ptr<const TuningSnapshot> uniform = tuner.Build(1);
 
-  std::vector<double> counts(grid.cells(), 0.0);
-  for (size_t c = 0; c < counts.size(); ++c)
-    counts[c] = IsHotCell(c) ? 1000 : 0;
-  tuner.AddCounts(counts);
+  tuner.AddCounts(HotCounts());
   const std::shared_ptr<const TuningSnapshot> hot = tuner.Build(2);
 
   ASSERT_NE(hot->table, uniform->table) << "the hot spot must re-tune";
@@ -76,26 +95,18 @@ TEST(HotRegionTunerTest, AHotSpotRebuildsItsCellsAndKeepsTheOthers) {
 // A mesh larger than RAM is tuned only where traffic goes: no table before
 // any, and then only the cells with traffic refined, the others left to find
 // their start on first use.
-TEST(HotRegionTunerTest, AMeshLargerThanMemoryIsTunedOnlyWhereTrafficIs) {
-  StatusOr<std::unique_ptr<Triangulation>> built =
-      Triangulation::Build(GenerateUniform(20'000, 3));
-  ASSERT_TRUE(built.ok()) << built.status().ToString();
-  const ServingMesh& mesh = (*built)->mesh();
-  const GridGeometry grid((*built)->bounding_box(), kTunerGrid);
+TEST_F(HotRegionTunerTest, AMeshLargerThanMemoryIsTunedOnlyWhereTrafficIs) {
+  const GridGeometry grid = this->grid();
   TuningOptions options;
   options.budget_bytes = kTunerBudgetBytes;
   options.mesh_larger_than_memory = true;
-  HotRegionTuner tuner(mesh, grid, options, 0);
+  HotRegionTuner tuner(mesh(), grid, options, 0);
   const std::shared_ptr<const TuningSnapshot> idle = tuner.Build(1);
   for (const StartTable::Face face : idle->table->Starts()) {
     EXPECT_EQ(face, StartTable::kUnresolved);
   }
 
-  std::vector<double> counts(grid.cells(), 0.0);
-  for (size_t c = 0; c < counts.size(); ++c) {
-    counts[c] = IsHotCell(c) ? 1000 : 0;
-  }
-  tuner.AddCounts(counts);
+  tuner.AddCounts(HotCounts());
   const std::shared_ptr<const TuningSnapshot> hot = tuner.Build(2);
   for (size_t c = 0; c < grid.cells(); ++c) {
     if (IsHotCell(c)) {
