@@ -47,7 +47,8 @@ BatchLocator::BatchLocator(size_t threads, size_t max_batch_points)
     : max_batch_points_(max_batch_points),
       pool_(threads > 1 ? threads - 1 : 0) {}
 
-Status BatchLocator::Validate(const v1::LocateBatchRequest& request) const {
+Status ValidateBatchRequest(const v1::LocateBatchRequest& request,
+                            size_t max_points) {
   const int xs = request.xs_size();
   const int ys = request.ys_size();
   if (xs != ys) {
@@ -56,10 +57,10 @@ Status BatchLocator::Validate(const v1::LocateBatchRequest& request) const {
         << "; they must have the same length";
     return Status::InvalidArgument(msg.str());
   }
-  if (static_cast<size_t>(xs) > max_batch_points_) {
+  if (static_cast<size_t>(xs) > max_points) {
     std::ostringstream msg;
     msg << "batch of " << xs << " points exceeds this server's limit of "
-        << max_batch_points_ << " points per batch";
+        << max_points << " points per batch";
     return Status::ResourceExhausted(msg.str());
   }
   // Checked here for the whole batch, not per block by the engine, so that

@@ -29,6 +29,14 @@
 
 namespace locator {
 
+// The checks a LocateBatch passes before anything is located: xs and ys of
+// equal length (InvalidArgument), at most `max_points` points
+// (ResourceExhausted), finite coordinates (InvalidArgument naming the first
+// bad point's index). The router (locatord --route) makes them too, so
+// that its errors name the point's index in the whole batch.
+[[nodiscard]] Status ValidateBatchRequest(const v1::LocateBatchRequest& request,
+                                          size_t max_points);
+
 class BatchLocator {
  public:
   static constexpr size_t kMinShardPoints = 4096;
@@ -74,11 +82,11 @@ class BatchLocator {
            CallControl control, v1::LocateBatchResponse* response,
            const std::function<Status()>& check = nullptr);
 
-  // The checks Run() makes before locating anything: xs and ys of equal
-  // length (InvalidArgument), at most max_batch_points points
-  // (ResourceExhausted), finite coordinates (InvalidArgument naming the first
-  // bad point's index). Public for the request fuzzer.
-  Status Validate(const v1::LocateBatchRequest& request) const;
+  // ValidateBatchRequest() with this locator's point limit. Public for the
+  // request fuzzer.
+  Status Validate(const v1::LocateBatchRequest& request) const {
+    return ValidateBatchRequest(request, max_batch_points_);
+  }
 
  private:
   struct Call;

@@ -29,7 +29,8 @@ int RunRouter(std::string_view program, const ServerConfig& config) {
   channel.balance_addresses = true;
   ShardTopology topology(config.shards, channel, kTopologyDeadline);
   RouterService service(&topology, std::max<size_t>(2, config.serving.threads),
-                        config.serving.transport.default_deadline);
+                        config.serving.transport.default_deadline,
+                        config.serving.max_batch_points);
   std::unique_ptr<ServerRunner> runner;
   if (Status started =
           ServerRunner::Start(program, config.serving, {&service}, {}, &runner);

@@ -7,6 +7,7 @@
 
 #include "common/mutex.h"
 #include "common/routing/batch_split.h"
+#include "server/app/batch_locator.h"
 #include "server/grpc/call_context.h"
 #include "server/grpc/status_mapping.h"
 
@@ -71,9 +72,11 @@ struct BatchFanOut {
 }  // namespace
 
 RouterService::RouterService(ShardTopology* topology, size_t threads,
-                             std::chrono::milliseconds default_deadline)
+                             std::chrono::milliseconds default_deadline,
+                             size_t max_batch_points)
     : topology_(topology),
       default_deadline_(default_deadline),
+      max_batch_points_(max_batch_points),
       pool_(threads) {}
 
 std::shared_ptr<grpc::ClientContext> RouterService::ShardContext(
@@ -180,6 +183,13 @@ void RouterService::RouteBatch(grpc::CallbackServerContext* context,
                                v1::LocateBatchResponse* response,
                                grpc::ServerUnaryReactor* reactor,
                                const ShardTopology::Routed& routed) {
+  // Checked whole, so that an error names the point's index in the batch
+  // (a shard's would name it in its part).
+  if (Status valid = ValidateBatchRequest(*request, max_batch_points_);
+      !valid.ok()) {
+    reactor->Finish(ToGrpcStatus(valid));
+    return;
+  }
   if (!request->crs().empty()) {
     reactor->Finish(CannotRouteCrs());
     return;

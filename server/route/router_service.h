@@ -44,9 +44,12 @@ namespace locator {
 class RouterService final : public v1::Locator::CallbackService {
  public:
   // Routes to the shards of `topology` (which must outlive it), with
-  // `threads` workers, giving calls without a deadline `default_deadline`.
+  // `threads` workers, giving calls without a deadline `default_deadline`
+  // and refusing batches of more than `max_batch_points` points as a
+  // server does (ValidateBatchRequest, before any shard is called).
   RouterService(ShardTopology* topology, size_t threads,
-                std::chrono::milliseconds default_deadline);
+                std::chrono::milliseconds default_deadline,
+                size_t max_batch_points);
 
   grpc::ServerUnaryReactor* Locate(grpc::CallbackServerContext* context,
                                    const v1::LocateRequest* request,
@@ -109,6 +112,7 @@ class RouterService final : public v1::Locator::CallbackService {
 
   ShardTopology* const topology_;
   const std::chrono::milliseconds default_deadline_;
+  const size_t max_batch_points_;
   WorkerPool pool_;
 };
 

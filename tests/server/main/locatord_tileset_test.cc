@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -139,7 +140,8 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1).ok());
   ASSERT_TRUE(StartLocatord(spec,
                             {"--route", "--shards",
-                             shard0->target() + "," + shard1->target()},
+                             shard0->target() + "," + shard1->target(),
+                             "--max-batch-points", "5000"},
                             &router)
                   .ok());
   auto stub = NewStub(*router);
@@ -196,10 +198,39 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   EXPECT_THAT(status.error_message(),
               HasSubstr("which this server does not serve (--tiles '0/2')"));
 
+  // Hostile requests get a server's answers, naming the point's index in
+  // the whole batch, not in a shard's part.
+  const auto batch_status = [&](const std::vector<Point2>& points,
+                                const std::string& dataset) {
+    v1::LocateBatchRequest request = BatchRequestFor(points);
+    request.set_dataset(dataset);
+    v1::LocateBatchResponse response;
+    grpc::ClientContext context;
+    return stub->LocateBatch(&context, request, &response);
+  };
+  std::vector<Point2> hostile(3000, Point2{0.5, 0.5});
+  hostile[2999] = {std::numeric_limits<double>::quiet_NaN(), 0.5};
+  grpc::Status answer = batch_status(hostile, "tiles");
+  EXPECT_EQ(answer.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(answer.error_message(), HasSubstr("point 2999"));
+  answer = batch_status(std::vector<Point2>(5001, Point2{0.5, 0.5}), "tiles");
+  EXPECT_EQ(answer.error_code(), grpc::StatusCode::RESOURCE_EXHAUSTED);
+  EXPECT_THAT(answer.error_message(), HasSubstr("limit of 5000 points"));
+  EXPECT_EQ(
+      batch_status({{0.5, 0.5}}, "lava\n" + std::string(300, 'z')).error_code(),
+      grpc::StatusCode::NOT_FOUND);
+  EXPECT_TRUE(batch_status({{1e300, -1e300}, {4.9e-324, 0}}, "tiles").ok());
+  v1::LocateRequest no_point;
+  v1::LocateResponse located;
+  grpc::ClientContext no_point_context;
+  EXPECT_EQ(stub->Locate(&no_point_context, no_point, &located).error_code(),
+            grpc::StatusCode::INVALID_ARGUMENT);
+
   // What the router cannot route is refused, saying what to do instead.
-  all.set_crs("EPSG:4326");
+  v1::LocateBatchRequest with_crs = BatchRequestFor(first);
+  with_crs.set_crs("EPSG:4326");
   grpc::ClientContext crs_context;
-  EXPECT_EQ(stub->LocateBatch(&crs_context, all, &refused).error_code(),
+  EXPECT_EQ(stub->LocateBatch(&crs_context, with_crs, &refused).error_code(),
             grpc::StatusCode::INVALID_ARGUMENT);
   grpc::ClientContext retune_context;
   v1::RetuneResponse retuned;
