@@ -85,7 +85,13 @@ unsigned HttpStatusFor(Status::Code code) {
 }
 
 HttpResponse ApiError(const Status& status, unsigned http_status) {
-  const int canonical = CanonicalCode(status.code());
+  HttpResponse response =
+      ApiError(CanonicalCode(status.code()), status.message());
+  if (http_status != 0) response.status = http_status;
+  return response;
+}
+
+HttpResponse ApiError(int canonical, std::string_view message) {
   const CanonicalCodeInfo& info = InfoOf(canonical);
   JsonWriter json;
   json.BeginObject()
@@ -94,12 +100,11 @@ HttpResponse ApiError(const Status& status, unsigned http_status) {
       .Key("status")
       .String(info.name)
       .Key("message")
-      .String(TruncatedMessage(status.message(), kMaxStatusMessageBytes))
+      .String(TruncatedMessage(message, kMaxStatusMessageBytes))
       .EndObject();
-  return HttpResponse{
-      .status = http_status != 0 ? http_status : info.http_status,
-      .content_type = kJsonContentType,
-      .body = json.text()};
+  return HttpResponse{.status = info.http_status,
+                      .content_type = kJsonContentType,
+                      .body = json.text()};
 }
 
 HttpResponse OpenTopoDataError(const Status& status) {

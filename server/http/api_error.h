@@ -19,6 +19,7 @@
 #define LOCATOR_SERVER_HTTP_API_ERROR_H_
 
 #include <string>
+#include <string_view>
 
 #include "locator/status.h"
 #include "server/http/http_server.h"
@@ -43,6 +44,9 @@ unsigned HttpStatusFor(Status::Code code);
 // The answer to a call that failed with `status` (not OK); `http_status`
 // 0: HttpStatusFor(status.code()).
 HttpResponse ApiError(const Status& status, unsigned http_status = 0);
+// The answer to a call that failed with canonical code `canonical` (a gRPC
+// status code's number, as a router hands on a shard's) and `message`.
+HttpResponse ApiError(int canonical, std::string_view message);
 
 // Seconds a refused client is told to wait (Retry-After) before it retries.
 inline constexpr int kRetryAfterSeconds = 1;

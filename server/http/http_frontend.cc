@@ -30,6 +30,46 @@ bool IsJsonContentType(std::optional<std::string_view> content_type) {
       "application/json");
 }
 
+// The answer to a request the HTTP server could not read.
+HttpResponse ProblemAnswer(const HttpRequest& request,
+                           const HttpLimits& limits) {
+  using Problem = HttpRequest::Problem;
+
+  std::string busy;
+  switch (request.problem) {
+    case Problem::kBodyTooLarge:
+      return ApiError(Status::ResourceExhausted(
+                          "the request body is larger than this server's "
+                          "limit of " +
+                          std::to_string(limits.max_body_bytes) +
+                          " bytes (--http-max-body-bytes)"),
+                      413);
+    case Problem::kHeaderTooLarge:
+      return ApiError(
+          Status::ResourceExhausted(
+              "the request header is larger than this server's "
+              "limit of " +
+              std::to_string(HttpServer::kMaxHeaderBytes) + " bytes"),
+          431);
+    case Problem::kMalformed:
+      return ApiError(Status::InvalidArgument("malformed HTTP request: " +
+                                              request.problem_detail),
+                      400);
+    case Problem::kAddressFull:
+      busy = request.problem_detail + " has " +
+             std::to_string(limits.max_connections_per_address) +
+             " connections open to this server, its limit "
+             "(--http-max-connections-per-address); close one or retry";
+      break;
+    case Problem::kNone:  // never asked
+    case Problem::kServerBusy:
+      busy = "all " + std::to_string(limits.max_connections) +
+             " connections of this server are busy; retry";
+      break;
+  }
+  return BusyError(busy);
+}
+
 }  // namespace
 
 HttpFrontend::HttpFrontend(LocatorApp* app, HttpOptions options,
@@ -104,25 +144,31 @@ Status HttpFrontend::Listen(const std::string& host, int port) {
       &http_);
 }
 
-void HttpFrontend::Route(HttpRequest request, HttpReply reply) {
-  if (cors_.IsPreflight(request)) {
-    reply(cors_.Preflight(request));
-    return;
+bool ReceiveRequest(const CorsPolicy& cors, const HttpLimits& limits,
+                    const HttpRequest& request, HttpReply* reply) {
+  if (cors.IsPreflight(request)) {
+    (*reply)(cors.Preflight(request));
+    return true;
   }
   // Every answer carries the CORS headers the request's origin gets.
   std::optional<std::string> origin;
   if (std::optional<std::string_view> header = request.Header("origin")) {
     origin = std::string(*header);
   }
-  reply = [this, origin = std::move(origin),
-           reply = std::move(reply)](HttpResponse response) {
-    cors_.Apply(origin, &response);
+  *reply = [&cors, origin = std::move(origin),
+            reply = std::move(*reply)](HttpResponse response) {
+    cors.Apply(origin, &response);
     reply(std::move(response));
   };
   if (request.problem != HttpRequest::Problem::kNone) {
-    reply(ProblemAnswer(request));
-    return;
+    (*reply)(ProblemAnswer(request, limits));
+    return true;
   }
+  return false;
+}
+
+void HttpFrontend::Route(HttpRequest request, HttpReply reply) {
+  if (ReceiveRequest(cors_, options_.limits, request, &reply)) return;
   // Open Topo Data takes form-encoded POSTs as its clients send them; its
   // calls only read, and a token travels in a header no form can set.
   if (request.path == OpenTopoDataApi::kPathPrefix ||
@@ -154,45 +200,6 @@ void HttpFrontend::Route(HttpRequest request, HttpReply reply) {
   }
   reply(endpoints_.Handle(request.path, request.query,
                           request.Header("authorization")));
-}
-
-HttpResponse HttpFrontend::ProblemAnswer(const HttpRequest& request) const {
-  using Problem = HttpRequest::Problem;
-
-  const HttpLimits& limits = options_.limits;
-  std::string busy;
-  switch (request.problem) {
-    case Problem::kBodyTooLarge:
-      return ApiError(Status::ResourceExhausted(
-                          "the request body is larger than this server's "
-                          "limit of " +
-                          std::to_string(limits.max_body_bytes) +
-                          " bytes (--http-max-body-bytes)"),
-                      413);
-    case Problem::kHeaderTooLarge:
-      return ApiError(
-          Status::ResourceExhausted(
-              "the request header is larger than this server's "
-              "limit of " +
-              std::to_string(HttpServer::kMaxHeaderBytes) + " bytes"),
-          431);
-    case Problem::kMalformed:
-      return ApiError(Status::InvalidArgument("malformed HTTP request: " +
-                                              request.problem_detail),
-                      400);
-    case Problem::kAddressFull:
-      busy = request.problem_detail + " has " +
-             std::to_string(limits.max_connections_per_address) +
-             " connections open to this server, its limit "
-             "(--http-max-connections-per-address); close one or retry";
-      break;
-    case Problem::kNone:  // never asked
-    case Problem::kServerBusy:
-      busy = "all " + std::to_string(limits.max_connections) +
-             " connections of this server are busy; retry";
-      break;
-  }
-  return BusyError(busy);
 }
 
 Status HttpFrontend::HistoryOf(std::string_view dataset,

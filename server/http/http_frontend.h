@@ -56,6 +56,14 @@ struct HttpOptions {
   bool public_status = false;
 };
 
+// What every HTTP front of a server (locatord's, the router's) does with a
+// request first: answers a CORS preflight, makes *reply add the CORS
+// headers `cors` gives the request's origin (which must outlive the
+// reply), and answers a request the server could not read (too large,
+// malformed, over `limits`). True when the request is answered.
+bool ReceiveRequest(const CorsPolicy& cors, const HttpLimits& limits,
+                    const HttpRequest& request, HttpReply* reply);
+
 class HttpFrontend {
  public:
   // Sample the history this often (SampleHistory()'s intended period).
@@ -80,8 +88,6 @@ class HttpFrontend {
  private:
   // Answers one HTTP request (HttpHandler).
   void Route(HttpRequest request, HttpReply reply);
-  // The answer to a request the HTTP server could not read (see above).
-  HttpResponse ProblemAnswer(const HttpRequest& request) const;
   // The history of dataset `dataset` ("": the default).
   Status HistoryOf(std::string_view dataset,
                    const StatsHistory** history) const;

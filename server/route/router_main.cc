@@ -7,8 +7,12 @@
 
 #include "common/channel_options.h"
 #include "server/config/server_log.h"
+#include "server/http/cors_policy.h"
+#include "server/http/http_frontend.h"
 #include "server/main/server_runner.h"
+#include "server/route/router_http_api.h"
 #include "server/route/router_service.h"
+#include "server/route/shard_router.h"
 #include "server/route/shard_topology.h"
 
 namespace locator {
@@ -28,15 +32,39 @@ int RunRouter(std::string_view program, const ServerConfig& config) {
   channel.retry_unavailable = true;
   channel.balance_addresses = true;
   ShardTopology topology(config.shards, channel, kTopologyDeadline);
-  RouterService service(&topology, std::max<size_t>(2, config.serving.threads),
-                        config.serving.transport.default_deadline,
-                        config.serving.max_batch_points);
+  ShardRouter router(&topology, std::max<size_t>(2, config.serving.threads),
+                     config.serving.max_batch_points);
+  RouterService service(&router, config.serving.transport.default_deadline);
   std::unique_ptr<ServerRunner> runner;
   if (Status started =
           ServerRunner::Start(program, config.serving, {&service}, {}, &runner);
       !started.ok()) {
     std::cerr << program << ": " << started.message() << std::endl;
     return 1;
+  }
+  // For browsers and curl: the routed calls over HTTP/JSON.
+  const CorsPolicy cors(config.http_cors_origins);
+  const HttpLimits limits{
+      .max_body_bytes = config.http_max_body_bytes,
+      .max_connections = config.http_max_connections,
+      .max_connections_per_address = config.http_max_connections_per_address};
+  RouterHttpApi http_api(&router, config.serving.transport.default_deadline);
+  std::unique_ptr<HttpServer> http;
+  if (config.http_enabled()) {
+    if (Status listening = HttpServer::Start(
+            config.http_host, config.http_port, limits,
+            [&](HttpRequest request, HttpReply reply) {
+              if (ReceiveRequest(cors, limits, request, &reply)) return;
+              http_api.Handle(std::move(request), std::move(reply));
+            },
+            &http);
+        !listening.ok()) {
+      std::cerr << program << ": " << listening.message() << std::endl;
+      runner->Stop(1);
+      return runner->Run();
+    }
+    std::cout << program << " http listening on " << config.http_host << ":"
+              << http->port() << std::endl;
   }
   LogLine(LogLevel::kInfo) << "routing to " << config.shards.size()
                            << " shards";

@@ -1,5 +1,7 @@
 #include "server/http/json/api_answers.h"
 
+#include <google/protobuf/util/json_util.h>
+
 #include <string>
 
 #include "common/input_text.h"
@@ -7,6 +9,31 @@
 #include "server/http/api_error.h"
 
 namespace locator {
+namespace {
+
+// The most of protobuf's complaint about a body that an error shows: room
+// for the field's path and a quoted prefix of the value.
+constexpr size_t kParseErrorBytes = 2 * kQuotedInputBytes;
+
+}  // namespace
+
+Status ParseJsonMessage(std::string_view body, google::protobuf::Message* out) {
+  google::protobuf::util::JsonParseOptions options;
+  options.ignore_unknown_fields = false;
+  if (body.empty()) body = "{}";
+  if (const auto parsed =
+          google::protobuf::util::JsonStringToMessage(body, out, options);
+      !parsed.ok()) {
+    // Protobuf adds a picture of the position on further lines, and quotes
+    // an unknown field or a bad value whole.
+    const std::string_view error(parsed.message().data(),
+                                 parsed.message().size());
+    return Status::InvalidArgument(
+        "the body is not a " + out->GetTypeName() + " in JSON: " +
+        TruncatedMessage(error.substr(0, error.find('\n')), kParseErrorBytes));
+  }
+  return Status::OK();
+}
 
 HttpResponse JsonAnswer(const google::protobuf::Message& message) {
   return HttpResponse{.content_type = kJsonContentType,

@@ -9,11 +9,37 @@
 
 #include <google/protobuf/message.h>
 
+#include <string>
 #include <string_view>
 
+#include "common/input_text.h"
+#include "locator/status.h"
 #include "server/http/http_server.h"
 
 namespace locator {
+
+// Parses `body` ("": {}) into *out in protobuf's JSON mapping (unknown
+// fields are errors): InvalidArgument naming the parse error otherwise.
+[[nodiscard]] Status ParseJsonMessage(std::string_view body,
+                                      google::protobuf::Message* out);
+
+// Parses the body of a request for dataset `dataset` (the path's) into
+// *out, whose `dataset` field it sets. ParseJsonMessage's error, or
+// InvalidArgument for a body naming a `dataset` other than the path's.
+template <typename Request>
+Status ParseBody(const HttpRequest& request, std::string_view dataset,
+                 Request* out) {
+  if (Status parsed = ParseJsonMessage(request.body, out); !parsed.ok()) {
+    return parsed;
+  }
+  if (!out->dataset().empty() && out->dataset() != dataset) {
+    return Status::InvalidArgument(
+        "the body names dataset " + QuotedInput(out->dataset()) +
+        " but the path names " + QuotedInput(dataset));
+  }
+  out->set_dataset(std::string(dataset));
+  return Status::OK();
+}
 
 // 200 with `message` as ProtoJson prints it.
 HttpResponse JsonAnswer(const google::protobuf::Message& message);

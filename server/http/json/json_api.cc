@@ -1,6 +1,5 @@
 #include "server/http/json/json_api.h"
 
-#include <google/protobuf/util/json_util.h>
 #include <prometheus/gauge.h>
 
 #include <chrono>
@@ -20,40 +19,6 @@ namespace locator {
 namespace {
 
 constexpr std::string_view kDatasetsPath = "/v1/datasets";
-// The most of protobuf's complaint about a body that an error shows: room
-// for the field's path and a quoted prefix of the value.
-constexpr size_t kParseErrorBytes = 2 * kQuotedInputBytes;
-
-// Parses the body of a request for dataset `dataset` (the path's) into
-// *out, whose `dataset` field it sets. INVALID_ARGUMENT naming the parse
-// error, or a body `dataset` other than the path's.
-template <typename Request>
-Status ParseBody(const HttpRequest& request, std::string_view dataset,
-                 Request* out) {
-  google::protobuf::util::JsonParseOptions options;
-  options.ignore_unknown_fields = false;
-  const std::string_view body =
-      request.body.empty() ? std::string_view("{}") : request.body;
-  if (const auto parsed =
-          google::protobuf::util::JsonStringToMessage(body, out, options);
-      !parsed.ok()) {
-    // Protobuf adds a picture of the position on further lines, and quotes
-    // an unknown field or a bad value whole.
-    const std::string_view error(parsed.message().data(),
-                                 parsed.message().size());
-    return Status::InvalidArgument(
-        "the body is not a " + out->GetTypeName() + " in JSON: " +
-        TruncatedMessage(error.substr(0, error.find('\n')), kParseErrorBytes));
-  }
-  if (!out->dataset().empty() && out->dataset() != dataset) {
-    return Status::InvalidArgument(
-        "the body names dataset " + QuotedInput(out->dataset()) +
-        " but the path names " + QuotedInput(dataset));
-  }
-  out->set_dataset(std::string(dataset));
-  return Status::OK();
-}
-
 // `registry`, or, when it is null, the one kept in `own`, made on the first
 // call (a second one would destroy the families of the first).
 prometheus::Registry& RegistryOr(prometheus::Registry* registry,

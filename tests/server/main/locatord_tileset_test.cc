@@ -10,6 +10,7 @@
 // naming them.
 
 #include <gmock/gmock.h>
+#include <google/protobuf/util/json_util.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
@@ -28,6 +29,7 @@
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tileset/tile_file.h"
 #include "tests/core/scratch_dir.h"
+#include "tests/server/http/http_test_client.h"
 #include "tests/server/main/e2e_support.h"
 #include "tests/testing/run_binary.h"
 
@@ -238,6 +240,65 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
       stub->Retune(&retune_context, v1::RetuneRequest(), &retuned);
   EXPECT_EQ(retune.error_code(), grpc::StatusCode::UNIMPLEMENTED);
   EXPECT_THAT(retune.error_message(), HasSubstr("call a shard"));
+}
+
+// The router's HTTP/JSON API answers browsers as the gRPC router does.
+TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
+  const std::string spec = "tiles=" + tiles_ + "/manifest.json";
+  std::unique_ptr<ServerProcess> shard0, shard1, router;
+  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0/2"}, &shard0).ok());
+  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1).ok());
+  ASSERT_TRUE(StartLocatord(spec,
+                            {"--route", "--shards",
+                             shard0->target() + "," + shard1->target(),
+                             "--http-listen", "127.0.0.1:0"},
+                            &router)
+                  .ok());
+  auto stub = NewStub(*router);
+  ASSERT_TRUE(router->WaitForListening().ok());  // its HTTP line
+  const int http_port = router->port();
+
+  const std::vector<Point2> points = {
+      {0.1, 0.1}, {0.9, 0.1}, {0.5, 0.5}, {0.9, 0.9}, {3, -2}};
+  v1::LocateBatchRequest request = BatchRequestFor(points);
+  request.set_dataset("tiles");
+  v1::LocateBatchResponse over_grpc;
+  grpc::ClientContext context;
+  ASSERT_TRUE(stub->LocateBatch(&context, request, &over_grpc).ok());
+  request.clear_dataset();
+  std::string body;
+  ASSERT_TRUE(google::protobuf::util::MessageToJsonString(request, &body).ok());
+  HttpReply reply;
+  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locateBatch",
+                       &reply, body)
+                  .ok());
+  ASSERT_EQ(reply.status, 200u) << reply.body;
+  v1::LocateBatchResponse over_http;
+  ASSERT_TRUE(
+      google::protobuf::util::JsonStringToMessage(reply.body, &over_http).ok());
+  EXPECT_EQ(over_http.triangle_ids_size(), 5);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(over_http.triangle_ids(i), over_grpc.triangle_ids(i)) << i;
+    EXPECT_EQ(over_http.types(i), over_grpc.types(i)) << i;
+  }
+  ASSERT_TRUE(
+      SendHttp(http_port, "GET", "/v1/datasets/tiles:topology", &reply).ok());
+  EXPECT_EQ(reply.status, 200u);
+  EXPECT_THAT(reply.body, HasSubstr("\"complete\":true"));
+  // A shard's own routes are not the router's; bad bodies are 400.
+  ASSERT_TRUE(
+      SendHttp(http_port, "GET", "/v1/datasets/tiles/tiles/0/0/0.png", &reply)
+          .ok());
+  EXPECT_EQ(reply.status, 404u);
+  EXPECT_THAT(reply.body, HasSubstr("answered by any shard"));
+  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
+                       "{\"point\": {\"x\": \"NaN\", \"y\": 1}}")
+                  .ok());
+  EXPECT_EQ(reply.status, 400u) << reply.body;
+  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
+                       "{\"pont\": 1}")
+                  .ok());
+  EXPECT_EQ(reply.status, 400u) << reply.body;
 }
 
 TEST_F(LocatordTileSetTest, AClientRoutesByTopologyAsTheRouterDoes) {

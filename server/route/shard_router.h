@@ -1,0 +1,89 @@
+// ShardRouter: what a router (locatord --route) does with a call, whatever
+// transport brought it: Locate to the shard of its point, LocateBatch split
+// by shard and merged in input order (common/routing/batch_split.h), and
+// GetTopology from the shards' (ShardTopology). The gRPC service
+// (router_service.h) and the HTTP/JSON API (router_http_api.h) are thin
+// adapters over it.
+//
+// Points are routed in the dataset's coordinates: a request with a crs is
+// INVALID_ARGUMENT. A batch is validated whole first (the point limit,
+// finite coordinates: ValidateBatchRequest), so that an error names the
+// point's index in the batch. A shard's error reaches the caller with its
+// code, the message naming the shard; a shard refusing a point it does not
+// serve also makes the router fetch the topology again.
+//
+// Topology fetches, which wait on the shards, and the splitting and merging
+// of large batches run on the router's worker pool; routing a point or a
+// small batch by a known topology runs on the calling thread (as short as
+// a gRPC reaction should be).
+//
+// Thread-safety: all methods may be called concurrently.
+
+#ifndef LOCATOR_SERVER_ROUTE_SHARD_ROUTER_H_
+#define LOCATOR_SERVER_ROUTE_SHARD_ROUTER_H_
+
+#include <grpcpp/grpcpp.h>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "locator/v1/locator.grpc.pb.h"
+#include "server/route/shard_topology.h"
+#include "server/serving/worker_pool.h"
+
+namespace locator {
+
+class ShardRouter {
+ public:
+  // One call, as its transport hands it over.
+  struct Call {
+    // The caller's authorization header, sent on to the shards.
+    std::optional<std::string> authorization;
+    // Makes the context of a call to a shard (deadline, metadata).
+    std::function<std::shared_ptr<grpc::ClientContext>()> new_context;
+    // Ends the call with its outcome; the response is complete when OK.
+    std::function<void(grpc::Status)> finish;
+  };
+
+  // Routes to the shards of `topology` (which must outlive it) with
+  // `threads` workers, refusing batches of more than `max_batch_points`.
+  ShardRouter(ShardTopology* topology, size_t threads, size_t max_batch_points);
+
+  // The calls; `request` and `response` must live until call.finish ran.
+  void Locate(const v1::LocateRequest* request, v1::LocateResponse* response,
+              Call call);
+  void LocateBatch(const v1::LocateBatchRequest* request,
+                   v1::LocateBatchResponse* response, Call call);
+  void GetTopology(const v1::GetTopologyRequest* request,
+                   v1::GetTopologyResponse* response, Call call);
+
+  ShardTopology& topology() const { return *topology_; }
+
+ private:
+  // Runs `route` with `dataset`'s topology: at once on this thread when it
+  // is known and `here`, else on the pool once known (a failed fetch ends
+  // the call with the shards' error).
+  void WithTopology(
+      const std::string& dataset, bool here, const Call& call,
+      std::function<void(const ShardTopology::Routed& routed)> route);
+  void ForwardLocate(const v1::LocateRequest* request,
+                     v1::LocateResponse* response, const Call& call,
+                     const ShardTopology::Routed& routed);
+  void RouteBatch(const v1::LocateBatchRequest* request,
+                  v1::LocateBatchResponse* response, const Call& call,
+                  const ShardTopology::Routed& routed);
+
+  ShardTopology* const topology_;
+  const size_t max_batch_points_;
+  WorkerPool pool_;
+};
+
+// `status` from shard `shard` of `topology`, its message naming the shard.
+grpc::Status FromShard(const ShardTopology& topology, size_t shard,
+                       const grpc::Status& status);
+
+}  // namespace locator
+
+#endif  // LOCATOR_SERVER_ROUTE_SHARD_ROUTER_H_
