@@ -1,8 +1,8 @@
 #include "client/shard_routes.h"
 
-#include <mutex>
 #include <utility>
 
+#include "common/mutex.h"
 #include "common/routing/batch_split.h"
 
 namespace locator {
@@ -14,9 +14,9 @@ struct BatchParts {
   BatchSplit split;
   std::vector<v1::LocateBatchResponse> answers;
   std::vector<std::unique_ptr<grpc::ClientContext>> contexts;
-  std::mutex mu;
-  size_t pending = 0;    // guarded by mu
-  grpc::Status failure;  // guarded by mu
+  Mutex mu;
+  size_t pending GUARDED_BY(mu) = 0;
+  grpc::Status failure GUARDED_BY(mu);
 };
 
 }  // namespace
@@ -76,7 +76,12 @@ void ShardRoutes::StartLocateBatch(const v1::LocateBatchRequest* request,
     if (!parts->split.positions[s].empty()) called.push_back(s);
   }
   const auto finish = [parts, request, response, done] {
-    if (!parts->failure.ok()) return done(parts->failure);
+    grpc::Status failure;
+    {
+      MutexLock lock(&parts->mu);
+      failure = parts->failure;
+    }
+    if (!failure.ok()) return done(failure);
     const Status merged =
         MergeBatch(*request, parts->split, parts->answers, response);
     done(merged.ok()
@@ -84,14 +89,17 @@ void ShardRoutes::StartLocateBatch(const v1::LocateBatchRequest* request,
              : grpc::Status(grpc::StatusCode::UNAVAILABLE, merged.message()));
   };
   if (called.empty()) return finish();  // an empty batch
-  parts->pending = called.size();
+  {
+    MutexLock lock(&parts->mu);
+    parts->pending = called.size();
+  }
   for (const size_t s : called) {
     shards_[s]->StartLocateBatch(
         parts->contexts[s].get(), &parts->split.parts[s], &parts->answers[s],
         [this, parts, s, finish](grpc::Status status) {
           bool first_failure = false, last = false;
           {
-            std::lock_guard<std::mutex> lock(parts->mu);
+            MutexLock lock(&parts->mu);
             first_failure = !status.ok() && parts->failure.ok();
             if (first_failure) {
               parts->failure = grpc::Status(

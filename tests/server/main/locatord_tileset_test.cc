@@ -107,9 +107,22 @@ class LocatordTileSetTest : public ::testing::Test {
     EXPECT_THAT(built.out, HasSubstr("20000 points"));
   }
 
+  // Two shards (--tiles 0/2 and 1/2) of the tile set and a router over
+  // them with `router_flags` added.
+  void StartShardsAndRouter(const std::vector<std::string>& router_flags) {
+    const std::string spec = "tiles=" + tiles_ + "/manifest.json";
+    ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0/2"}, &shard0_).ok());
+    ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1_).ok());
+    std::vector<std::string> flags = {
+        "--route", "--shards", shard0_->target() + "," + shard1_->target()};
+    flags.insert(flags.end(), router_flags.begin(), router_flags.end());
+    ASSERT_TRUE(StartLocatord(spec, flags, &router_).ok());
+  }
+
   ScratchDir dir_;
   std::string csv_;
   std::string tiles_;
+  std::unique_ptr<ServerProcess> shard0_, shard1_, router_;
 };
 
 TEST_F(LocatordTileSetTest, AnswersAsCgalOnTheWholeDatasetAcrossTiles) {
@@ -136,17 +149,10 @@ TEST_F(LocatordTileSetTest, AnswersAsCgalOnTheWholeDatasetAcrossTiles) {
 }
 
 TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
-  const std::string spec = "tiles=" + tiles_ + "/manifest.json";
-  std::unique_ptr<ServerProcess> shard0, shard1, router;
-  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0/2"}, &shard0).ok());
-  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1).ok());
-  ASSERT_TRUE(StartLocatord(spec,
-                            {"--route", "--shards",
-                             shard0->target() + "," + shard1->target(),
-                             "--max-batch-points", "5000"},
-                            &router)
-                  .ok());
-  auto stub = NewStub(*router);
+  ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter({"--max-batch-points", "5000"}));
+  ServerProcess& shard0 = *shard0_;
+  ServerProcess& shard1 = *shard1_;
+  auto stub = NewStub(*router_);
 
   // The router lists both shards, each with its half of the tiles.
   v1::GetTopologyRequest topology_request;
@@ -159,7 +165,7 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   EXPECT_TRUE(topology.tiled());
   EXPECT_TRUE(topology.complete());
   ASSERT_EQ(topology.shards_size(), 2);
-  EXPECT_EQ(topology.shards(0).target(), shard0->target());
+  EXPECT_EQ(topology.shards(0).target(), shard0.target());
   const int tiles = topology.tiles_size();
   EXPECT_GT(tiles, 8);
   EXPECT_EQ(topology.shards(0).tiles_size() + topology.shards(1).tiles_size(),
@@ -169,7 +175,7 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   {
     grpc::ClientContext context;
     ASSERT_TRUE(
-        NewStub(*shard1)->GetTopology(&context, topology_request, &own).ok());
+        NewStub(shard1)->GetTopology(&context, topology_request, &own).ok());
   }
   EXPECT_FALSE(own.complete());
   ASSERT_EQ(own.shards_size(), 1);
@@ -195,7 +201,7 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   v1::LocateBatchResponse refused;
   grpc::ClientContext context;
   const grpc::Status status =
-      NewStub(*shard0)->LocateBatch(&context, all, &refused);
+      NewStub(shard0)->LocateBatch(&context, all, &refused);
   EXPECT_EQ(status.error_code(), grpc::StatusCode::FAILED_PRECONDITION);
   EXPECT_THAT(status.error_message(),
               HasSubstr("which this server does not serve (--tiles '0/2')"));
@@ -244,19 +250,11 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
 
 // The router's HTTP/JSON API answers browsers as the gRPC router does.
 TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
-  const std::string spec = "tiles=" + tiles_ + "/manifest.json";
-  std::unique_ptr<ServerProcess> shard0, shard1, router;
-  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0/2"}, &shard0).ok());
-  ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1).ok());
-  ASSERT_TRUE(StartLocatord(spec,
-                            {"--route", "--shards",
-                             shard0->target() + "," + shard1->target(),
-                             "--http-listen", "127.0.0.1:0"},
-                            &router)
-                  .ok());
-  auto stub = NewStub(*router);
-  ASSERT_TRUE(router->WaitForListening().ok());  // its HTTP line
-  const int http_port = router->port();
+  ASSERT_NO_FATAL_FAILURE(
+      StartShardsAndRouter({"--http-listen", "127.0.0.1:0"}));
+  auto stub = NewStub(*router_);
+  ASSERT_TRUE(router_->WaitForListening().ok());  // its HTTP line
+  const int http_port = router_->port();
 
   const std::vector<Point2> points = {
       {0.1, 0.1}, {0.9, 0.1}, {0.5, 0.5}, {0.9, 0.9}, {3, -2}};
