@@ -181,9 +181,9 @@ Fixture* MakeFixture() {
   if (!utm.ok()) Fail("cannot build the utm engine", "");
   f->engine = *std::move(engine);
   const auto& slots = f->app->datasets().slots();
-  slots[0]->Publish(f->engine);
-  slots[1]->Publish(f->engine);
-  slots[2]->Publish(std::shared_ptr<Engine>(*std::move(utm)));
+  slots[0]->Publish({.engine = f->engine});
+  slots[1]->Publish({.engine = f->engine});
+  slots[2]->Publish({.engine = std::shared_ptr<Engine>(*std::move(utm))});
   f->api = std::make_unique<JsonApi>(f->app.get());
   f->open_topo_data =
       std::make_unique<OpenTopoDataApi>(f->app.get(), f->api.get());
