@@ -177,7 +177,7 @@ int Main(int argc, char** argv) {
     return *exit_code;
   }
   SetLogLevel(config.log_level);
-  if (config.route) ExitWithoutTeardown(RunRouter(kProgram, config));
+  if (config.route) RunRouter(kProgram, config);
 
   DatasetBuilder builder(config);
   LocatorApp app(LocatorAppOptions{

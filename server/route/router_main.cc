@@ -23,7 +23,7 @@ constexpr std::chrono::seconds kTopologyDeadline{10};
 
 }  // namespace
 
-int RunRouter(std::string_view program, const ServerConfig& config) {
+void RunRouter(std::string_view program, const ServerConfig& config) {
   // Replicas behind one target share its calls; a call that never reached
   // a live one is retried (UNAVAILABLE only: it did not run).
   ChannelOptions channel;
@@ -40,7 +40,7 @@ int RunRouter(std::string_view program, const ServerConfig& config) {
           ServerRunner::Start(program, config.serving, {&service}, {}, &runner);
       !started.ok()) {
     std::cerr << program << ": " << started.message() << std::endl;
-    return 1;
+    ExitWithoutTeardown(1);
   }
   // For browsers and curl: the routed calls over HTTP/JSON.
   const CorsPolicy cors(config.http_cors_origins);
@@ -61,7 +61,7 @@ int RunRouter(std::string_view program, const ServerConfig& config) {
         !listening.ok()) {
       std::cerr << program << ": " << listening.message() << std::endl;
       runner->Stop(1);
-      return runner->Run();
+      ExitWithoutTeardown(runner->Run());
     }
     std::cout << program << " http listening on " << config.http_host << ":"
               << http->port() << std::endl;
@@ -69,7 +69,9 @@ int RunRouter(std::string_view program, const ServerConfig& config) {
   LogLine(LogLevel::kInfo) << "routing to " << config.shards.size()
                            << " shards";
   runner->SetServing(true);
-  return runner->Run();
+  // What the callbacks refer to here (the shards' channels, the router, its
+  // pool) outlives them: the process ends without unwinding this frame.
+  ExitWithoutTeardown(runner->Run());
 }
 
 }  // namespace locator

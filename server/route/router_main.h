@@ -13,8 +13,11 @@
 
 namespace locator {
 
-// Runs the router `config` describes; returns the process's exit code.
-int RunRouter(std::string_view program, const ServerConfig& config);
+// Runs the router `config` describes and ends the process with its exit
+// code (ExitWithoutTeardown: gRPC threads may still be finishing calls to
+// the shards that refer to the router).
+[[noreturn]] void RunRouter(std::string_view program,
+                            const ServerConfig& config);
 
 }  // namespace locator
 
