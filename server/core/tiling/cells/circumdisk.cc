@@ -75,8 +75,9 @@ bool CircumdiskBound(const Point2& a, const Point2& b, const Point2& c,
   const double offset = std::sqrt(ux * ux + uy * uy);
 
   // Back to the input's scale: exact but for overflow (caught below) and
-  // subnormals (a few 2^-1074, added).
-  const double tiny = 4 * std::numeric_limits<double>::denorm_min();
+  // subnormals (a few 2^-1074, covered by the smallest normal double: a
+  // subnormal operand would cost a microcode assist on every call).
+  const double tiny = std::numeric_limits<double>::min();
   const double up = PowerOfTwo(exponent);
   const Point2 center{a.x + Scale(ux, up, exponent),
                       a.y + Scale(uy, up, exponent)};
