@@ -87,7 +87,7 @@ class SelfTuningLocator : public PointLocator {
   static constexpr std::chrono::seconds kMinSaveInterval{1};
   // Inline mode: the most table-building units (StartTable::Builder) a
   // located query does.
-  static constexpr size_t kTuneUnitsPerQuery = 32;
+  static constexpr size_t kTuneUnitsPerQuery = 8;
   // Queries per sweep judgement.
   static constexpr uint64_t kSweepWindow = 1024;
   // Single locates reach the shared counters in batches of up to this many

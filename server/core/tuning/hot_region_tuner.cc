@@ -39,7 +39,8 @@ HotRegionTuner::HotRegionTuner(const ServingMesh& mesh,
       counts_(grid.cells(), 0.0),
       points_(grid.cells(), 0.0),
       crossing_ratio_(grid.cells(), 1.0),
-      planned_share_(grid.cells(), 1.0 / grid.cells()) {
+      planned_share_(grid.cells(), 1.0 / grid.cells()),
+      considered_share_(planned_share_) {
   budget_ = Budget(mesh, options);
   // The owner's histogram, our per-cell arrays, the snapshot's histogram
   // copy and hot flags, and the coarse table are paid first; what is left
@@ -163,9 +164,12 @@ int HotRegionTuner::CoarseGridSize(size_t budget, int max_grid) {
 
 void HotRegionTuner::AddCounts(const std::vector<double>& fresh) {
   const double keep = seen_traffic_ ? options_.decay : 0.0;
+  double queries = 0;
   for (size_t c = 0; c < counts_.size(); ++c) {
     counts_[c] = counts_[c] * keep + fresh[c];
+    queries += fresh[c];
   }
+  work_credit_ = std::min(work_credit_ + kWorkPerQuery * queries, kWorkBurst);
   seen_traffic_ = seen_traffic_ || std::any_of(fresh.begin(), fresh.end(),
                                                [](double x) { return x > 0; });
 }
@@ -216,11 +220,12 @@ std::vector<uint32_t> HotRegionTuner::PlanLevels(
   return levels;
 }
 
-std::vector<char> HotRegionTuner::SignificantChanges(double total) const {
+std::vector<char> HotRegionTuner::SignificantChanges(
+    const std::vector<double>& reference, double total) const {
   std::vector<char> significant(counts_.size(), 1);
   if (!table_) return significant;
   for (size_t c = 0; c < counts_.size(); ++c) {
-    const double expected = planned_share_[c] * total;
+    const double expected = reference[c] * total;
     // |count - expected| > kSignificance * sqrt(expected + 1), squared.
     const double departure = counts_[c] - expected;
     significant[c] =
@@ -280,6 +285,69 @@ std::vector<uint32_t> HotRegionTuner::KeepStableCells(
     if (Leaves(mixed) <= static_cast<double>(leaf_budget_)) return mixed;
   }
   return fresh;
+}
+
+double HotRegionTuner::Walks(const std::vector<uint32_t>& levels) const {
+  double walks = 0;
+  for (size_t c = 0; c < levels.size(); ++c) {
+    if (levels[c] != levels_[c]) {
+      walks += static_cast<double>(ShapeOf(c, levels[c]).cells());
+    }
+  }
+  return walks;
+}
+
+std::vector<uint32_t> HotRegionTuner::FitWork(
+    const std::vector<double>& weight, const std::vector<uint32_t>& fresh) {
+  if (Walks(fresh) <= work_credit_) return fresh;
+  // From the current levels, grow the cells that save the most walk per
+  // start walked while the credit lasts. A cell the plan shrinks keeps its
+  // starts (paid for already) until a growth needs its memory: then the
+  // coldest such cells shrink first.
+  struct Change {
+    size_t cell;
+    double walks;
+    double order;  // growths: walk saved per start walked; shrinks: weight
+  };
+  std::vector<Change> growths, shrinks;
+  for (size_t c = 0; c < fresh.size(); ++c) {
+    if (fresh[c] == levels_[c]) continue;
+    const auto walks = static_cast<double>(ShapeOf(c, fresh[c]).cells());
+    if (fresh[c] < levels_[c]) {
+      shrinks.push_back({c, walks, weight[c]});
+    } else {
+      const double gain = weight[c] * (walk_terms_[c] - WalkTerm(c, fresh[c]));
+      growths.push_back({c, walks, gain / walks});
+    }
+  }
+  std::sort(growths.begin(), growths.end(),
+            [](const Change& a, const Change& b) { return a.order > b.order; });
+  std::sort(shrinks.begin(), shrinks.end(),
+            [](const Change& a, const Change& b) { return a.order < b.order; });
+  std::vector<uint32_t> plan = levels_;
+  double leaves = Leaves(levels_);
+  const auto budget = static_cast<double>(leaf_budget_);
+  double credit = work_credit_;
+  size_t next_shrink = 0;
+  for (const Change& g : growths) {
+    const double more =
+        CellLeaves(g.cell, fresh[g.cell]) - CellLeaves(g.cell, levels_[g.cell]);
+    while (leaves + more > budget && next_shrink < shrinks.size()) {
+      const Change& s = shrinks[next_shrink++];
+      plan[s.cell] = fresh[s.cell];
+      leaves -= CellLeaves(s.cell, levels_[s.cell]) -
+                CellLeaves(s.cell, fresh[s.cell]);
+      credit -= s.walks;
+    }
+    if (g.walks > credit || leaves + more > budget) {
+      deferred_walks_ = std::min(deferred_walks_, g.walks);
+      continue;
+    }
+    plan[g.cell] = fresh[g.cell];
+    leaves += more;
+    credit -= g.walks;
+  }
+  return plan;
 }
 
 double HotRegionTuner::ExpectedWalk(const std::vector<double>& weight,
@@ -376,22 +444,44 @@ bool HotRegionTuner::Plan() {
   }
   // Traffic that moved within noise keeps the table without planning, and
   // so does a change confined to cells that carry less than kMinGain of
-  // the expected walk: no new plan for them could gain that much.
-  const std::vector<char> significant = SignificantChanges(total);
-  bool keep = table_ != nullptr && SignificantWalk(weight, significant) <=
-                                       kMinGain * ExpectedWalk(weight, levels_);
-  const std::vector<uint32_t> plan =
-      keep ? std::vector<uint32_t>()
-           : KeepStableCells(PlanLevels(weight), significant);
-  if (!keep && table_) {
-    keep = ExpectedWalk(weight, plan) >
-           (1 - kMinGain) * ExpectedWalk(weight, levels_);
+  // the expected walk: no new plan for them could gain that much. Both
+  // against the table's plan and against the last planning that kept it,
+  // unless the credit now pays for a growth that planning deferred.
+  const std::vector<char> significant =
+      SignificantChanges(planned_share_, total);
+  if (table_) {
+    const double walk = ExpectedWalk(weight, levels_);
+    if (SignificantWalk(weight, significant) <= kMinGain * walk) return false;
+    if (work_credit_ < deferred_walks_ &&
+        SignificantWalk(weight, SignificantChanges(considered_share_, total)) <=
+            kMinGain * walk) {
+      return false;
+    }
   }
-  if (keep) return false;
+  considered_share_ = share;
+  deferred_walks_ = HUGE_VAL;
+  const std::vector<uint32_t> fresh =
+      KeepStableCells(PlanLevels(weight), significant);
+  std::vector<uint32_t> plan = fresh;
+  std::vector<double> planned_share = share;
+  if (table_) {
+    if (ExpectedWalk(weight, fresh) >
+        (1 - kMinGain) * ExpectedWalk(weight, levels_)) {
+      return false;
+    }
+    plan = FitWork(weight, fresh);
+    if (plan == levels_) return false;
+    work_credit_ -= Walks(plan);
+    // A cell left below its plan keeps the share it was planned for, so
+    // that it stays a significant change until a re-tune grows it.
+    for (size_t c = 0; c < cells; ++c) {
+      if (plan[c] != fresh[c]) planned_share[c] = planned_share_[c];
+    }
+  }
   builder_ = std::make_unique<StartTable::Builder>(mesh_, grid_, Shapes(plan),
                                                    table_.get());
-  building_levels_ = plan;
-  building_share_ = share;
+  building_levels_ = std::move(plan);
+  building_share_ = std::move(planned_share);
   return true;
 }
 

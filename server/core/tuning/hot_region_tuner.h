@@ -37,11 +37,24 @@
 // hot spot moved), or a mix that still exceeds the budget, falls back to the
 // fresh plan.
 //
+// Re-tunes pay for themselves: building a start is a walk, about the cost
+// of a query, so the walks of all re-tunes are held to kWorkPerQuery per
+// query counted, from a credit that saves up to kWorkBurst of them. A plan
+// that would walk more than the credit grows only the cells that save the
+// most walk per start walked, as far as the credit goes, and shrinks cells
+// only for the memory those growths need; the next re-tunes grow the others
+// as the traffic stays. A stable hot spot is so learned
+// within a few re-tunes, one that moves every few thousand queries (drift)
+// is refined only as far as its queries pay for, and the tuner's share of
+// the CPU stays near kWorkPerQuery under any traffic. The first table is
+// not a re-tune and is built whole.
+//
 // Thread-safety: not thread-safe; the owner serialises calls.
 
 #ifndef LOCATOR_CORE_HOT_REGION_TUNER_H_
 #define LOCATOR_CORE_HOT_REGION_TUNER_H_
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -76,6 +89,10 @@ class HotRegionTuner {
   static constexpr double kPlanFill = 0.9;
   static constexpr double kMinGain = 0.05;
   static constexpr double kSignificance = 3.0;
+  // Start walks a re-tune may spend per query counted, and the most the
+  // credit saves up.
+  static constexpr double kWorkPerQuery = 0.25;
+  static constexpr double kWorkBurst = 65536;
   // Bookkeeping per coarse cell: histogram shards (counts and what was
   // drained), our counts, point counts and their cube roots, the current
   // table's walk terms, the snapshot's histogram copy and hot flag, the
@@ -135,9 +152,11 @@ class HotRegionTuner {
   // counts_ as shares of their total (uniform when there is no traffic).
   std::vector<double> Shares(double total) const;
   std::vector<uint32_t> PlanLevels(const std::vector<double>& weight) const;
-  // significant[c]: cell c's count departs from the share the current
-  // table was planned for by more than Poisson noise (all, without a table).
-  std::vector<char> SignificantChanges(double total) const;
+  // significant[c]: cell c's count departs from its share in `reference`
+  // (of the traffic the table was planned for, or last planned from) by
+  // more than Poisson noise (all, without a table).
+  std::vector<char> SignificantChanges(const std::vector<double>& reference,
+                                       double total) const;
   // Sub-grid starts (beyond the coarse cell's own) that level r places in
   // cell c, and that `levels` place in all cells.
   double CellLeaves(size_t c, uint32_t r) const;
@@ -149,6 +168,16 @@ class HotRegionTuner {
   // are scaled down to fit; otherwise the fresh plan is used whole.
   std::vector<uint32_t> KeepStableCells(
       std::vector<uint32_t> fresh, const std::vector<char>& significant) const;
+  // The starts that building `levels` walks for: those of every cell whose
+  // sub-grid changes (an unchanged cell is copied).
+  double Walks(const std::vector<uint32_t>& levels) const;
+  // `fresh` if its walks fit work_credit_. Else the current levels with,
+  // of fresh's growing cells, those that save the most walk under `weight`
+  // per start walked while the credit lasts, and of its shrinking cells the
+  // coldest, as far as those growths need their memory. The fewest walks a
+  // deferred growth needs is noted in deferred_walks_.
+  std::vector<uint32_t> FitWork(const std::vector<double>& weight,
+                                const std::vector<uint32_t>& fresh);
   // The model's expected walk length (up to a constant) under `weight` for
   // per-cell levels `levels`: the sum of weight[c] * WalkTerm(c, levels[c]),
   // with the current table's terms from walk_terms_.
@@ -184,6 +213,9 @@ class HotRegionTuner {
   size_t budget_;
   size_t leaf_budget_;  // starts the plan may place beyond the coarse cells
   bool seen_traffic_ = false;
+  // Walks re-tunes may still spend (kWorkPerQuery per query counted, at
+  // most kWorkBurst).
+  double work_credit_ = kWorkBurst;
   std::vector<double> counts_;
   std::vector<double> points_;       // vertices per coarse cell
   std::vector<double> cbrt_points_;  // their cube roots (for PlanLevels)
@@ -196,6 +228,12 @@ class HotRegionTuner {
   std::vector<uint32_t> levels_;             // the levels table_ was built at
   std::vector<double> walk_terms_;     // WalkTerm(c, levels_[c]) for every c
   std::vector<double> planned_share_;  // traffic shares table_ was planned for
+  // The shares the last planning saw (it may have kept the table), and the
+  // fewest walks a growth it deferred for want of credit needs (HUGE_VAL:
+  // none): until the traffic departs from those shares or the credit
+  // reaches that, planning again would decide the same.
+  std::vector<double> considered_share_;
+  double deferred_walks_ = HUGE_VAL;
   // The build in progress (null when none), and what it was planned at.
   std::unique_ptr<StartTable::Builder> builder_;
   std::vector<uint32_t> building_levels_;

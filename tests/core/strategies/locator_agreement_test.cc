@@ -153,7 +153,9 @@ TEST_P(AgreementTest, EveryWorkload) {
         test::AllAgree(*locator, t(), *fixture_->index, set.queries, set.refs));
     const TuningSummary s = locator->Summary();
     if (strategy() == "self-tuning") {
-      EXPECT_GE(s.retune_count, kQueriesPerWorkload / options.retune_every);
+      // A re-tune that comes due while a table is still being built waits
+      // for it (at most one block of kColdCheckEvery queries per build).
+      EXPECT_GE(s.retune_count, kQueriesPerWorkload / options.retune_every - 1);
     } else if (strategy() == "adaptive-paper") {
       EXPECT_EQ(s.snapshot_version, 1u) << "warm-up did not complete";
     }

@@ -1,7 +1,8 @@
 // HotRegionTuner's re-tunes: a hot spot appearing on a table planned for
 // uniform traffic rebuilds the hot spot's cells and keeps every other one,
 // within the memory budget, even when keeping them leaves the hot cells less
-// than the fresh plan would give them.
+// than the fresh plan would give them; re-tunes walk no more than their
+// queries pay for.
 
 #include "server/core/tuning/hot_region_tuner.h"
 
@@ -45,11 +46,13 @@ class HotRegionTunerTest : public ::testing::Test {
   GridGeometry grid() const {
     return GridGeometry(triangulation_->bounding_box(), kTunerGrid);
   }
-  // The traffic of the hot spot: 1000 queries in each hot cell.
-  std::vector<double> HotCounts() const {
+  // The traffic of the hot spot: `queries` in each hot cell, the block
+  // shifted right by `shift` columns.
+  std::vector<double> HotCounts(double queries = 1000, size_t shift = 0) const {
     std::vector<double> counts(grid().cells(), 0.0);
     for (size_t c = 0; c < counts.size(); ++c) {
-      counts[c] = IsHotCell(c) ? 1000 : 0;
+      const size_t column = c % kTunerGrid;
+      counts[c] = column >= shift && IsHotCell(c - shift) ? queries : 0;
     }
     return counts;
   }
@@ -115,6 +118,62 @@ TEST_F(HotRegionTunerTest, AMeshLargerThanMemoryIsTunedOnlyWhereTrafficIs) {
       EXPECT_EQ(hot->table->sub_grid(c).cells(), 1u) << "cold cell " << c;
     }
   }
+}
+
+// Re-tunes pay for themselves: a hot spot that keeps moving is refined only
+// as far as kWorkPerQuery walks per query (after the burst) pay for, and a
+// hot spot that then stays is learned whole over the re-tunes that follow.
+TEST_F(HotRegionTunerTest, ReTunesWalkNoMoreThanTheirQueriesPayFor) {
+  const GridGeometry grid = this->grid();
+  TuningOptions options;
+  options.budget_bytes = kTunerBudgetBytes;
+  HotRegionTuner tuner(mesh(), grid, options, 0);
+  const std::shared_ptr<const TuningSnapshot> uniform = tuner.Build(1);
+  std::shared_ptr<const TuningSnapshot> last = uniform;
+  double queries = 0, grown = 0;
+  // Walks for the cells whose sub-grid grew since the last snapshot.
+  const auto grew = [&](const TuningSnapshot& next) {
+    double walks = 0;
+    for (size_t c = 0; c < grid.cells(); ++c) {
+      const size_t before = last->table->sub_grid(c).cells();
+      const size_t after = next.table->sub_grid(c).cells();
+      if (after > before) walks += static_cast<double>(after);
+    }
+    return walks;
+  };
+  // 10 queries per hot cell per re-tune, 480 in all: 120 walks of credit.
+  constexpr double kPerCell = 10;
+  const double per_retune = kPerCell * kTunerHotColumns * kTunerHotRows;
+  for (int retune = 0; retune < 40; ++retune) {
+    tuner.AddCounts(HotCounts(kPerCell, retune % 2 == 0 ? 0 : 8));
+    queries += per_retune;
+    const std::shared_ptr<const TuningSnapshot> next = tuner.Build(2 + retune);
+    grown += grew(*next);
+    ASSERT_LE(grown, HotRegionTuner::kWorkBurst +
+                         HotRegionTuner::kWorkPerQuery * queries)
+        << "re-tune " << retune;
+    EXPECT_LE(next->table->MemoryBytes(), tuner.budget_bytes());
+    last = next;
+  }
+  // The spot stays on the left: re-tunes enough to pay for the cap (4
+  // starts per point) in every hot cell refine all of them, to within the
+  // hysteresis of their plans.
+  const double cap = 48 * 4 * 20'000.0 / (kTunerGrid * kTunerGrid);
+  const int stay =
+      static_cast<int>(cap / (HotRegionTuner::kWorkPerQuery * per_retune) + 20);
+  double hot = 0, before = 0;
+  for (int retune = 0; retune < stay; ++retune) {
+    tuner.AddCounts(HotCounts(kPerCell, 0));
+    last = tuner.Build(100 + retune);
+  }
+  for (size_t c = 0; c < grid.cells(); ++c) {
+    if (!IsHotCell(c)) continue;
+    const size_t cells = last->table->sub_grid(c).cells();
+    EXPECT_GT(cells, uniform->table->sub_grid(c).cells()) << "hot cell " << c;
+    hot += static_cast<double>(cells);
+    before += static_cast<double>(uniform->table->sub_grid(c).cells());
+  }
+  EXPECT_GT(hot, 1.5 * before);
 }
 
 }  // namespace
