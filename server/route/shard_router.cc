@@ -3,7 +3,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/mutex.h"
+#include "common/routing/batch_fan_out.h"
 #include "common/routing/batch_split.h"
 #include "server/app/batch_locator.h"
 #include "server/grpc/status_mapping.h"
@@ -22,25 +22,11 @@ grpc::Status CannotRouteCrs() {
       "with a crs must go to a shard or an unsharded server");
 }
 
-// The state of one routed LocateBatch: the parts, the shards' answers, and
-// what is left to wait for. Lives until the last answer has been merged.
-struct BatchFanOut {
-  BatchSplit split;
-  std::vector<v1::LocateBatchResponse> answers;
-  std::vector<std::shared_ptr<grpc::ClientContext>> contexts;
-  Mutex mu;
-  size_t pending GUARDED_BY(mu) = 0;
-  grpc::Status failure GUARDED_BY(mu);
-};
-
 }  // namespace
 
 grpc::Status FromShard(const ShardTopology& topology, size_t shard,
                        const grpc::Status& status) {
-  if (status.ok()) return status;
-  return grpc::Status(status.error_code(), "shard " + std::to_string(shard) +
-                                               " (" + topology.target(shard) +
-                                               "): " + status.error_message());
+  return FromShard(shard, topology.target(shard), status);
 }
 
 ShardRouter::ShardRouter(ShardTopology* topology, size_t threads,
@@ -136,75 +122,38 @@ void ShardRouter::RouteBatch(const v1::LocateBatchRequest* request,
     call.finish(CannotRouteCrs());
     return;
   }
-  auto fan = std::make_shared<BatchFanOut>();
-  if (Status split = SplitBatch(*request, routed.map, &fan->split);
-      !split.ok()) {
-    call.finish(ToGrpcStatus(split));
+  BatchSplit split;
+  if (Status status = SplitBatch(*request, routed.map, &split); !status.ok()) {
+    call.finish(ToGrpcStatus(status));
     return;
   }
-  const size_t shards = fan->split.parts.size();
-  fan->answers.resize(shards);
-  fan->contexts.resize(shards);
-  std::vector<size_t> called;
-  for (size_t s = 0; s < shards; ++s) {
-    if (!fan->split.positions[s].empty()) called.push_back(s);
-  }
-  const auto merge = [fan, request, response, finish = call.finish] {
-    grpc::Status failure;
-    {
-      MutexLock lock(&fan->mu);
-      failure = fan->failure;
-    }
-    if (!failure.ok()) {
-      finish(failure);
-      return;
-    }
-    finish(
-        ToGrpcStatus(MergeBatch(*request, fan->split, fan->answers, response)));
-  };
-  if (called.empty()) {  // an empty batch
-    merge();
-    return;
-  }
-  {
-    MutexLock lock(&fan->mu);
-    fan->pending = called.size();
-  }
-  // Every context exists before the first call starts: a failing part
-  // cancels the others'.
-  for (const size_t s : called) fan->contexts[s] = call.new_context();
-  for (const size_t s : called) {
-    topology_->async(s)->LocateBatch(
-        fan->contexts[s].get(), &fan->split.parts[s], &fan->answers[s],
-        [this, fan, s, merge, request,
-         dataset = request->dataset()](grpc::Status status) {
+  ShardCalls calls;
+  calls.new_context = call.new_context;
+  calls.start = [this, dataset = request->dataset()](
+                    size_t shard, grpc::ClientContext* context,
+                    v1::LocateBatchRequest* part,
+                    v1::LocateBatchResponse* answer, ShardCalls::Done done) {
+    topology_->async(shard)->LocateBatch(
+        context, part, answer,
+        [this, dataset, done = std::move(done)](grpc::Status status) {
+          // The shard no longer serves those tiles: learn the topology anew.
           if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
             topology_->Forget(dataset);
           }
-          bool first_failure = false, last = false;
-          {
-            MutexLock lock(&fan->mu);
-            first_failure = !status.ok() && fan->failure.ok();
-            if (first_failure) fan->failure = FromShard(*topology_, s, status);
-            last = --fan->pending == 0;
-          }
-          if (first_failure && !last) {
-            // The other parts are of no use any more (cancelled unlocked: a
-            // cancellation may run their callbacks at once).
-            for (const auto& other : fan->contexts) {
-              if (other != nullptr && other != fan->contexts[s]) {
-                other->TryCancel();
-              }
-            }
-          }
-          if (!last) return;
-          if (request->xs_size() <= kInlineBatchPoints) {
-            merge();
-          } else {
-            pool_.Submit(merge);
-          }
+          done(std::move(status));
         });
-  }
+  };
+  calls.target = [this](size_t shard) { return topology_->target(shard); };
+  calls.run_merge = [this, large = request->xs_size() > kInlineBatchPoints](
+                        std::function<void()> merge) {
+    if (large) {
+      pool_.Submit(std::move(merge));
+    } else {
+      merge();
+    }
+  };
+  FanOutBatch(request, std::move(split), response, std::move(calls),
+              call.finish);
 }
 
 void ShardRouter::GetTopology(const v1::GetTopologyRequest* request,
