@@ -111,6 +111,10 @@ void JsonApi::Handle(HttpRequest request, HttpReply reply) {
   }
   std::string name(path.substr(prefix.size(), colon - prefix.size()));
   std::string method(path.substr(colon + 1));
+  if (method == "topology") {
+    ServeTopology(request, name, std::move(reply));
+    return;
+  }
   ServeDatasetMethod(std::move(request), std::move(name), std::move(method),
                      std::move(reply));
 }
@@ -130,6 +134,23 @@ void JsonApi::ServeListDatasets(const HttpRequest& request, HttpReply reply) {
   }
   v1::ListDatasetsResponse response;
   app_->ListDatasets(&response);
+  reply(JsonAnswer(response));
+}
+
+void JsonApi::ServeTopology(const HttpRequest& request, const std::string& name,
+                            HttpReply reply) {
+  if (request.method != "GET") {
+    reply(MethodNotAllowed(request, "GET"));
+    return;
+  }
+  const StatusOr<LocatorApp::Admission> call = app_->Admit(
+      request.Header("authorization"), AccessPolicy::Scope::kData, name);
+  if (!call.ok()) {
+    reply(ApiError(call.status()));
+    return;
+  }
+  v1::GetTopologyResponse response;
+  app_->GetTopology(*call, &response);
   reply(JsonAnswer(response));
 }
 

@@ -10,6 +10,8 @@
 //   POST /v1/datasets/{name}:grid          GridRequest -> one GridResponse
 //                                          holding the header and every row
 //                                          (the gRPC call streams them)
+//   GET  /v1/datasets/{name}:topology      GetTopologyRequest (no body)
+//                                          -> GetTopologyResponse
 //
 //   GET  /v1/datasets/{name}/tiles/{z}/{x}/{y}.png?encoding=terrarium|mapbox
 //                                          a terrain tile (see tile_api.cc)
@@ -156,6 +158,9 @@ class JsonApi {
                           std::string method, HttpReply reply);
   // GET /v1/datasets.
   void ServeListDatasets(const HttpRequest& request, HttpReply reply);
+  // GET /v1/datasets/{name}:topology (GetTopology).
+  void ServeTopology(const HttpRequest& request, const std::string& name,
+                     HttpReply reply);
   // GET /v1/datasets/{name}/{rest}: the terrain tiles and their TileJSON,
   // and the hillshade tiles (tile_api.cc).
   void ServeTiles(HttpRequest request, std::string name, std::string rest,

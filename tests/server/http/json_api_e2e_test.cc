@@ -127,6 +127,23 @@ TEST_F(JsonApiTest, ListDatasetsAnswersWhatGrpcAnswers) {
   EXPECT_EQ(answer.datasets(1).name(), "bedrock");
 }
 
+TEST_F(JsonApiTest, TopologyAnswersWhatGrpcAnswers) {
+  HttpReply reply;
+  ASSERT_TRUE(HttpGet(port(), "/v1/datasets/bedrock:topology", &reply).ok());
+  ASSERT_EQ(reply.status, 200u) << reply.body;
+  grpc::ClientContext context;
+  v1::GetTopologyRequest request;
+  request.set_dataset("bedrock");
+  v1::GetTopologyResponse expected;
+  ASSERT_TRUE(stub_->GetTopology(&context, request, &expected).ok());
+  const auto answer = FromJson<v1::GetTopologyResponse>(reply.body);
+  EXPECT_TRUE(SameProto(answer, expected));
+  // Not a tile set: one shard, this server, serving all of it.
+  EXPECT_FALSE(answer.tiled());
+  EXPECT_TRUE(answer.complete());
+  EXPECT_EQ(answer.shards_size(), 1);
+}
+
 TEST_F(JsonApiTest, TheBodyMayUseEitherFieldNameAndNameThePathsDataset) {
   const HttpReply camel = Post(port(), "/v1/datasets/bedrock:locateBatch",
                                R"({"xs": [0.5], "ys": [0.5],
@@ -211,6 +228,12 @@ std::vector<ErrorRow> ErrorRows() {
        "'GET' is not allowed on '/v1/datasets/terrain:locate'; use POST"},
       {"PostOfAGetMethod", "POST", "/v1/datasets", "{}", 405,
        Code::UNIMPLEMENTED, "'POST' is not allowed on '/v1/datasets'; use GET"},
+      {"PostOfTopology", "POST", "/v1/datasets/terrain:topology", "{}", 405,
+       Code::UNIMPLEMENTED,
+       "'POST' is not allowed on '/v1/datasets/terrain:topology'; use GET"},
+      {"TopologyOfAnUnknownDataset", "GET", "/v1/datasets/lava:topology", "",
+       404, Code::NOT_FOUND,
+       "unknown dataset 'lava'; this server has: terrain (default), bedrock"},
       // What the client sent is quoted short, however long (within the
       // 8 KiB header and the body limit).
       {"LongUnknownRoute", "GET", "/v1/" + long_name, "", 404, Code::NOT_FOUND,

@@ -250,8 +250,8 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
 
 // The router's HTTP/JSON API answers browsers as the gRPC router does.
 TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
-  ASSERT_NO_FATAL_FAILURE(
-      StartShardsAndRouter({"--http-listen", "127.0.0.1:0"}));
+  ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter(
+      {"--http-listen", "127.0.0.1:0", "--http-max-body-bytes", "4096"}));
   auto stub = NewStub(*router_);
   ASSERT_TRUE(router_->WaitForListening().ok());  // its HTTP line
   const int http_port = router_->port();
@@ -297,6 +297,17 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
                        "{\"pont\": 1}")
                   .ok());
   EXPECT_EQ(reply.status, 400u) << reply.body;
+  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
+                       "{\"point\": {\"x\": \"Infinity\", \"y\": 1}}")
+                  .ok());
+  EXPECT_EQ(reply.status, 400u) << reply.body;
+  // A body past --http-max-body-bytes is refused before it is read whole.
+  const std::string big = "{\"xs\": [" + std::string(5000, ' ') + "]}";
+  ASSERT_TRUE(
+      SendHttp(http_port, "POST", "/v1/datasets/tiles:locateBatch", &reply, big)
+          .ok());
+  EXPECT_EQ(reply.status, 413u) << reply.body;
+  EXPECT_THAT(reply.body, HasSubstr("--http-max-body-bytes"));
 }
 
 TEST_F(LocatordTileSetTest, AClientRoutesByTopologyAsTheRouterDoes) {
