@@ -117,13 +117,18 @@ StatusOr<std::string> GeoKeysCrs(LasInput& input, const LasHeader& header,
   ASSIGN_OR_RETURN(std::vector<unsigned char> bytes,
                    ReadPayload(input, key_vlr, "GeoTIFF key directory"));
   std::vector<uint16_t> keys(bytes.size() / 2);
-  std::memcpy(keys.data(), bytes.data(), keys.size() * 2);
+  // An empty record: no copy (memcpy from an empty vector's null data is
+  // undefined even for 0 bytes).
+  if (!keys.empty()) std::memcpy(keys.data(), bytes.data(), keys.size() * 2);
   std::vector<double> doubles;
   std::vector<char> ascii;
   if (const LasVlr* vlr = header.FindVlr(kProjectionUserId, kGeoDoubleRecord)) {
     ASSIGN_OR_RETURN(bytes, ReadPayload(input, *vlr, "GeoTIFF doubles"));
     doubles.resize(bytes.size() / sizeof(double));
-    std::memcpy(doubles.data(), bytes.data(), doubles.size() * sizeof(double));
+    if (!doubles.empty()) {
+      std::memcpy(doubles.data(), bytes.data(),
+                  doubles.size() * sizeof(double));
+    }
   }
   if (const LasVlr* vlr = header.FindVlr(kProjectionUserId, kGeoAsciiRecord)) {
     ASSIGN_OR_RETURN(bytes, ReadPayload(input, *vlr, "GeoTIFF ASCII"));
