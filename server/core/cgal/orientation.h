@@ -12,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <limits>
 
 #include "locator/geometry.h"
 
@@ -20,24 +21,45 @@ namespace locator {
 // Which side of the directed line a -> b the point c lies on.
 enum class Side : int8_t { kRight = -1, kOn = 0, kLeft = 1 };
 
-// First a filter in plain double (Shewchuk's orient2d fast path, with a
-// wider bound): it decides whenever the determinant is clear of its
-// rounding error, which it bounds relative to |left| + |right| as long as
-// no product under- or overflows (hence the range check). The rest goes to
-// CGAL's filtered exact predicate.
-inline Side Orientation(const Point2& a, const Point2& b, const Point2& c) {
-  constexpr double kErrorBound = 8 * 0x1p-53;
-  constexpr double kMinTerms = 0x1p-900;
-  constexpr double kMaxTerms = 0x1p1000;
-  const double left = (a.x - c.x) * (b.y - c.y);
-  const double right = (a.y - c.y) * (b.x - c.x);
-  const double determinant = left - right;
-  const double terms = std::abs(left) + std::abs(right);
-  if (terms >= kMinTerms && terms <= kMaxTerms) {
-    const double bound = kErrorBound * terms;
-    if (determinant > bound) return Side::kLeft;
-    if (determinant < -bound) return Side::kRight;
+// The filter in plain double (Shewchuk's orient2d fast path, with a wider
+// bound): it decides whenever the determinant is clear of its rounding
+// error, which it bounds relative to |left| + |right| as long as no product
+// under- or overflows (hence the range check).
+struct OrientationFilter {
+  static constexpr double kErrorBound = 8 * 0x1p-53;
+  static constexpr double kMinTerms = 0x1p-900;
+  static constexpr double kMaxTerms = 0x1p1000;
+
+  // The determinant of (a, b, c) and the bound on its rounding error; a
+  // bound of NaN when the terms are out of range (no sign is then decided).
+  OrientationFilter(const Point2& a, const Point2& b, const Point2& c) {
+    const double left = (a.x - c.x) * (b.y - c.y);
+    const double right = (a.y - c.y) * (b.x - c.x);
+    determinant = left - right;
+    const double terms = std::abs(left) + std::abs(right);
+    bound = terms >= kMinTerms && terms <= kMaxTerms
+                ? kErrorBound * terms
+                : std::numeric_limits<double>::quiet_NaN();
   }
+  bool ClearlyLeft() const { return determinant > bound; }
+  bool ClearlyRight() const { return determinant < -bound; }
+
+  double determinant;
+  double bound;
+};
+
+// True only when Orientation(a, b, c) is kLeft, decided by the filter
+// alone: a test that costs no branch into the exact predicate.
+inline bool ClearlyLeft(const Point2& a, const Point2& b, const Point2& c) {
+  return OrientationFilter(a, b, c).ClearlyLeft();
+}
+
+// The filter first; what it leaves undecided goes to CGAL's filtered exact
+// predicate.
+inline Side Orientation(const Point2& a, const Point2& b, const Point2& c) {
+  const OrientationFilter filter(a, b, c);
+  if (filter.ClearlyLeft()) return Side::kLeft;
+  if (filter.ClearlyRight()) return Side::kRight;
   using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_2;
   return static_cast<Side>(static_cast<int>(
       CGAL::orientation(P(a.x, a.y), P(b.x, b.y), P(c.x, c.y))));

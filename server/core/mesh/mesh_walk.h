@@ -21,6 +21,18 @@ using MeshWalkOutcome = BasicWalkOutcome<uint32_t>;
 // Walks from face `start` to q. Precondition: IsFinite(q).
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
 
+// True only when q is strictly inside face f, decided by the orientation
+// filter alone: then Walk(mesh, f, q) ends at f with kFace at its first
+// face. A scan's next point is most often in its last point's face, and
+// this test draws no random order and branches into no exact predicate.
+inline bool ClearlyInside(const ServingMesh& mesh, uint32_t f,
+                          const Point2& q) {
+  const Point2& a = mesh.CornerPoint(f, 0);
+  const Point2& b = mesh.CornerPoint(f, 1);
+  const Point2& c = mesh.CornerPoint(f, 2);
+  return ClearlyLeft(b, c, q) & ClearlyLeft(c, a, q) & ClearlyLeft(a, b, q);
+}
+
 // Walks from `start` and fills the complete answer: for points outside the
 // hull it reports the nearest hull edge that sees q. Sets
 // result->cost.faces_visited; leaves the other cost fields untouched.

@@ -94,7 +94,12 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint,
       *out++ = none;
       continue;
     }
-    const MeshWalkOutcome w = Walk(mesh, face, q);
+    MeshWalkOutcome w;
+    if (row_started && ClearlyInside(mesh, face, q)) {
+      w.face = face;
+    } else {
+      w = Walk(mesh, face, q);
+    }
     face = w.face;
     if (!row_started) row_start = face;
     row_started = true;

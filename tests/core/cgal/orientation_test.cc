@@ -19,6 +19,14 @@ Side Exact(const Point2& a, const Point2& b, const Point2& c) {
       CGAL::orientation(P(a.x, a.y), P(b.x, b.y), P(c.x, c.y))));
 }
 
+// Orientation(a, b, c) equals CGAL's, and ClearlyLeft (the filter alone)
+// claims kLeft only where CGAL says so.
+void ExpectAgrees(const Point2& a, const Point2& b, const Point2& c) {
+  const Side exact = Exact(a, b, c);
+  EXPECT_EQ(Orientation(a, b, c), exact);
+  if (ClearlyLeft(a, b, c)) EXPECT_EQ(exact, Side::kLeft);
+}
+
 // Collinear triples by construction: small integer steps along a line,
 // times a power of two, so that every coordinate is exact.
 class OrientationTest : public ::testing::TestWithParam<int> {};
@@ -37,21 +45,22 @@ TEST_P(OrientationTest, AgreesWithCgalOnAndNextToLines) {
     const Point2 a{scale * x, scale * y};
     const Point2 b{scale * (x + dx), scale * (y + dy)};
     const Point2 c{scale * (x + m * dx), scale * (y + m * dy)};
-    ASSERT_EQ(Orientation(a, b, c), Exact(a, b, c)) << "triple " << i;
+    ASSERT_NO_FATAL_FAILURE(ExpectAgrees(a, b, c)) << "triple " << i;
     if (dx != 0 || dy != 0) {
       ASSERT_EQ(Orientation(a, b, c), Side::kOn) << "triple " << i;
     }
     // A few ulps off the line: a determinant far below the terms' rounding.
     Point2 off = c;
     for (int k = nudge(rng); k > 0; --k) off.x = std::nextafter(off.x, 1e308);
-    ASSERT_EQ(Orientation(a, b, off), Exact(a, b, off)) << "triple " << i;
+    ExpectAgrees(a, b, off);
     // A point of the line a-b rounded to doubles, for arbitrary a and b:
     // its determinant is about as large as the error of computing it.
     const Point2 p{scale * unit(rng), scale * unit(rng)};
     const Point2 q{scale * unit(rng), scale * unit(rng)};
     const double t = unit(rng) * 3;
     const Point2 r{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
-    ASSERT_EQ(Orientation(p, q, r), Exact(p, q, r)) << "triple " << i;
+    ExpectAgrees(p, q, r);
+    if (HasFailure()) FAIL() << "triple " << i;
   }
 }
 
@@ -70,8 +79,19 @@ TEST(OrientationMixedScalesTest, AgreesWithCgal) {
       q = {unit(rng) * std::pow(10.0, exponent(rng)),
            unit(rng) * std::pow(10.0, exponent(rng))};
     }
-    ASSERT_EQ(Orientation(p[0], p[1], p[2]), Exact(p[0], p[1], p[2])) << i;
+    ExpectAgrees(p[0], p[1], p[2]);
+    if (HasFailure()) FAIL() << "triple " << i;
   }
+}
+
+TEST(ClearlyLeftTest, DecidesPlumpTriplesAndNeverDegenerateOnes) {
+  EXPECT_TRUE(ClearlyLeft({0, 0}, {1, 0}, {0, 1}));
+  EXPECT_TRUE(ClearlyLeft({1e-100, 0}, {2e-100, 0}, {1e-100, 1e-100}));
+  EXPECT_FALSE(ClearlyLeft({0, 0}, {0, 1}, {1, 0}));  // right
+  EXPECT_FALSE(ClearlyLeft({0, 0}, {1, 1}, {3, 3}));  // on the line
+  // Products out of the filter's range: the exact predicate must decide.
+  EXPECT_FALSE(ClearlyLeft({0, 0}, {0x1p-1074, 0}, {0, 0x1p-1074}));
+  EXPECT_FALSE(ClearlyLeft({0, 0}, {1e300, 0}, {0, 1e300}));
 }
 
 }  // namespace
