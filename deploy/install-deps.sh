@@ -16,7 +16,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   prometheus-cpp-dev
   libgdal-dev gdal-bin libproj-dev proj-bin libgeotiff-dev
-  libpng-dev
+  libpng-dev libdeflate-dev
   python3 python3-grpcio python3-protobuf python3-numpy
   libssl-dev
   chromium nginx openssl curl

@@ -1,9 +1,10 @@
 // EncodePng: an 8-bit RGBA or grey-and-alpha image as a PNG file in
-// memory, with libpng.
-// Compressed for speed (zlib level 1, the Sub filter, which suits smooth
-// terrain), since a tile is made per request.
+// memory: the chunks written here, the image data deflated by libdeflate.
+// Compressed for speed (libdeflate's level 1, the Sub filter, which suits
+// smooth terrain), since a tile is made per request.
 //
-// Thread-safety: a pure function (libpng keeps its state per call).
+// Thread-safety: safe to call from any thread (each thread keeps its own
+// compressor).
 
 #ifndef LOCATOR_SERVER_TILES_PNG_IMAGE_H_
 #define LOCATOR_SERVER_TILES_PNG_IMAGE_H_
@@ -27,9 +28,9 @@ constexpr size_t BytesPerPixel(PngColor color) {
 }
 
 // The PNG of the `width` x `height` image `pixels` (BytesPerPixel(color)
-// bytes a pixel, row by row, north first); Internal with libpng's message
-// if libpng fails, InvalidArgument if `pixels` does not hold width * height
-// pixels.
+// bytes a pixel, row by row, north first); InvalidArgument if the image is
+// empty or `pixels` does not hold width * height pixels, Internal if the
+// compressor cannot be made.
 StatusOr<std::string> EncodePng(std::span<const uint8_t> pixels, uint32_t width,
                                 uint32_t height, PngColor color);
 
