@@ -56,9 +56,24 @@ StatusOr<HillshadeOptions> ParseHillshadeOptions(std::string_view azimuth,
 // every number exact (shortest round trip).
 std::string HillshadeVariant(const HillshadeOptions& options);
 
-// The shade of a facet of gradient `g` under `options`: gdaldem's
-// 1 + 254 * cos(angle of incidence), rounded, 1 for facets turned away from
-// the light; 0 (no data) for a NaN gradient.
+// A light (HillshadeOptions) with its angles' sines and cosines worked out
+// once, for the many facets of a tile. Immutable: safe to share.
+class HillshadeLight {
+ public:
+  explicit HillshadeLight(const HillshadeOptions& options);
+
+  // The shade of a facet of gradient `g`: gdaldem's 1 + 254 * cos(angle of
+  // incidence), rounded, 1 for facets turned away from the light; 0 (no
+  // data) for a NaN gradient.
+  uint8_t Shade(const FacetGradient& g) const;
+
+ private:
+  double exaggeration_;  // z_factor / scale
+  double sin_altitude_, cos_altitude_;
+  double sin_azimuth_, cos_azimuth_;
+};
+
+// HillshadeLight(options).Shade(g).
 uint8_t Shade(const FacetGradient& g, const HillshadeOptions& options);
 
 // The grey-and-alpha PNG of `tile` of `engine`'s dataset lit by `options`,
