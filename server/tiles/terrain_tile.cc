@@ -128,11 +128,17 @@ Status CheckTileSource(const Engine& engine, std::string_view name,
 Status TilePixelsInDatasetCrs(const Engine& engine, const TileAddress& tile,
                               std::vector<Point2>* pixels) {
   const RasterSpec raster = tile.Raster();
-  pixels->clear();
-  pixels->reserve(raster.cells());
+  // A centre's x depends on its column alone and its y on its row alone.
+  std::vector<double> column_x(raster.width);
+  for (uint32_t col = 0; col < raster.width; ++col) {
+    column_x[col] = raster.CellCentre(col, 0).x;
+  }
+  pixels->resize(raster.cells());
+  Point2* pixel = pixels->data();
   for (uint32_t row = 0; row < raster.height; ++row) {
+    const double y = raster.CellCentre(0, row).y;
     for (uint32_t col = 0; col < raster.width; ++col) {
-      pixels->push_back(raster.CellCentre(col, row));
+      *pixel++ = Point2{column_x[col], y};
     }
   }
   gis::CrsTransformer* transformer = nullptr;

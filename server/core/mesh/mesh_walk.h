@@ -21,16 +21,35 @@ using MeshWalkOutcome = BasicWalkOutcome<uint32_t>;
 // Walks from face `start` to q. Precondition: IsFinite(q).
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
 
-// True only when q is strictly inside face f, decided by the orientation
-// filter alone: then Walk(mesh, f, q) ends at f with kFace at its first
-// face. A scan's next point is most often in its last point's face, and
-// this test draws no random order and branches into no exact predicate.
-inline bool ClearlyInside(const ServingMesh& mesh, uint32_t f,
-                          const Point2& q) {
-  const Point2& a = mesh.CornerPoint(f, 0);
-  const Point2& b = mesh.CornerPoint(f, 1);
-  const Point2& c = mesh.CornerPoint(f, 2);
-  return ClearlyLeft(b, c, q) & ClearlyLeft(c, a, q) & ClearlyLeft(a, b, q);
+// Walks from *face toward q by the orientation filter alone, for at most
+// `max_steps` steps, each across an edge that q is clearly beyond; true
+// when it stops at a face whose interior clearly holds q (then Walk()
+// from anywhere ends there with kFace). False when a test is undecided (q
+// on or next to an edge), q is beyond the hull, or the steps run out: then
+// *face is where it stopped, a good start for Walk(). A scan's next point
+// is most often in or next to its last point's face, and this walk draws
+// no random order and branches into no exact predicate.
+inline bool ClearWalk(const ServingMesh& mesh, uint32_t* face, const Point2& q,
+                      int max_steps) {
+  for (int step = 0;; ++step) {
+    const uint32_t f = *face;
+    const Point2& a = mesh.CornerPoint(f, 0);
+    const Point2& b = mesh.CornerPoint(f, 1);
+    const Point2& c = mesh.CornerPoint(f, 2);
+    const OrientationFilter edge[3] = {{b, c, q}, {c, a, q}, {a, b, q}};
+    if (edge[0].ClearlyLeft() & edge[1].ClearlyLeft() & edge[2].ClearlyLeft()) {
+      return true;
+    }
+    if (step == max_steps) return false;
+    const int exit = edge[0].ClearlyRight()   ? 0
+                     : edge[1].ClearlyRight() ? 1
+                     : edge[2].ClearlyRight() ? 2
+                                              : -1;
+    if (exit < 0) return false;
+    const uint32_t next = mesh.Neighbor(f, exit);
+    if (ServingMesh::IsHull(next)) return false;
+    *face = next;
+  }
 }
 
 // Walks from `start` and fills the complete answer: for points outside the

@@ -72,6 +72,11 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   return ValueAt(mesh, f, q, how);
 }
 
+// The steps a scan takes by the filter alone before an exact walk takes
+// over: a pixel is a few faces from the last, even where faces are smaller
+// than pixels.
+constexpr int kMaxClearSteps = 16;
+
 // Walks to each of `points` in scan order (see RenderPoints) and writes
 // `at(w, q)` for each point q the walk `w` reached, or `none` for a point
 // that is not finite.
@@ -95,7 +100,7 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint,
       continue;
     }
     MeshWalkOutcome w;
-    if (row_started && ClearlyInside(mesh, face, q)) {
+    if (row_started && ClearWalk(mesh, &face, q, kMaxClearSteps)) {
       w.face = face;
     } else {
       w = Walk(mesh, face, q);

@@ -162,6 +162,52 @@ TEST_P(ServingMeshTest, WalksFromAnyStartGiveCgalsAnswers) {
   }
 }
 
+TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
+  std::mt19937_64 random(23);
+  std::uniform_real_distribution<double> coordinate(-0.2, 1.2);
+  int clear = 0, interior = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Point2 q{coordinate(random), coordinate(random)};
+    const auto start = static_cast<uint32_t>(random() % mesh().num_faces());
+    const MeshWalkOutcome exact = Walk(mesh(), start, q);
+    interior += exact.type == LocationType::kFace;
+    uint32_t face = start;
+    if (!ClearWalk(mesh(), &face, q, /*max_steps=*/1000)) {
+      ASSERT_LT(face, mesh().num_faces());
+      continue;
+    }
+    ++clear;
+    EXPECT_EQ(exact.type, LocationType::kFace) << q.x << ", " << q.y;
+    EXPECT_EQ(exact.face, face) << q.x << ", " << q.y;
+  }
+  // Interior points from any start are almost all reached by the filter.
+  EXPECT_GT(clear, interior * 9 / 10);
+  // Vertices and points on edges are never clearly inside.
+  for (uint32_t f = 0; f < mesh().num_faces(); f += 7) {
+    const Point2& a = mesh().CornerPoint(f, 1);
+    const Point2& b = mesh().CornerPoint(f, 2);
+    uint32_t face = f;
+    EXPECT_FALSE(ClearWalk(mesh(), &face, a, /*max_steps=*/1000));
+    if (a.x == b.x || a.y == b.y) {
+      face = f;
+      EXPECT_FALSE(ClearWalk(mesh(), &face, Point2{a.x, (a.y + b.y) / 2},
+                             /*max_steps=*/1000));
+    }
+  }
+  // No step allowed: only q in the start face itself.
+  const uint32_t f = 0;
+  const Point2 centroid{
+      (mesh().CornerPoint(f, 0).x + mesh().CornerPoint(f, 1).x +
+       mesh().CornerPoint(f, 2).x) /
+          3,
+      (mesh().CornerPoint(f, 0).y + mesh().CornerPoint(f, 1).y +
+       mesh().CornerPoint(f, 2).y) /
+          3};
+  uint32_t face = f;
+  EXPECT_TRUE(ClearWalk(mesh(), &face, centroid, /*max_steps=*/0));
+  EXPECT_EQ(face, f);
+}
+
 INSTANTIATE_TEST_SUITE_P(PlainAndHoled, ServingMeshTest,
                          ::testing::Values(false, true));
 
