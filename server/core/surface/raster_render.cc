@@ -77,6 +77,16 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
 // than pixels.
 constexpr int kMaxClearSteps = 16;
 
+// Walks from `face` to q, as a scan does: by the filter alone while it
+// decides, then exactly. Precondition: IsFinite(q).
+MeshWalkOutcome ScanStep(const ServingMesh& mesh, uint32_t face,
+                         const Point2& q) {
+  if (ClearWalk(mesh, &face, q, kMaxClearSteps)) {
+    return MeshWalkOutcome{.face = face};
+  }
+  return Walk(mesh, face, q);
+}
+
 // Walks to each of `points` in scan order (see RenderPoints) and writes
 // `at(w, q)` for each point q the walk `w` reached, or `none` for a point
 // that is not finite.
@@ -99,12 +109,7 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint,
       *out++ = none;
       continue;
     }
-    MeshWalkOutcome w;
-    if (row_started && ClearWalk(mesh, &face, q, kMaxClearSteps)) {
-      w.face = face;
-    } else {
-      w = Walk(mesh, face, q);
-    }
+    const MeshWalkOutcome w = ScanStep(mesh, face, q);
     face = w.face;
     if (!row_started) row_start = face;
     row_started = true;
@@ -140,7 +145,7 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
     uint32_t face = row_start;
     for (uint32_t col = 0; col < spec.width; ++col) {
       const Point2 q = spec.CellCentre(col, first_row + r);
-      const MeshWalkOutcome w = Walk(mesh, face, q);
+      const MeshWalkOutcome w = ScanStep(mesh, face, q);
       face = w.face;
       if (col == 0) row_start = face;
       *out++ = CellValue(mesh, spec.interpolation, spec.nodata, w, q);
