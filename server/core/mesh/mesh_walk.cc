@@ -51,7 +51,7 @@ uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at) {
 
 uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
                          const Point2& q, LocateResult* result, Detail detail) {
-  MeshWalkOutcome w = Walk(mesh, start, q);
+  MeshWalkOutcome w = FilteredWalk(mesh, start, q);
   if (w.type == LocationType::kOutsideConvexHull) {
     mesh.NearestVisibleHullEdge(&w.face, &w.feature, q);
   }

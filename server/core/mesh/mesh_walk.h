@@ -28,11 +28,13 @@ MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
 // on or next to an edge), q is beyond the hull, or the steps run out: then
 // *face is where it stopped, a good start for Walk(). A scan's next point
 // is most often in or next to its last point's face, and this walk draws
-// no random order and branches into no exact predicate.
+// no random order and branches into no exact predicate. Adds the faces it
+// tested to *faces_visited.
 inline bool ClearWalk(const ServingMesh& mesh, uint32_t* face, const Point2& q,
-                      int max_steps) {
+                      int max_steps, uint32_t* faces_visited) {
   for (int step = 0;; ++step) {
     const uint32_t f = *face;
+    ++*faces_visited;
     const Point2& a = mesh.CornerPoint(f, 0);
     const Point2& b = mesh.CornerPoint(f, 1);
     const Point2& c = mesh.CornerPoint(f, 2);
@@ -67,11 +69,31 @@ uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
 // domain.
 uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at);
 
+// The steps FilteredWalk takes by the filter alone before the exact walk
+// takes over: a scan's next point, or a start table's next sub-cell
+// centre, is a few faces from the last.
+constexpr int kMaxClearSteps = 16;
+
+// Walk()'s answer, its first steps by the orientation filter alone
+// (ClearWalk) while the filter decides, then the exact walk from where
+// those stopped. As valid an answer as Walk() from `start` (the face named
+// for q on an edge or a vertex depends on the start in both).
+inline MeshWalkOutcome FilteredWalk(const ServingMesh& mesh, uint32_t start,
+                                    const Point2& q) {
+  uint32_t faces = 0;
+  if (ClearWalk(mesh, &start, q, kMaxClearSteps, &faces)) {
+    return MeshWalkOutcome{.face = start, .faces_visited = faces};
+  }
+  MeshWalkOutcome w = Walk(mesh, start, q);
+  w.faces_visited += faces - 1;  // the face it stopped at counts once
+  return w;
+}
+
 // A face whose closed triangle contains q, or for q outside the hull the
 // hull face the walk left through: a good start for queries near q.
 inline uint32_t FaceNear(const ServingMesh& mesh, uint32_t hint,
                          const Point2& q) {
-  return Walk(mesh, hint, q).face;
+  return FilteredWalk(mesh, hint, q).face;
 }
 
 }  // namespace locator

@@ -72,21 +72,6 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   return ValueAt(mesh, f, q, how);
 }
 
-// The steps a scan takes by the filter alone before an exact walk takes
-// over: a pixel is a few faces from the last, even where faces are smaller
-// than pixels.
-constexpr int kMaxClearSteps = 16;
-
-// Walks from `face` to q, as a scan does: by the filter alone while it
-// decides, then exactly. Precondition: IsFinite(q).
-MeshWalkOutcome ScanStep(const ServingMesh& mesh, uint32_t face,
-                         const Point2& q) {
-  if (ClearWalk(mesh, &face, q, kMaxClearSteps)) {
-    return MeshWalkOutcome{.face = face};
-  }
-  return Walk(mesh, face, q);
-}
-
 // Walks to each of `points` in scan order (see RenderPoints) and writes
 // `at(w, q)` for each point q the walk `w` reached, or `none` for a point
 // that is not finite.
@@ -109,7 +94,7 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint,
       *out++ = none;
       continue;
     }
-    const MeshWalkOutcome w = ScanStep(mesh, face, q);
+    const MeshWalkOutcome w = FilteredWalk(mesh, face, q);
     face = w.face;
     if (!row_started) row_start = face;
     row_started = true;
@@ -145,7 +130,7 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
     uint32_t face = row_start;
     for (uint32_t col = 0; col < spec.width; ++col) {
       const Point2 q = spec.CellCentre(col, first_row + r);
-      const MeshWalkOutcome w = ScanStep(mesh, face, q);
+      const MeshWalkOutcome w = FilteredWalk(mesh, face, q);
       face = w.face;
       if (col == 0) row_start = face;
       *out++ = CellValue(mesh, spec.interpolation, spec.nodata, w, q);

@@ -163,6 +163,7 @@ TEST_P(ServingMeshTest, WalksFromAnyStartGiveCgalsAnswers) {
 }
 
 TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
+  uint32_t faces = 0;  // visited, all calls together
   std::mt19937_64 random(23);
   std::uniform_real_distribution<double> coordinate(-0.2, 1.2);
   int clear = 0, interior = 0;
@@ -172,7 +173,7 @@ TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
     const MeshWalkOutcome exact = Walk(mesh(), start, q);
     interior += exact.type == LocationType::kFace;
     uint32_t face = start;
-    if (!ClearWalk(mesh(), &face, q, /*max_steps=*/1000)) {
+    if (!ClearWalk(mesh(), &face, q, /*max_steps=*/1000, &faces)) {
       ASSERT_LT(face, mesh().num_faces());
       continue;
     }
@@ -187,11 +188,11 @@ TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
     const Point2& a = mesh().CornerPoint(f, 1);
     const Point2& b = mesh().CornerPoint(f, 2);
     uint32_t face = f;
-    EXPECT_FALSE(ClearWalk(mesh(), &face, a, /*max_steps=*/1000));
+    EXPECT_FALSE(ClearWalk(mesh(), &face, a, /*max_steps=*/1000, &faces));
     if (a.x == b.x || a.y == b.y) {
       face = f;
       EXPECT_FALSE(ClearWalk(mesh(), &face, Point2{a.x, (a.y + b.y) / 2},
-                             /*max_steps=*/1000));
+                             /*max_steps=*/1000, &faces));
     }
   }
   // No step allowed: only q in the start face itself.
@@ -204,7 +205,7 @@ TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
        mesh().CornerPoint(f, 2).y) /
           3};
   uint32_t face = f;
-  EXPECT_TRUE(ClearWalk(mesh(), &face, centroid, /*max_steps=*/0));
+  EXPECT_TRUE(ClearWalk(mesh(), &face, centroid, /*max_steps=*/0, &faces));
   EXPECT_EQ(face, f);
 }
 
