@@ -38,7 +38,13 @@ class MeshTopology {
 }  // namespace
 
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q) {
-  return VisibilityWalk(MeshTopology(mesh), start, q);
+  uint32_t faces = 0;
+  if (ClearWalk(mesh, &start, q, kMaxClearSteps, &faces)) {
+    return MeshWalkOutcome{.face = start, .faces_visited = faces};
+  }
+  MeshWalkOutcome w = VisibilityWalk(MeshTopology(mesh), start, q);
+  w.faces_visited += faces - 1;  // the face it stopped at counts once
+  return w;
 }
 
 uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at) {
@@ -51,7 +57,7 @@ uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at) {
 
 uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
                          const Point2& q, LocateResult* result, Detail detail) {
-  MeshWalkOutcome w = FilteredWalk(mesh, start, q);
+  MeshWalkOutcome w = Walk(mesh, start, q);
   if (w.type == LocationType::kOutsideConvexHull) {
     mesh.NearestVisibleHullEdge(&w.face, &w.feature, q);
   }

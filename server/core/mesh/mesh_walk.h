@@ -1,5 +1,7 @@
-// The visibility walk (visibility_walk.h) on the serving mesh, and the
-// complete answer it gives: what every strategy runs once it has a start.
+// The walk on the serving mesh (first by the orientation filter alone, then
+// the exact visibility walk of visibility_walk.h), and the complete answer
+// it gives: what every strategy, profile, raster and start table runs once
+// it has a start.
 //
 // Thread-safety: stateless apart from a thread-local random generator.
 
@@ -18,16 +20,24 @@ namespace locator {
 // For kOutsideConvexHull, `face` is the hull face the walk left.
 using MeshWalkOutcome = BasicWalkOutcome<uint32_t>;
 
-// Walks from face `start` to q. Precondition: IsFinite(q).
+// Walks from face `start` to q: first by the orientation filter alone
+// (ClearWalk, up to kMaxClearSteps faces) while the filter decides, then by
+// the exact visibility walk from where that stopped. Precondition:
+// IsFinite(q).
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
+
+// The faces Walk() takes by the filter alone before the exact walk takes
+// over: a locate's start, a scan's last point or a start table's last
+// sub-cell centre is most often a few faces from q.
+constexpr int kMaxClearSteps = 16;
 
 // Walks from *face toward q by the orientation filter alone, for at most
 // `max_steps` steps, each across an edge that q is clearly beyond; true
-// when it stops at a face whose interior clearly holds q (then Walk()
-// from anywhere ends there with kFace). False when a test is undecided (q
+// when it stops at a face whose interior clearly holds q (then the exact
+// walk from anywhere ends there with kFace). False when a test is undecided (q
 // on or next to an edge), q is beyond the hull, or the steps run out: then
-// *face is where it stopped, a good start for Walk(). A scan's next point
-// is most often in or next to its last point's face, and this walk draws
+// *face is where it stopped, a good start for the exact walk. A scan's next
+// point is most often in or next to its last point's face, and this walk draws
 // no random order and branches into no exact predicate. Adds the faces it
 // tested to *faces_visited.
 inline bool ClearWalk(const ServingMesh& mesh, uint32_t* face, const Point2& q,
@@ -69,31 +79,11 @@ uint32_t WalkAndDescribe(const ServingMesh& mesh, uint32_t start,
 // domain.
 uint32_t ClosedDomainFace(const ServingMesh& mesh, const MeshWalkOutcome& at);
 
-// The steps FilteredWalk takes by the filter alone before the exact walk
-// takes over: a scan's next point, or a start table's next sub-cell
-// centre, is a few faces from the last.
-constexpr int kMaxClearSteps = 16;
-
-// Walk()'s answer, its first steps by the orientation filter alone
-// (ClearWalk) while the filter decides, then the exact walk from where
-// those stopped. As valid an answer as Walk() from `start` (the face named
-// for q on an edge or a vertex depends on the start in both).
-inline MeshWalkOutcome FilteredWalk(const ServingMesh& mesh, uint32_t start,
-                                    const Point2& q) {
-  uint32_t faces = 0;
-  if (ClearWalk(mesh, &start, q, kMaxClearSteps, &faces)) {
-    return MeshWalkOutcome{.face = start, .faces_visited = faces};
-  }
-  MeshWalkOutcome w = Walk(mesh, start, q);
-  w.faces_visited += faces - 1;  // the face it stopped at counts once
-  return w;
-}
-
 // A face whose closed triangle contains q, or for q outside the hull the
 // hull face the walk left through: a good start for queries near q.
 inline uint32_t FaceNear(const ServingMesh& mesh, uint32_t hint,
                          const Point2& q) {
-  return FilteredWalk(mesh, hint, q).face;
+  return Walk(mesh, hint, q).face;
 }
 
 }  // namespace locator

@@ -94,7 +94,7 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint,
       *out++ = none;
       continue;
     }
-    const MeshWalkOutcome w = FilteredWalk(mesh, face, q);
+    const MeshWalkOutcome w = Walk(mesh, face, q);
     face = w.face;
     if (!row_started) row_start = face;
     row_started = true;
@@ -130,7 +130,7 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
     uint32_t face = row_start;
     for (uint32_t col = 0; col < spec.width; ++col) {
       const Point2 q = spec.CellCentre(col, first_row + r);
-      const MeshWalkOutcome w = FilteredWalk(mesh, face, q);
+      const MeshWalkOutcome w = Walk(mesh, face, q);
       face = w.face;
       if (col == 0) row_start = face;
       *out++ = CellValue(mesh, spec.interpolation, spec.nodata, w, q);
