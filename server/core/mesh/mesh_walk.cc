@@ -38,12 +38,11 @@ class MeshTopology {
 }  // namespace
 
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q) {
-  uint32_t faces = 0;
-  if (ClearWalk(mesh, &start, q, kMaxClearSteps, &faces)) {
-    return MeshWalkOutcome{.face = start, .faces_visited = faces};
-  }
-  MeshWalkOutcome w = VisibilityWalk(MeshTopology(mesh), start, q);
-  w.faces_visited += faces - 1;  // the face it stopped at counts once
+  MeshWalkOutcome clear{.face = start};
+  if (ClearWalk(mesh, q, kMaxClearSteps, &clear)) return clear;
+  MeshWalkOutcome w = VisibilityWalk(MeshTopology(mesh), clear.face, q);
+  // The face the filter stopped at counts once.
+  w.faces_visited += clear.faces_visited - 1;
   return w;
 }
 

@@ -31,25 +31,28 @@ MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
 // sub-cell centre is most often a few faces from q.
 constexpr int kMaxClearSteps = 16;
 
-// Walks from *face toward q by the orientation filter alone, for at most
-// `max_steps` steps, each across an edge that q is clearly beyond; true
-// when it stops at a face whose interior clearly holds q (then the exact
-// walk from anywhere ends there with kFace). False when a test is undecided (q
-// on or next to an edge), q is beyond the hull, or the steps run out: then
-// *face is where it stopped, a good start for the exact walk. A scan's next
-// point is most often in or next to its last point's face, and this walk draws
-// no random order and branches into no exact predicate. Adds the faces it
-// tested to *faces_visited.
-inline bool ClearWalk(const ServingMesh& mesh, uint32_t* face, const Point2& q,
-                      int max_steps, uint32_t* faces_visited) {
+// Walks from walk->face toward q by the orientation filter alone, for at
+// most `max_steps` steps, each across an edge that q is clearly beyond,
+// counting the faces it tests in walk->faces_visited. True when it decided,
+// with *walk an answer the exact walk gives too: kFace at a face whose
+// interior clearly holds q, or kOutsideConvexHull across a hull edge that q
+// is clearly beyond. False when a test is undecided (q on or next to an
+// edge) or the steps run out: then walk->face is where it stopped, a good
+// start for the exact walk. A scan's next point is most often in or next
+// to its last point's face, and this walk draws no random order and
+// branches into no exact predicate.
+inline bool ClearWalk(const ServingMesh& mesh, const Point2& q, int max_steps,
+                      MeshWalkOutcome* walk) {
   for (int step = 0;; ++step) {
-    const uint32_t f = *face;
-    ++*faces_visited;
+    const uint32_t f = walk->face;
+    ++walk->faces_visited;
     const Point2& a = mesh.CornerPoint(f, 0);
     const Point2& b = mesh.CornerPoint(f, 1);
     const Point2& c = mesh.CornerPoint(f, 2);
     const OrientationFilter edge[3] = {{b, c, q}, {c, a, q}, {a, b, q}};
     if (edge[0].ClearlyLeft() & edge[1].ClearlyLeft() & edge[2].ClearlyLeft()) {
+      walk->type = LocationType::kFace;
+      walk->feature = -1;
       return true;
     }
     if (step == max_steps) return false;
@@ -59,8 +62,12 @@ inline bool ClearWalk(const ServingMesh& mesh, uint32_t* face, const Point2& q,
                                               : -1;
     if (exit < 0) return false;
     const uint32_t next = mesh.Neighbor(f, exit);
-    if (ServingMesh::IsHull(next)) return false;
-    *face = next;
+    if (ServingMesh::IsHull(next)) {
+      walk->type = LocationType::kOutsideConvexHull;
+      walk->feature = exit;
+      return true;
+    }
+    walk->face = next;
   }
 }
 

@@ -162,45 +162,53 @@ TEST_P(ServingMeshTest, WalksFromAnyStartGiveCgalsAnswers) {
   }
 }
 
-TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
-  uint32_t faces = 0;  // visited, all calls together
+TEST_P(ServingMeshTest, ClearWalksDecideOnlyWhatCgalSays) {
   std::mt19937_64 random(23);
   std::uniform_real_distribution<double> coordinate(-0.2, 1.2);
-  int clear = 0, interior = 0;
+  int decided = 0;
   for (int k = 0; k < 3000; ++k) {
     const Point2 q{coordinate(random), coordinate(random)};
     const auto start = static_cast<uint32_t>(random() % mesh().num_faces());
-    // CGAL's answer: inside a finite face, or not.
     Triangulation::Cdt::Locate_type type;
     int index = 0;
     const auto cgal_face =
         t_->cgal().locate(Triangulation::Cdt::Point(q.x, q.y), type, index);
-    const bool in_face = type == Triangulation::Cdt::FACE;
-    interior += in_face;
-    uint32_t face = start;
-    if (!ClearWalk(mesh(), &face, q, /*max_steps=*/1000, &faces)) {
-      ASSERT_LT(face, mesh().num_faces());
+    MeshWalkOutcome walk{.face = start};
+    if (!ClearWalk(mesh(), q, /*max_steps=*/1000, &walk)) {
+      ASSERT_LT(walk.face, mesh().num_faces());
       continue;
     }
-    ++clear;
-    ASSERT_TRUE(in_face) << q.x << ", " << q.y;
-    EXPECT_EQ(t_->MeshFace(cgal_face), face) << q.x << ", " << q.y;
+    ++decided;
+    if (walk.type == LocationType::kFace) {
+      ASSERT_EQ(type, Triangulation::Cdt::FACE) << q.x << ", " << q.y;
+      EXPECT_EQ(t_->MeshFace(cgal_face), walk.face) << q.x << ", " << q.y;
+    } else {
+      ASSERT_EQ(walk.type, LocationType::kOutsideConvexHull);
+      ASSERT_EQ(type, Triangulation::Cdt::OUTSIDE_CONVEX_HULL)
+          << q.x << ", " << q.y;
+      // The hull edge it names has q strictly beyond it.
+      EXPECT_TRUE(
+          ServingMesh::IsHull(mesh().Neighbor(walk.face, walk.feature)));
+      EXPECT_EQ(Orientation(mesh().CornerPoint(walk.face, Ccw(walk.feature)),
+                            mesh().CornerPoint(walk.face, Cw(walk.feature)), q),
+                Side::kRight);
+    }
   }
-  // Interior points from any start are almost all reached by the filter.
-  EXPECT_GT(clear, interior * 9 / 10);
-  // Vertices and points on edges are never clearly inside.
+  // Random points from any start are almost all decided by the filter.
+  EXPECT_GT(decided, 3000 * 9 / 10);
+  // Vertices and points on edges are never decided.
   for (uint32_t f = 0; f < mesh().num_faces(); f += 7) {
     const Point2& a = mesh().CornerPoint(f, 1);
     const Point2& b = mesh().CornerPoint(f, 2);
-    uint32_t face = f;
-    EXPECT_FALSE(ClearWalk(mesh(), &face, a, /*max_steps=*/1000, &faces));
+    MeshWalkOutcome walk{.face = f};
+    EXPECT_FALSE(ClearWalk(mesh(), a, /*max_steps=*/1000, &walk));
     if (a.x == b.x || a.y == b.y) {
-      face = f;
-      EXPECT_FALSE(ClearWalk(mesh(), &face, Point2{a.x, (a.y + b.y) / 2},
-                             /*max_steps=*/1000, &faces));
+      walk = MeshWalkOutcome{.face = f};
+      EXPECT_FALSE(ClearWalk(mesh(), Point2{a.x, (a.y + b.y) / 2},
+                             /*max_steps=*/1000, &walk));
     }
   }
-  // No step allowed: only q in the start face itself.
+  // No step allowed: only q in the start face itself, one face tested.
   const uint32_t f = 0;
   const Point2 centroid{
       (mesh().CornerPoint(f, 0).x + mesh().CornerPoint(f, 1).x +
@@ -209,9 +217,10 @@ TEST_P(ServingMeshTest, ClearWalksEndOnlyInTheFaceWhoseInteriorHoldsQ) {
       (mesh().CornerPoint(f, 0).y + mesh().CornerPoint(f, 1).y +
        mesh().CornerPoint(f, 2).y) /
           3};
-  uint32_t face = f;
-  EXPECT_TRUE(ClearWalk(mesh(), &face, centroid, /*max_steps=*/0, &faces));
-  EXPECT_EQ(face, f);
+  MeshWalkOutcome walk{.face = f};
+  EXPECT_TRUE(ClearWalk(mesh(), centroid, /*max_steps=*/0, &walk));
+  EXPECT_EQ(walk.face, f);
+  EXPECT_EQ(walk.faces_visited, 1u);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainAndHoled, ServingMeshTest,
