@@ -41,18 +41,13 @@ struct OrientationFilter {
                 ? kErrorBound * terms
                 : std::numeric_limits<double>::quiet_NaN();
   }
+  // True only when Orientation(a, b, c) is kLeft (kRight).
   bool ClearlyLeft() const { return determinant > bound; }
   bool ClearlyRight() const { return determinant < -bound; }
 
   double determinant;
   double bound;
 };
-
-// True only when Orientation(a, b, c) is kLeft, decided by the filter
-// alone: a test that costs no branch into the exact predicate.
-inline bool ClearlyLeft(const Point2& a, const Point2& b, const Point2& c) {
-  return OrientationFilter(a, b, c).ClearlyLeft();
-}
 
 // The filter first; what it leaves undecided goes to CGAL's filtered exact
 // predicate.

@@ -19,12 +19,18 @@ Side Exact(const Point2& a, const Point2& b, const Point2& c) {
       CGAL::orientation(P(a.x, a.y), P(b.x, b.y), P(c.x, c.y))));
 }
 
-// Orientation(a, b, c) equals CGAL's, and ClearlyLeft (the filter alone)
-// claims kLeft only where CGAL says so.
+// Orientation(a, b, c) equals CGAL's, and the filter alone claims a side
+// only where CGAL says so.
 void ExpectAgrees(const Point2& a, const Point2& b, const Point2& c) {
   const Side exact = Exact(a, b, c);
   EXPECT_EQ(Orientation(a, b, c), exact);
-  if (ClearlyLeft(a, b, c)) EXPECT_EQ(exact, Side::kLeft);
+  const OrientationFilter filter(a, b, c);
+  if (filter.ClearlyLeft()) EXPECT_EQ(exact, Side::kLeft);
+  if (filter.ClearlyRight()) EXPECT_EQ(exact, Side::kRight);
+}
+
+bool ClearlyLeft(const Point2& a, const Point2& b, const Point2& c) {
+  return OrientationFilter(a, b, c).ClearlyLeft();
 }
 
 // Collinear triples by construction: small integer steps along a line,
@@ -84,10 +90,11 @@ TEST(OrientationMixedScalesTest, AgreesWithCgal) {
   }
 }
 
-TEST(ClearlyLeftTest, DecidesPlumpTriplesAndNeverDegenerateOnes) {
+TEST(OrientationFilterTest, DecidesPlumpTriplesAndNeverDegenerateOnes) {
   EXPECT_TRUE(ClearlyLeft({0, 0}, {1, 0}, {0, 1}));
   EXPECT_TRUE(ClearlyLeft({1e-100, 0}, {2e-100, 0}, {1e-100, 1e-100}));
   EXPECT_FALSE(ClearlyLeft({0, 0}, {0, 1}, {1, 0}));  // right
+  EXPECT_TRUE(OrientationFilter({0, 0}, {0, 1}, {1, 0}).ClearlyRight());
   EXPECT_FALSE(ClearlyLeft({0, 0}, {1, 1}, {3, 3}));  // on the line
   // Products out of the filter's range: the exact predicate must decide.
   EXPECT_FALSE(ClearlyLeft({0, 0}, {0x1p-1074, 0}, {0, 0x1p-1074}));
