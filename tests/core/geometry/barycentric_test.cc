@@ -5,7 +5,7 @@
 
 #include "server/core/geometry/barycentric.h"
 
-#include <CGAL/Exact_rational.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -15,18 +15,20 @@
 namespace locator {
 namespace {
 
+// The oracle: signed areas from CGAL's exact-constructions kernel.
 std::array<double, 3> ExactCoordinates(const Point2& a, const Point2& b,
                                        const Point2& c, const Point2& q) {
-  using Exact = CGAL::Exact_rational;
-  auto cross = [](const Point2& o, const Point2& u, const Point2& v) -> Exact {
-    return (Exact(u.x) - o.x) * (Exact(v.y) - o.y) -
-           (Exact(u.y) - o.y) * (Exact(v.x) - o.x);
-  };
-  const Exact area = cross(a, b, c);
-  const Exact ba = cross(q, b, c) / area;
-  const Exact bb = cross(q, c, a) / area;
-  return {CGAL::to_double(ba), CGAL::to_double(bb),
-          CGAL::to_double(Exact(1) - ba - bb)};
+  using K = CGAL::Exact_predicates_exact_constructions_kernel;
+  const K::Point_2 pa(a.x, a.y), pb(b.x, b.y), pc(c.x, c.y), pq(q.x, q.y);
+  const K::FT whole = CGAL::area(pa, pb, pc);
+  const K::FT to_a = CGAL::area(pq, pb, pc) / whole;
+  const K::FT to_b = CGAL::area(pa, pq, pc) / whole;
+  const K::FT to_c = CGAL::area(pa, pb, pq) / whole;
+  // exact(): a lazy number's to_double is its interval's, not the exact
+  // value rounded.
+  return {CGAL::to_double(CGAL::exact(to_a)),
+          CGAL::to_double(CGAL::exact(to_b)),
+          CGAL::to_double(CGAL::exact(to_c))};
 }
 
 struct TriangleCase {
