@@ -4,6 +4,11 @@ namespace locator {
 
 namespace {
 
+// The faces Walk() takes by the filter alone before the exact walk takes
+// over: a locate's start, a scan's last point or a start table's last
+// sub-cell centre is most often a few faces from q.
+constexpr int kMaxClearSteps = 16;
+
 // The serving mesh as a VisibilityWalk topology.
 class MeshTopology {
  public:

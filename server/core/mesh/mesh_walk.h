@@ -21,15 +21,9 @@ namespace locator {
 using MeshWalkOutcome = BasicWalkOutcome<uint32_t>;
 
 // Walks from face `start` to q: first by the orientation filter alone
-// (ClearWalk, up to kMaxClearSteps faces) while the filter decides, then by
-// the exact visibility walk from where that stopped. Precondition:
-// IsFinite(q).
+// (ClearWalk, up to 16 faces) while the filter decides, then by the exact
+// visibility walk from where that stopped. Precondition: IsFinite(q).
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
-
-// The faces Walk() takes by the filter alone before the exact walk takes
-// over: a locate's start, a scan's last point or a start table's last
-// sub-cell centre is most often a few faces from q.
-constexpr int kMaxClearSteps = 16;
 
 // Walks from walk->face toward q by the orientation filter alone, for at
 // most `max_steps` steps, each across an edge that q is clearly beyond,
