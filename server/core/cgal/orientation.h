@@ -32,11 +32,13 @@ struct OrientationFilter {
 
   // The determinant of (a, b, c) and the bound on its rounding error; a
   // bound of NaN when the terms are out of range (no sign is then decided).
+  // The determinant is the cross product (a - c) x (b - c), computed as
+  // Barycentric() computes its cross products (TriangleBarycentric).
   OrientationFilter(const Point2& a, const Point2& b, const Point2& c) {
     const double left = (a.x - c.x) * (b.y - c.y);
     const double right = (a.y - c.y) * (b.x - c.x);
     determinant = left - right;
-    const double terms = std::abs(left) + std::abs(right);
+    terms = std::abs(left) + std::abs(right);
     bound = terms >= kMinTerms && terms <= kMaxTerms
                 ? kErrorBound * terms
                 : std::numeric_limits<double>::quiet_NaN();
@@ -46,6 +48,7 @@ struct OrientationFilter {
   bool ClearlyRight() const { return determinant < -bound; }
 
   double determinant;
+  double terms;  // |left| + |right|: the scale of the rounding error
   double bound;
 };
 

@@ -29,41 +29,46 @@ std::array<double, 3> ExactBarycentric(const Point2& a, const Point2& b,
   return {CGAL::to_double(ba), CGAL::to_double(bb), CGAL::to_double(bc)};
 }
 
-// Barycentric coordinates of q in (a, b, c) from cross products in `Real`,
-// into *result; false when Real cannot resolve them to within kTolerance:
-// when a cross product's rounding error (a few epsilon times the magnitude
-// of its terms) is too large against the area, or a term leaves the range
-// where that error is relative (above max_magnitude, below min_magnitude),
-// or a coordinate is not finite. A needle's area is small against its
+template <class Real>
+constexpr Real kRoundoff = 8 * std::numeric_limits<Real>::epsilon();
+
+// The cross product (u - o) x (v - o) in `Real`, with *magnitude the sum of
+// its terms' magnitudes (OrientationFilter(u, v, o) computes it alike).
+template <class Real>
+Real Cross(const Point2& o, const Point2& u, const Point2& v, Real* magnitude) {
+  const Real left = (Real{u.x} - o.x) * (Real{v.y} - o.y);
+  const Real right = (Real{u.y} - o.y) * (Real{v.x} - o.x);
+  *magnitude = std::abs(left) + std::abs(right);
+  return left - right;
+}
+
+// Whether a triangle's cross product `area` (of terms summing to
+// `magnitude`) is resolved in `Real`: its rounding error (a few epsilon
+// times the magnitude of its terms) is small against it, and the terms lie
+// in the range [min_magnitude, max_magnitude] where that error is relative.
+// Each difference and product rounds once: a relative error of a few
+// epsilon per term; 8 epsilon leaves a margin.
+template <class Real>
+bool AreaResolves(Real area, Real magnitude, Real min_magnitude,
+                  Real max_magnitude) {
+  return magnitude >= min_magnitude && magnitude <= max_magnitude &&
+         std::abs(area) > kRoundoff<Real> * magnitude;
+}
+
+// Barycentric coordinates into *result from the resolved `area` cross and
+// the crosses (q, b, c) and (q, c, a) with their magnitudes; false when
+// they are not within kTolerance: a needle's area is small against its
 // terms, so its coordinates need more precision than a plump triangle's.
 template <class Real>
-bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
-                   const Point2& q, Real min_magnitude, Real max_magnitude,
-                   std::array<double, 3>* result) {
-  auto cross = [](const Point2& o, const Point2& u, const Point2& v,
-                  Real* magnitude) {
-    const Real left = (Real{u.x} - o.x) * (Real{v.y} - o.y);
-    const Real right = (Real{u.y} - o.y) * (Real{v.x} - o.x);
-    *magnitude = std::abs(left) + std::abs(right);
-    return left - right;
-  };
-  Real magnitude = 0;
-  const Real area = cross(a, b, c, &magnitude);
-  // Each difference and product rounds once: a relative error of a few
-  // epsilon per term; 8 epsilon leaves a margin.
-  constexpr Real kRoundoff = 8 * std::numeric_limits<Real>::epsilon();
-  if (!(magnitude >= min_magnitude && magnitude <= max_magnitude &&
-        std::abs(area) > kRoundoff * magnitude)) {
-    return false;
-  }
-  Real magnitude_a = 0;
-  Real magnitude_b = 0;
-  const Real ba = cross(q, b, c, &magnitude_a) / area;
-  const Real bb = cross(q, c, a, &magnitude_b) / area;
+bool CoordinatesFromCrosses(Real area, Real magnitude, Real cross_a,
+                            Real magnitude_a, Real cross_b, Real magnitude_b,
+                            std::array<double, 3>* result) {
+  const Real ba = cross_a / area;
+  const Real bb = cross_b / area;
   // A coordinate n / area is off by (the error of n + |n / area| times
   // that of the area) / |area|; at most kTolerance.
   constexpr Real kTolerance = 0x1p-40;
-  const Real bound = kTolerance / kRoundoff * std::abs(area);
+  const Real bound = kTolerance / kRoundoff<Real> * std::abs(area);
   if (!(magnitude_a + std::abs(ba) * magnitude <= bound &&
         magnitude_b + std::abs(bb) * magnitude <= bound)) {
     return false;
@@ -75,6 +80,31 @@ bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
   }
   return true;
 }
+
+// Barycentric coordinates of q in (a, b, c) from cross products in `Real`,
+// into *result; false when Real cannot resolve them to within kTolerance
+// (AreaResolves, CoordinatesFromCrosses), or a coordinate is not finite.
+template <class Real>
+bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
+                   const Point2& q, Real min_magnitude, Real max_magnitude,
+                   std::array<double, 3>* result) {
+  Real magnitude = 0;
+  const Real area = Cross(a, b, c, &magnitude);
+  if (!AreaResolves(area, magnitude, min_magnitude, max_magnitude)) {
+    return false;
+  }
+  Real magnitude_a = 0;
+  Real magnitude_b = 0;
+  const Real cross_a = Cross(q, b, c, &magnitude_a);
+  const Real cross_b = Cross(q, c, a, &magnitude_b);
+  return CoordinatesFromCrosses(area, magnitude, cross_a, magnitude_a, cross_b,
+                                magnitude_b, result);
+}
+
+// Terms of at least 2^-960 round with an error far above the subnormal
+// range; at most 2^1020 leaves room for the sums.
+constexpr double kMinDoubleTerms = 0x1p-960;
+constexpr double kMaxDoubleTerms = 0x1p1020;
 
 }  // namespace
 
@@ -90,14 +120,32 @@ bool BarycentricIn(const Point2& a, const Point2& b, const Point2& c,
 std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
                                   const Point2& c, const Point2& q) {
   std::array<double, 3> result;
-  // Terms of at least 2^-960 round with an error far above the subnormal
-  // range; at most 2^1020 leaves room for the sums.
-  if (BarycentricIn<double>(a, b, c, q, 0x1p-960, 0x1p1020, &result) ||
+  if (BarycentricIn<double>(a, b, c, q, kMinDoubleTerms, kMaxDoubleTerms,
+                            &result) ||
       BarycentricIn<long double>(
           a, b, c, q, 0, std::numeric_limits<long double>::max(), &result)) {
     return result;
   }
   return ExactBarycentric(a, b, c, q);
+}
+
+TriangleBarycentric::TriangleBarycentric(const Point2& a, const Point2& b,
+                                         const Point2& c)
+    : a_(a), b_(b), c_(c) {
+  area_ = Cross(a, b, c, &magnitude_);
+  resolves_ = AreaResolves(area_, magnitude_, kMinDoubleTerms, kMaxDoubleTerms);
+}
+
+std::array<double, 3> TriangleBarycentric::Of(
+    const Point2& q, const OrientationFilter& bcq,
+    const OrientationFilter& caq) const {
+  std::array<double, 3> result;
+  if (resolves_ &&
+      CoordinatesFromCrosses(area_, magnitude_, bcq.determinant, bcq.terms,
+                             caq.determinant, caq.terms, &result)) {
+    return result;
+  }
+  return Barycentric(a_, b_, c_, q);
 }
 
 std::array<double, 3> EdgeBarycentric(const std::array<Point2, 3>& corners,

@@ -11,6 +11,7 @@
 #include <array>
 
 #include "locator/geometry.h"
+#include "server/core/cgal/orientation.h"
 
 namespace locator {
 
@@ -21,6 +22,31 @@ namespace locator {
 // GMP, which raises SIGFPE on it).
 std::array<double, 3> Barycentric(const Point2& a, const Point2& b,
                                   const Point2& c, const Point2& q);
+
+// Barycentric() for the many points of a scan that fall in one triangle:
+// the triangle's own cross product is computed once, and a point's two
+// come from the orientation filters that placed it there.
+//
+// Thread-safety: immutable after construction.
+class TriangleBarycentric {
+ public:
+  // Precondition: (a, b, c) is non-degenerate and finite.
+  TriangleBarycentric(const Point2& a, const Point2& b, const Point2& c);
+
+  // Barycentric(a, b, c, q), bit for bit, given OrientationFilter(b, c, q)
+  // and OrientationFilter(c, a, q): their determinants are the cross
+  // products Barycentric() computes in double, so where that resolves q
+  // nothing is computed again; elsewhere it calls Barycentric().
+  // Precondition: IsFinite(q).
+  std::array<double, 3> Of(const Point2& q, const OrientationFilter& bcq,
+                           const OrientationFilter& caq) const;
+
+ private:
+  Point2 a_, b_, c_;
+  double area_ = 0;        // the cross product (b - a) x (c - a)
+  double magnitude_ = 0;   // the magnitudes of its terms, summed
+  bool resolves_ = false;  // whether double resolves the area
+};
 
 // Barycentric coordinates of q on edge `edge` (opposite that corner) of the
 // triangle `corners`: 0 for the opposite corner, the other two renormalised

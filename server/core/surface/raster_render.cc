@@ -1,11 +1,16 @@
 #include "server/core/surface/raster_render.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "common/input_text.h"
 #include "common/status_macros.h"
+#include "server/core/cgal/orientation.h"
+#include "server/core/geometry/barycentric.h"
 #include "server/core/geometry/wide_math.h"
 #include "server/core/mesh/mesh_walk.h"
 #include "server/core/surface/surface_value.h"
@@ -72,30 +77,104 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   return ValueAt(mesh, f, q, how);
 }
 
-// Walks to each of `points` in scan order (see RenderPoints) and writes
-// `at(w, q)` for each point q the walk `w` reached, or `none` for a point
-// that is not finite.
-template <class T, class AtPoint>
-void ScanPoints(const ServingMesh& mesh, uint32_t hint,
-                std::span<const Point2> points, size_t row_length, T none,
+// The in-domain face a scan is in, loaded once for all the points it
+// holds: a scan's next point most often lies in its last point's face, and
+// is then placed by three orientation filters on corners already at hand,
+// with no walk.
+class ScanFace {
+ public:
+  explicit ScanFace(const ServingMesh& mesh) : mesh_(mesh) {}
+
+  // Loads face f if a walk answered kFace there and f is in the domain;
+  // forgets the face otherwise.
+  void Load(const MeshWalkOutcome& w) {
+    loaded_ = w.type == LocationType::kFace && mesh_.InDomain(w.face);
+    if (!loaded_) return;
+    face_ = w.face;
+    for (int i = 0; i < 3; ++i) corner_[i] = mesh_.CornerPoint(face_, i);
+    barycentric_.emplace(corner_[0], corner_[1], corner_[2]);
+  }
+
+  // Forgets the loaded face (a new row starts elsewhere).
+  void Forget() { loaded_ = false; }
+
+  // True when q is clearly inside the loaded face, as Walk() would answer
+  // (kFace there).
+  bool Holds(const Point2& q) {
+    if (!loaded_) return false;
+    edge_[0] = OrientationFilter(corner_[1], corner_[2], q);
+    edge_[1] = OrientationFilter(corner_[2], corner_[0], q);
+    edge_[2] = OrientationFilter(corner_[0], corner_[1], q);
+    return edge_[0].ClearlyLeft() & edge_[1].ClearlyLeft() &
+           edge_[2].ClearlyLeft();
+  }
+
+  // Where a walk to the point Holds() refused should start: across an
+  // edge of the loaded face that the point is clearly beyond, into the
+  // mesh, or `from` (a face was not loaded, or no such edge).
+  uint32_t WalkStart(uint32_t from) const {
+    if (!loaded_) return from;
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t next = mesh_.Neighbor(face_, i);
+      if (edge_[i].ClearlyRight() && !ServingMesh::IsHull(next)) return next;
+    }
+    return from;
+  }
+
+  uint32_t face() const { return face_; }
+  // The linear value at q, which Holds() placed here: LinearValue's, bit
+  // for bit. Precondition: the mesh has values.
+  double LinearValue(const Point2& q) const {
+    return mesh_.CornerValue(face_, barycentric_->Of(q, edge_[0], edge_[1]));
+  }
+
+ private:
+  const ServingMesh& mesh_;
+  bool loaded_ = false;
+  uint32_t face_ = 0;
+  std::array<Point2, 3> corner_;
+  std::optional<TriangleBarycentric> barycentric_;
+  // The filters of the point Holds() last tested against the edges
+  // opposite corners 0, 1 and 2.
+  std::array<OrientationFilter, 3> edge_ = {OrientationFilter({}, {}, {}),
+                                            OrientationFilter({}, {}, {}),
+                                            OrientationFilter({}, {}, {})};
+};
+
+// Places each of `count` points (point(i), in scan order: see RenderPoints)
+// and writes `inside(scan, q)` for a point q inside the face
+// `scan` holds, `at(w, q)` for one that the walk `w` reached, or `none` for
+// a point that is not finite.
+template <class T, class PointAt, class Inside, class AtPoint>
+void ScanPoints(const ServingMesh& mesh, uint32_t hint, size_t count,
+                PointAt point, size_t row_length, T none, Inside inside,
                 AtPoint at, T* out) {
   uint32_t row_start = hint;
   uint32_t face = hint;
   bool row_started = false;
-  for (size_t i = 0; i < points.size(); ++i) {
+  ScanFace scan(mesh);
+  for (size_t i = 0; i < count; ++i) {
     // A row's first point is next to the previous row's, not to that row's
     // last point a tile's width away.
     if (i % row_length == 0) {
       face = row_start;
       row_started = false;
+      scan.Forget();
     }
-    const Point2& q = points[i];
+    const Point2 q = point(i);
     if (!IsFinite(q)) {
       *out++ = none;
       continue;
     }
-    const MeshWalkOutcome w = Walk(mesh, face, q);
+    if (scan.Holds(q)) {
+      if (!row_started) row_start = face;
+      row_started = true;
+      *out++ = inside(scan, q);
+      continue;
+    }
+    const MeshWalkOutcome w = Walk(mesh, scan.WalkStart(face), q);
     face = w.face;
+    scan.Load(w);
     if (!row_started) row_start = face;
     row_started = true;
     *out++ = at(w, q);
@@ -121,45 +200,80 @@ FacetGradient GradientOf(const ServingMesh& mesh, uint32_t f) {
   return FacetGradient{-nx / nz, -ny / nz};
 }
 
-}  // namespace
-
-void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
-                uint32_t first_row, uint32_t rows, double* out) {
-  uint32_t row_start = hint;
-  for (uint32_t r = 0; r < rows; ++r) {
-    uint32_t face = row_start;
-    for (uint32_t col = 0; col < spec.width; ++col) {
-      const Point2 q = spec.CellCentre(col, first_row + r);
-      const MeshWalkOutcome w = Walk(mesh, face, q);
-      face = w.face;
-      if (col == 0) row_start = face;
-      *out++ = CellValue(mesh, spec.interpolation, spec.nodata, w, q);
-    }
-  }
-}
-
-void RenderPoints(const ServingMesh& mesh, uint32_t hint,
-                  std::span<const Point2> points, size_t row_length,
-                  Interpolation how, double nodata, double* out) {
+// Renders the value at `count` points (point(i), in scan order) into `out`
+// as RenderPoints describes.
+template <class PointAt>
+void RenderScan(const ServingMesh& mesh, uint32_t hint, size_t count,
+                PointAt point, size_t row_length, Interpolation how,
+                double nodata, double* out) {
+  const bool linear = how == Interpolation::kLinear && mesh.has_values();
   ScanPoints(
-      mesh, hint, points, row_length, nodata,
+      mesh, hint, count, point, row_length, nodata,
+      [&](const ScanFace& scan, const Point2& q) {
+        if (linear) return scan.LinearValue(q);
+        return CellValue(mesh, how, nodata,
+                         MeshWalkOutcome{.face = scan.face(),
+                                         .type = LocationType::kFace,
+                                         .feature = -1},
+                         q);
+      },
       [&](const MeshWalkOutcome& w, const Point2& q) {
         return CellValue(mesh, how, nodata, w, q);
       },
       out);
 }
 
+}  // namespace
+
+void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
+                uint32_t first_row, uint32_t rows, double* out) {
+  // A cell's x depends on its column alone and its y on its row alone.
+  std::vector<double> column_x(spec.width);
+  for (uint32_t col = 0; col < spec.width; ++col) {
+    column_x[col] = spec.CellCentre(col, first_row).x;
+  }
+  std::vector<double> row_y(rows);
+  for (uint32_t r = 0; r < rows; ++r) {
+    row_y[r] = spec.CellCentre(0, first_row + r).y;
+  }
+  RenderScan(
+      mesh, hint, size_t{rows} * spec.width,
+      [&](size_t i) {
+        return Point2{column_x[i % spec.width], row_y[i / spec.width]};
+      },
+      spec.width, spec.interpolation, spec.nodata, out);
+}
+
+void RenderPoints(const ServingMesh& mesh, uint32_t hint,
+                  std::span<const Point2> points, size_t row_length,
+                  Interpolation how, double nodata, double* out) {
+  RenderScan(
+      mesh, hint, points.size(), [&](size_t i) { return points[i]; },
+      row_length, how, nodata, out);
+}
+
 void RenderGradients(const ServingMesh& mesh, uint32_t hint,
                      std::span<const Point2> points, size_t row_length,
                      FacetGradient* out) {
+  const auto gradient = [&](uint32_t f) {
+    return mesh.has_values() ? GradientOf(mesh, f) : FacetGradient{};
+  };
+  // A face's gradient, computed once for the points it holds.
+  uint32_t last_face = ServingMesh::kNoFace;
+  FacetGradient last_gradient;
   ScanPoints(
-      mesh, hint, points, row_length, FacetGradient{},
+      mesh, hint, points.size(), [&](size_t i) { return points[i]; },
+      row_length, FacetGradient{},
+      [&](const ScanFace& scan, const Point2&) {
+        if (scan.face() != last_face) {
+          last_face = scan.face();
+          last_gradient = gradient(last_face);
+        }
+        return last_gradient;
+      },
       [&](const MeshWalkOutcome& w, const Point2&) {
         const uint32_t f = ClosedDomainFace(mesh, w);
-        if (!mesh.has_values() || f == ServingMesh::kNoFace) {
-          return FacetGradient{};
-        }
-        return GradientOf(mesh, f);
+        return f == ServingMesh::kNoFace ? FacetGradient{} : gradient(f);
       },
       out);
 }

@@ -1,5 +1,8 @@
 // RenderRows: fills rows of a raster (see raster.h) from the surface with
-// scanline coherence: each cell's walk starts from the previous cell's
+// scanline coherence: a cell clearly inside the previous cell's triangle
+// is placed by three orientation filters on corners already loaded, and
+// its value takes the cross products those filters computed (bit for bit
+// a locate's value); any other cell's walk starts from the previous cell's
 // triangle, and each row's first walk from the previous row's first
 // triangle, so a cell costs about one orientation test per triangle edge
 // the scan crosses. Exact like every walk: CGAL's orientation_2 decides the

@@ -1,7 +1,8 @@
 // Barycentric against exact rationals: every point's coordinates within
 // 2^-40, in plump triangles (double), needles (long double) and triangles
 // at the ends of the double range (exact), for points inside, on and
-// around the triangle.
+// around the triangle. TriangleBarycentric, fed the walk's orientation
+// filters, equals Barycentric bit for bit.
 
 #include "server/core/geometry/barycentric.h"
 
@@ -9,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 namespace locator {
@@ -55,6 +58,30 @@ TEST_P(BarycentricTest, EveryPointWithin2ToThe40) {
     for (int k = 0; k < 3; ++k) {
       ASSERT_NEAR(got[k], want[k], 0x1p-40)
           << t.name << ": point " << i << ", coordinate " << k;
+    }
+  }
+}
+
+// Bit for bit: a scan's value is then the one a locate gives.
+TEST_P(BarycentricTest, FromTheFiltersEqualsBarycentric) {
+  const TriangleCase& t = GetParam();
+  const TriangleBarycentric triangle(t.a, t.b, t.c);
+  std::mt19937_64 random(6);
+  std::uniform_real_distribution<double> weight(-0.5, 1.5);
+  for (int i = 0; i < 2000; ++i) {
+    const double u = weight(random);
+    const double v = weight(random);
+    const Point2 q{t.a.x * u + t.b.x * v + t.c.x * (1 - u - v),
+                   t.a.y * u + t.b.y * v + t.c.y * (1 - u - v)};
+    if (!IsFinite(q)) continue;
+    const std::array<double, 3> got = triangle.Of(
+        q, OrientationFilter(t.b, t.c, q), OrientationFilter(t.c, t.a, q));
+    const std::array<double, 3> want = Barycentric(t.a, t.b, t.c, q);
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_EQ(std::bit_cast<uint64_t>(got[k]),
+                std::bit_cast<uint64_t>(want[k]))
+          << t.name << ": point " << i << ", coordinate " << k << ": " << got[k]
+          << " against " << want[k];
     }
   }
 }

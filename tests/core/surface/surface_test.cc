@@ -185,6 +185,46 @@ TEST(RasterTest, PointsInRowsRenderAsTheRaster) {
   EXPECT_NE(no_rows.message().find("row_length"), std::string::npos);
 }
 
+// A scan places most points in the face it already holds, with no walk:
+// the value there is still a locate's, bit for bit (on a rough surface,
+// where any other rounding would show), and so is nodata outside.
+TEST(RasterTest, ScannedValuesAreLocateValuesBitForBit) {
+  Dataset rough = test::PlaneDataset(3000, 4);
+  std::mt19937_64 random(8);
+  std::uniform_real_distribution<double> height(-1e3, 1e3);
+  for (double& v : rough.values) v = height(random);
+  const auto engine = EngineFor(std::move(rough));
+  ASSERT_NE(engine, nullptr);
+  // Rows of 300 points, 20 to a triangle's width, from outside the hull
+  // across it, slightly slanted as a tile's rows are in a dataset's CRS.
+  std::vector<Point2> points;
+  for (int row = 0; row < 40; ++row) {
+    for (int col = 0; col < 300; ++col) {
+      points.push_back({-0.1 + 1.2 * col / 299.0 + 1e-3 * row,
+                        1.05 - row / 39.0 * 1.1 + 2e-4 * col});
+    }
+  }
+  std::vector<double> scanned(points.size());
+  ASSERT_TRUE(engine
+                  ->RenderPoints(points, 300, Interpolation::kLinear, kNodata,
+                                 scanned.data())
+                  .ok());
+  std::vector<LocateResult> located;
+  ASSERT_TRUE(engine->LocateBatch(points, &located).ok());
+  int inside = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (located[i].type != LocationType::kFace) {
+      if (located[i].type == LocationType::kOutsideConvexHull) {
+        ASSERT_EQ(scanned[i], kNodata) << "point " << i;
+      }
+      continue;
+    }
+    ++inside;
+    ASSERT_EQ(scanned[i], located[i].value) << "point " << i;
+  }
+  EXPECT_GT(inside, 8000);
+}
+
 TEST(RasterTest, BadSpecsAreInvalidArgument) {
   const auto engine = EngineFor(test::PlaneDataset(500, 3));
   ASSERT_NE(engine, nullptr);
