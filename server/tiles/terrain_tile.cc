@@ -26,60 +26,121 @@ constexpr int kBoxSamplesPerSide = 16;
 // Web Mercator's latitude limit, where the tile square ends.
 constexpr double kMaxLatitude = 85.0511287798066;
 
-// The approximate transform of a row of pixel centres, as GDAL's
-// GDALApproxTransform: the row's two ends and its middle are transformed
-// exactly; where the linear interpolation of the ends is within
-// `tolerance` (dataset units, in x and in y) of the exact middle, the
-// pixels between are interpolated, otherwise the span is split at the
-// middle and each half is treated alike. PROJ's map from Web Mercator to a
-// dataset's CRS is smooth, so over a span short enough to pass the test it
-// is close to a quadratic, whose distance from its chord peaks at the
-// middle: the middle's error bounds the span's. A span with a point PROJ
+// The approximate transform of a tile's pixel centres, GDAL's approximate
+// transformer (GDALApproxTransform, along a line) taken to two dimensions.
+// A block's four corners are transformed exactly, and so are its centre
+// and the middles of its sides; where the bilinear interpolation of the
+// corners is within `tolerance` (dataset units, in x and in y) of those
+// five, the block's other pixels are interpolated, otherwise it is split
+// into four and each quarter is treated alike. PROJ's map from Web
+// Mercator to a dataset's CRS is smooth, so over a block small enough to
+// pass it is close to a quadratic, whose distance from the bilinear
+// interpolant peaks at the middles checked. A block with a point PROJ
 // cannot map is transformed exactly, point by point.
-class RowTransform {
+class BlockTransform {
  public:
-  RowTransform(const gis::CrsTransformer& transformer, double tolerance)
-      : transformer_(transformer), tolerance_(tolerance) {}
+  // Maps the centres of columns `column_x` by rows `row_y` into `pixels`
+  // (row by row), each within `tolerance` of its exact transform.
+  BlockTransform(const gis::CrsTransformer& transformer,
+                 std::span<const double> column_x,
+                 std::span<const double> row_y, std::span<Point2> pixels)
+      : transformer_(transformer),
+        column_x_(column_x),
+        row_y_(row_y),
+        pixels_(pixels),
+        exact_(pixels.size(), 0) {}
 
-  // Maps row[first..last] in place; row[first] and row[last] are mapped
-  // already, the others are still in the request CRS.
-  void Span(std::span<Point2> row, size_t first, size_t last) const {
-    if (last - first < 2) return;
-    const size_t middle = first + (last - first) / 2;
-    const Point2 a = row[first], b = row[last];
-    Exact(row.subspan(middle, 1));
-    const Point2 m = row[middle];
-    if (!IsFinite(a) || !IsFinite(b) || !IsFinite(m)) {
-      Exact(row.subspan(first + 1, middle - first - 1));
-      Exact(row.subspan(middle + 1, last - middle - 1));
-      return;
+  // Maps the tile's four corners exactly; then its pixels are one pixel of
+  // the shorter of its top and bottom rows times `pixel_tolerance` apart
+  // from their exact transforms at most.
+  void Run(double pixel_tolerance) {
+    const size_t last_column = column_x_.size() - 1;
+    const size_t last_row = row_y_.size() - 1;
+    for (size_t row : {size_t{0}, last_row}) {
+      for (size_t col : {size_t{0}, last_column}) Exact(col, row);
     }
-    const Point2 chord = At(a, b, first, last, middle);
-    if (std::abs(chord.x - m.x) > tolerance_ ||
-        std::abs(chord.y - m.y) > tolerance_) {
-      Span(row, first, middle);
-      Span(row, middle, last);
-      return;
-    }
-    for (size_t i = first + 1; i < last; ++i) {
-      if (i != middle) row[i] = At(a, b, first, last, i);
-    }
-  }
-
-  void Exact(std::span<Point2> points) const {
-    transformer_.ToDatasetWhereDefined(points, /*known_inside=*/true);
+    const auto row_pixel = [&](size_t row) {
+      const Point2& a = At(0, row);
+      const Point2& b = At(last_column, row);
+      return std::hypot(b.x - a.x, b.y - a.y) /
+             static_cast<double>(last_column);
+    };
+    // NaN if a corner is undefined: then no block passes.
+    tolerance_ = pixel_tolerance * std::min(row_pixel(0), row_pixel(last_row));
+    Block(0, 0, last_column, last_row);
   }
 
  private:
-  // The point of index i on the chord from a (index first) to b (last).
-  static Point2 At(const Point2& a, const Point2& b, size_t first, size_t last,
-                   size_t i) {
-    const double t = static_cast<double>(i - first) / (last - first);
-    return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+  Point2& At(size_t col, size_t row) {
+    return pixels_[row * column_x_.size() + col];
+  }
+
+  void Exact(size_t col, size_t row) {
+    const size_t i = row * column_x_.size() + col;
+    if (exact_[i]) return;
+    pixels_[i] = Point2{column_x_[col], row_y_[row]};
+    transformer_.ToDatasetWhereDefined(pixels_.subspan(i, 1),
+                                       /*known_inside=*/true);
+    exact_[i] = 1;
+  }
+
+  // Maps block [c0, c1] x [r0, r1], whose corners are mapped exactly.
+  void Block(size_t c0, size_t r0, size_t c1, size_t r1) {
+    if (c1 - c0 < 2 && r1 - r0 < 2) return;  // corners only
+    const size_t cm = c0 + (c1 - c0) / 2;
+    const size_t rm = r0 + (r1 - r0) / 2;
+    const std::array<std::array<size_t, 2>, 5> checks = {
+        {{cm, r0}, {cm, r1}, {c0, rm}, {c1, rm}, {cm, rm}}};
+    bool passes = true;
+    for (const auto& [col, row] : checks) {
+      Exact(col, row);
+      const Point2 exact = At(col, row);
+      const Point2 guess = Bilinear(c0, r0, c1, r1, col, row);
+      passes = passes && IsFinite(exact) && IsFinite(guess) &&
+               std::abs(guess.x - exact.x) <= tolerance_ &&
+               std::abs(guess.y - exact.y) <= tolerance_;
+    }
+    if (passes) {
+      for (size_t row = r0; row <= r1; ++row) {
+        for (size_t col = c0; col <= c1; ++col) {
+          if (!exact_[row * column_x_.size() + col]) {
+            At(col, row) = Bilinear(c0, r0, c1, r1, col, row);
+          }
+        }
+      }
+      return;
+    }
+    // Halves only a side at least two pixels long.
+    const std::array<size_t, 3> cols = {c0, c1 - c0 < 2 ? c1 : cm, c1};
+    const std::array<size_t, 3> rows = {r0, r1 - r0 < 2 ? r1 : rm, r1};
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        if (cols[j] == cols[j + 1] || rows[i] == rows[i + 1]) continue;
+        Block(cols[j], rows[i], cols[j + 1], rows[i + 1]);
+      }
+    }
+  }
+
+  // The bilinear interpolation at (col, row) of the corners of block
+  // [c0, c1] x [r0, r1].
+  Point2 Bilinear(size_t c0, size_t r0, size_t c1, size_t r1, size_t col,
+                  size_t row) {
+    const double u = c1 > c0 ? static_cast<double>(col - c0) / (c1 - c0) : 0;
+    const double v = r1 > r0 ? static_cast<double>(row - r0) / (r1 - r0) : 0;
+    const Point2 &a = At(c0, r0), &b = At(c1, r0), &c = At(c0, r1),
+                 &d = At(c1, r1);
+    const auto mix = [&](double pa, double pb, double pc, double pd) {
+      return (1 - v) * (pa + u * (pb - pa)) + v * (pc + u * (pd - pc));
+    };
+    return Point2{mix(a.x, b.x, c.x, d.x), mix(a.y, b.y, c.y, d.y)};
   }
 
   const gis::CrsTransformer& transformer_;
-  const double tolerance_;
+  const std::span<const double> column_x_;
+  const std::span<const double> row_y_;
+  const std::span<Point2> pixels_;
+  std::vector<char> exact_;  // whether pixel i is mapped exactly
+  double tolerance_ = 0;
 };
 
 }  // namespace
@@ -129,18 +190,14 @@ Status TilePixelsInDatasetCrs(const Engine& engine, const TileAddress& tile,
                               std::vector<Point2>* pixels) {
   const RasterSpec raster = tile.Raster();
   // A centre's x depends on its column alone and its y on its row alone.
-  std::vector<double> column_x(raster.width);
+  std::vector<double> column_x(raster.width), row_y(raster.height);
   for (uint32_t col = 0; col < raster.width; ++col) {
     column_x[col] = raster.CellCentre(col, 0).x;
   }
-  pixels->resize(raster.cells());
-  Point2* pixel = pixels->data();
   for (uint32_t row = 0; row < raster.height; ++row) {
-    const double y = raster.CellCentre(0, row).y;
-    for (uint32_t col = 0; col < raster.width; ++col) {
-      *pixel++ = Point2{column_x[col], y};
-    }
+    row_y[row] = raster.CellCentre(0, row).y;
   }
+  pixels->resize(raster.cells());
   gis::CrsTransformer* transformer = nullptr;
   RETURN_IF_ERROR(gis::CrsTransformer::ForThread(
       std::string(kTileCrs), engine.dataset_info().crs, &transformer));
@@ -148,22 +205,15 @@ Status TilePixelsInDatasetCrs(const Engine& engine, const TileAddress& tile,
   // alone, so a tile inside the area of use needs no check per pixel; a
   // tile reaching outside is transformed exactly, pixel by pixel, with it.
   if (!transformer->SeparableBoxInAreaOfUse(tile.Box())) {
+    Point2* pixel = pixels->data();
+    for (const double y : row_y) {
+      for (const double x : column_x) *pixel++ = Point2{x, y};
+    }
     transformer->ToDatasetWhereDefined(*pixels);
     return Status::OK();
   }
-  const size_t last = raster.width - 1;
-  for (uint32_t row = 0; row < raster.height; ++row) {
-    const std::span<Point2> line(pixels->data() + size_t{row} * raster.width,
-                                 raster.width);
-    transformer->ToDatasetWhereDefined(line.first(1), /*known_inside=*/true);
-    transformer->ToDatasetWhereDefined(line.last(1), /*known_inside=*/true);
-    // The bound: kTilePositionTolerance of the row's pixel width in the
-    // dataset's CRS (NaN if an end is undefined: then no span passes).
-    const double pixel =
-        std::hypot(line[last].x - line[0].x, line[last].y - line[0].y) / last;
-    RowTransform(*transformer, kTilePositionTolerance * pixel)
-        .Span(line, 0, last);
-  }
+  BlockTransform(*transformer, column_x, row_y, *pixels)
+      .Run(kTilePositionTolerance);
   return Status::OK();
 }
 

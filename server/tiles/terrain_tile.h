@@ -47,18 +47,21 @@ StatusOr<BoundingBox> DatasetBoxIn(const Engine& engine, std::string_view crs);
 
 // How far a pixel centre given by TilePixelsInDatasetCrs may lie from its
 // exact transform, in x and in y, as a fraction of the tile's pixel width
-// in the dataset's CRS: 1/1000 of a pixel. A pixel's value is then off the
-// value at its exact centre by at most the facet's slope times that
-// (docs/http-api.md gives the figures per zoom and encoding).
+// in the dataset's CRS (along its top or bottom row, the shorter): 1/1000 of a
+// pixel. A pixel's value is then off the value at its exact centre by at most
+// the facet's slope times that (docs/http-api.md gives the figures per zoom and
+// encoding).
 inline constexpr double kTilePositionTolerance = 1e-3;
 
 // The pixel centres of `tile` in the dataset's CRS, row by row from the
 // north-west (TileAddress::Raster()'s cell centres transformed with
 // CrsTransformer::ToDatasetWhereDefined: NaN where undefined). A tile
 // inside the area of use of the dataset's CRS is transformed as GDAL's
-// approximate transformer does (exactly at each row's ends and at the
-// middles of its spans, linearly between where that is within
-// kTilePositionTolerance); a tile reaching outside, exactly pixel by pixel.
+// approximate transformer does, in two dimensions: exactly at a block's
+// corners and at the middles of its sides and of itself, bilinearly inside
+// where that is within kTilePositionTolerance (of a pixel of the tile's
+// shorter edge row), else in quarters; a tile reaching outside, exactly
+// pixel by pixel.
 // Errors are CrsTransformer::ForThread's.
 Status TilePixelsInDatasetCrs(const Engine& engine, const TileAddress& tile,
                               std::vector<Point2>* pixels);
