@@ -97,8 +97,10 @@ StatusOr<std::string> EncodePng(std::span<const uint8_t> pixels, uint32_t width,
   }
   compressed.resize(compressed_size);
 
-  // PNG's colour types: 6 is RGB with alpha, 4 grey with alpha.
-  const uint8_t color_type = color == PngColor::kRgba ? 6 : 4;
+  // PNG's colour types: 6 is RGB with alpha, 2 RGB, 4 grey with alpha.
+  const uint8_t color_type = color == PngColor::kRgba  ? 6
+                             : color == PngColor::kRgb ? 2
+                                                       : 4;
   std::string header;
   AppendBigEndian(width, &header);
   AppendBigEndian(height, &header);

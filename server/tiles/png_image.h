@@ -1,4 +1,4 @@
-// EncodePng: an 8-bit RGBA or grey-and-alpha image as a PNG file in
+// EncodePng: an 8-bit RGBA, RGB or grey-and-alpha image as a PNG file in
 // memory: the chunks written here, the image data deflated by libdeflate.
 // Compressed for speed (libdeflate's level 1, the Sub filter, which suits
 // smooth terrain), since a tile is made per request.
@@ -18,13 +18,14 @@
 
 namespace locator {
 
-// The colour of a pixel: red, green, blue and alpha (terrain), or grey and
-// alpha (shaded relief), a byte each.
-enum class PngColor { kRgba, kGrayAlpha };
+// The colour of a pixel: red, green, blue and alpha (terrain), the same
+// without alpha (terrain with no transparent pixel: a quarter fewer bytes
+// to deflate), or grey and alpha (shaded relief), a byte each.
+enum class PngColor { kRgba, kRgb, kGrayAlpha };
 
 // The number of bytes a pixel of `color` takes.
 constexpr size_t BytesPerPixel(PngColor color) {
-  return color == PngColor::kRgba ? 4 : 2;
+  return color == PngColor::kRgba ? 4 : color == PngColor::kRgb ? 3 : 2;
 }
 
 // The PNG of the `width` x `height` image `pixels` (BytesPerPixel(color)

@@ -36,9 +36,13 @@ double TerrainQuantum(TerrainEncoding encoding) {
 }
 
 std::array<uint8_t, 3> EncodeHeight(TerrainEncoding encoding, double height) {
-  const double steps = std::clamp(
-      std::nearbyint((height - Lowest(encoding)) / TerrainQuantum(encoding)),
-      0.0, kMaxSteps);
+  // Rounded to the nearest step (ties to even, as nearbyint) by adding and
+  // taking away 2^52, where a double's last bit is 1: a tile rounds every
+  // pixel, and nearbyint is a library call. Clamping first keeps the sum
+  // exact and gives what rounding first does, since the bounds are whole.
+  const double clamped = std::clamp(
+      (height - Lowest(encoding)) / TerrainQuantum(encoding), 0.0, kMaxSteps);
+  const double steps = (clamped + 0x1p52) - 0x1p52;
   const auto n = static_cast<uint32_t>(steps);
   return {static_cast<uint8_t>(n >> 16), static_cast<uint8_t>(n >> 8),
           static_cast<uint8_t>(n)};

@@ -101,13 +101,7 @@ class BlockTransform {
                std::abs(guess.y - exact.y) <= tolerance_;
     }
     if (passes) {
-      for (size_t row = r0; row <= r1; ++row) {
-        for (size_t col = c0; col <= c1; ++col) {
-          if (!exact_[row * column_x_.size() + col]) {
-            At(col, row) = Bilinear(c0, r0, c1, r1, col, row);
-          }
-        }
-      }
+      Fill(c0, r0, c1, r1);
       return;
     }
     // Halves only a side at least two pixels long.
@@ -127,12 +121,28 @@ class BlockTransform {
                   size_t row) {
     const double u = c1 > c0 ? static_cast<double>(col - c0) / (c1 - c0) : 0;
     const double v = r1 > r0 ? static_cast<double>(row - r0) / (r1 - r0) : 0;
-    const Point2 &a = At(c0, r0), &b = At(c1, r0), &c = At(c0, r1),
-                 &d = At(c1, r1);
-    const auto mix = [&](double pa, double pb, double pc, double pd) {
-      return (1 - v) * (pa + u * (pb - pa)) + v * (pc + u * (pd - pc));
-    };
-    return Point2{mix(a.x, b.x, c.x, d.x), mix(a.y, b.y, c.y, d.y)};
+    const Point2 left = Lerp(At(c0, r0), At(c0, r1), v);
+    return Lerp(left, Lerp(At(c1, r0), At(c1, r1), v), u);
+  }
+
+  // Sets the pixels of block [c0, c1] x [r0, r1] not mapped exactly to
+  // Bilinear(), row by row.
+  void Fill(size_t c0, size_t r0, size_t c1, size_t r1) {
+    const double width = static_cast<double>(c1 - c0);
+    for (size_t row = r0; row <= r1; ++row) {
+      const Point2 left = Bilinear(c0, r0, c1, r1, c0, row);
+      const Point2 right = Bilinear(c0, r0, c1, r1, c1, row);
+      const size_t first = row * column_x_.size();
+      for (size_t col = c0; col <= c1; ++col) {
+        if (exact_[first + col]) continue;
+        pixels_[first + col] =
+            Lerp(left, right, static_cast<double>(col - c0) / width);
+      }
+    }
+  }
+
+  static Point2 Lerp(const Point2& a, const Point2& b, double t) {
+    return Point2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
   }
 
   const gis::CrsTransformer& transformer_;
@@ -228,16 +238,21 @@ StatusOr<std::string> RenderTerrainTile(const Engine& engine,
   RETURN_IF_ERROR(engine.RenderPoints(
       pixels, TileAddress::kPixels, Interpolation::kLinear,
       std::numeric_limits<double>::quiet_NaN(), heights.data()));
-  std::vector<uint8_t> rgba(heights.size() * 4);
+  // NaN is the nodata: outside the hull, the domain or the CRS's area.
+  const auto nodata = [](double h) { return std::isnan(h); };
+  const PngColor color = std::any_of(heights.begin(), heights.end(), nodata)
+                             ? PngColor::kRgba
+                             : PngColor::kRgb;
+  const size_t pixel_bytes = BytesPerPixel(color);
+  std::vector<uint8_t> image(heights.size() * pixel_bytes);
   for (size_t i = 0; i < heights.size(); ++i) {
-    // NaN is the nodata: outside the hull, the domain or the CRS's area.
-    if (std::isnan(heights[i])) continue;  // stays transparent black
+    if (nodata(heights[i])) continue;  // stays transparent black
     const std::array<uint8_t, 3> rgb = EncodeHeight(encoding, heights[i]);
-    std::copy(rgb.begin(), rgb.end(), rgba.begin() + 4 * i);
-    rgba[4 * i + 3] = 255;
+    uint8_t* pixel = image.data() + pixel_bytes * i;
+    std::copy(rgb.begin(), rgb.end(), pixel);
+    if (color == PngColor::kRgba) pixel[3] = 255;
   }
-  return EncodePng(rgba, TileAddress::kPixels, TileAddress::kPixels,
-                   PngColor::kRgba);
+  return EncodePng(image, TileAddress::kPixels, TileAddress::kPixels, color);
 }
 
 StatusOr<std::string> TileJson(const Engine& engine, std::string_view name,

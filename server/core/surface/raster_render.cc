@@ -66,6 +66,11 @@ Status CheckRasterSpec(const RasterSpec& spec) {
 
 namespace {
 
+// The faces a scan steps by the filters alone from one point to the next
+// (ScanFace::Holds) before the exact walk takes over: a raster's next cell
+// is a few faces from its last at most zoom levels of a terrain's tiles.
+constexpr int kMaxScanSteps = 16;
+
 // The value at the cell centre q that the walk `w` located, or nodata
 // outside the hull or the domain (a centre on the domain's boundary edge or
 // vertex takes the in-domain side).
@@ -77,58 +82,71 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   return ValueAt(mesh, f, q, how);
 }
 
-// The in-domain face a scan is in, loaded once for all the points it
-// holds: a scan's next point most often lies in its last point's face, and
-// is then placed by three orientation filters on corners already at hand,
-// with no walk.
+// The faces in which a scan's points are
+// placed by orientation filters alone: the in-domain face that held the last
+// point, its corners loaded once for all the points it holds, and the faces
+// a point beyond it is clearly across, as ClearWalk steps. A scan's next
+// point most often lies in its last point's face or a few faces on, and is
+// then placed with no walk, and valued from the cross products that placed
+// it.
 class ScanFace {
  public:
   explicit ScanFace(const ServingMesh& mesh) : mesh_(mesh) {}
 
-  // Loads face f if a walk answered kFace there and f is in the domain;
-  // forgets the face otherwise.
+  // Loads the face a walk answered if that is kFace in the domain; forgets
+  // the face otherwise.
   void Load(const MeshWalkOutcome& w) {
     loaded_ = w.type == LocationType::kFace && mesh_.InDomain(w.face);
-    if (!loaded_) return;
-    face_ = w.face;
-    for (int i = 0; i < 3; ++i) corner_[i] = mesh_.CornerPoint(face_, i);
-    barycentric_.emplace(corner_[0], corner_[1], corner_[2]);
+    if (loaded_) LoadFace(w.face);
   }
 
   // Forgets the loaded face (a new row starts elsewhere).
   void Forget() { loaded_ = false; }
 
-  // True when q is clearly inside the loaded face, as Walk() would answer
-  // (kFace there).
-  bool Holds(const Point2& q) {
+  // True when a face holds q clearly inside, as Walk() would answer (kFace
+  // there): the loaded one, or one reached from it in at most `max_steps`
+  // steps, each across an edge that q is clearly beyond into an in-domain
+  // face (then loaded). False when none is loaded, a step would leave the
+  // hull or the domain, a test is undecided, or the steps run out; then
+  // face() is a good start for the exact walk.
+  bool Holds(const Point2& q, int max_steps) {
     if (!loaded_) return false;
-    edge_[0] = OrientationFilter(corner_[1], corner_[2], q);
-    edge_[1] = OrientationFilter(corner_[2], corner_[0], q);
-    edge_[2] = OrientationFilter(corner_[0], corner_[1], q);
-    return edge_[0].ClearlyLeft() & edge_[1].ClearlyLeft() &
-           edge_[2].ClearlyLeft();
-  }
-
-  // Where a walk to the point Holds() refused should start: across an
-  // edge of the loaded face that the point is clearly beyond, into the
-  // mesh, or `from` (a face was not loaded, or no such edge).
-  uint32_t WalkStart(uint32_t from) const {
-    if (!loaded_) return from;
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t next = mesh_.Neighbor(face_, i);
-      if (edge_[i].ClearlyRight() && !ServingMesh::IsHull(next)) return next;
+    for (int step = 0;; ++step) {
+      edge_[0] = OrientationFilter(corner_[1], corner_[2], q);
+      edge_[1] = OrientationFilter(corner_[2], corner_[0], q);
+      edge_[2] = OrientationFilter(corner_[0], corner_[1], q);
+      if (edge_[0].ClearlyLeft() & edge_[1].ClearlyLeft() &
+          edge_[2].ClearlyLeft()) {
+        return true;
+      }
+      if (step == max_steps) return false;
+      const int exit = edge_[0].ClearlyRight()   ? 0
+                       : edge_[1].ClearlyRight() ? 1
+                       : edge_[2].ClearlyRight() ? 2
+                                                 : -1;
+      if (exit < 0) return false;
+      const uint32_t next = mesh_.Neighbor(face_, exit);
+      if (ServingMesh::IsHull(next) || !mesh_.InDomain(next)) return false;
+      LoadFace(next);
     }
-    return from;
   }
 
+  bool loaded() const { return loaded_; }
   uint32_t face() const { return face_; }
-  // The linear value at q, which Holds() placed here: LinearValue's, bit
+  // The linear value at q, which Holds() placed here: ValueAt()'s, bit
   // for bit. Precondition: the mesh has values.
-  double LinearValue(const Point2& q) const {
+  double LinearValue(const Point2& q) {
+    if (!barycentric_) barycentric_.emplace(corner_[0], corner_[1], corner_[2]);
     return mesh_.CornerValue(face_, barycentric_->Of(q, edge_[0], edge_[1]));
   }
 
  private:
+  void LoadFace(uint32_t f) {
+    face_ = f;
+    for (int i = 0; i < 3; ++i) corner_[i] = mesh_.CornerPoint(f, i);
+    barycentric_.reset();  // made for the face's first value
+  }
+
   const ServingMesh& mesh_;
   bool loaded_ = false;
   uint32_t face_ = 0;
@@ -166,13 +184,16 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint, size_t count,
       *out++ = none;
       continue;
     }
-    if (scan.Holds(q)) {
+    if (scan.Holds(q, kMaxScanSteps)) {
+      face = scan.face();
       if (!row_started) row_start = face;
       row_started = true;
       *out++ = inside(scan, q);
       continue;
     }
-    const MeshWalkOutcome w = Walk(mesh, scan.WalkStart(face), q);
+    // From the last face the filters reached.
+    if (scan.loaded()) face = scan.face();
+    const MeshWalkOutcome w = Walk(mesh, face, q);
     face = w.face;
     scan.Load(w);
     if (!row_started) row_start = face;
@@ -209,7 +230,7 @@ void RenderScan(const ServingMesh& mesh, uint32_t hint, size_t count,
   const bool linear = how == Interpolation::kLinear && mesh.has_values();
   ScanPoints(
       mesh, hint, count, point, row_length, nodata,
-      [&](const ScanFace& scan, const Point2& q) {
+      [&](ScanFace& scan, const Point2& q) {
         if (linear) return scan.LinearValue(q);
         return CellValue(mesh, how, nodata,
                          MeshWalkOutcome{.face = scan.face(),
