@@ -118,6 +118,11 @@ void HotRegionTuner::MeasureCells() {
 }
 
 SubGrid HotRegionTuner::ShapeOf(size_t c, uint32_t r) const {
+  if (c < current_shapes_.size() && r == levels_[c]) return current_shapes_[c];
+  return NewShape(c, r);
+}
+
+SubGrid HotRegionTuner::NewShape(size_t c, uint32_t r) const {
   if (r <= 1) return SubGrid{};
   // Minimising q / columns + 1 / rows (the crossings of a walk within a
   // sub-cell, in units of the cell's height) at columns * rows = r * r gives
@@ -169,6 +174,10 @@ void HotRegionTuner::AddCounts(const std::vector<double>& fresh) {
 
 void HotRegionTuner::SetCurrentLevels(std::vector<uint32_t> levels) {
   levels_ = std::move(levels);
+  current_shapes_.resize(levels_.size());
+  for (size_t c = 0; c < levels_.size(); ++c) {
+    current_shapes_[c] = NewShape(c, levels_[c]);
+  }
   walk_terms_.resize(levels_.size());
   for (size_t c = 0; c < levels_.size(); ++c) {
     walk_terms_[c] = WalkTerm(c, levels_[c]);

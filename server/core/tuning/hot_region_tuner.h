@@ -190,11 +190,16 @@ class HotRegionTuner {
   // The walk from a start of cell c at level r: sqrt(P / S) for a sub-grid
   // of the ideal shape, times how much more this shape's walks cross.
   double WalkTerm(size_t c, uint32_t r) const;
-  // Makes `levels` the current table's levels (levels_, walk_terms_).
+  // Makes `levels` the current table's levels (levels_, current_shapes_,
+  // walk_terms_).
   void SetCurrentLevels(std::vector<uint32_t> levels);
   // The sub-grid that level r buys in coarse cell c: about r * r sub-cells
-  // shaped by the cell's crossing ratio (1 x 1 for r = 1).
+  // shaped by the cell's crossing ratio (1 x 1 for r = 1). A plan asks for
+  // every cell's several times, mostly at its current level: those come
+  // from current_shapes_.
   SubGrid ShapeOf(size_t c, uint32_t r) const;
+  // ShapeOf() computed.
+  SubGrid NewShape(size_t c, uint32_t r) const;
   std::vector<SubGrid> Shapes(const std::vector<uint32_t>& levels) const;
   // Fills points_, cbrt_points_ and crossing_ratio_ from the
   // triangulation's vertices and edges, once (a scan of all of them, or with
@@ -226,6 +231,7 @@ class HotRegionTuner {
   bool cells_measured_ = false;
   std::shared_ptr<const StartTable> table_;  // the last one built
   std::vector<uint32_t> levels_;             // the levels table_ was built at
+  std::vector<SubGrid> current_shapes_;      // NewShape(c, levels_[c])
   std::vector<double> walk_terms_;     // WalkTerm(c, levels_[c]) for every c
   std::vector<double> planned_share_;  // traffic shares table_ was planned for
   // The shares the last planning saw (it may have kept the table), and the
