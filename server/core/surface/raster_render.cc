@@ -3,16 +3,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "common/input_text.h"
 #include "common/status_macros.h"
-#include "server/core/cgal/orientation.h"
-#include "server/core/geometry/barycentric.h"
 #include "server/core/geometry/wide_math.h"
 #include "server/core/mesh/mesh_walk.h"
+#include "server/core/mesh/scan_face.h"
 #include "server/core/surface/surface_value.h"
 
 namespace locator {
@@ -66,11 +64,6 @@ Status CheckRasterSpec(const RasterSpec& spec) {
 
 namespace {
 
-// The faces a scan steps by the filters alone from one point to the next
-// (ScanFace::Holds) before the exact walk takes over: a raster's next cell
-// is a few faces from its last at most zoom levels of a terrain's tiles.
-constexpr int kMaxScanSteps = 16;
-
 // The value at the cell centre q that the walk `w` located, or nodata
 // outside the hull or the domain (a centre on the domain's boundary edge or
 // vertex takes the in-domain side).
@@ -81,83 +74,6 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   if (f == ServingMesh::kNoFace) return nodata;
   return ValueAt(mesh, f, q, how);
 }
-
-// The faces in which a scan's points are
-// placed by orientation filters alone: the in-domain face that held the last
-// point, its corners loaded once for all the points it holds, and the faces
-// a point beyond it is clearly across, as ClearWalk steps. A scan's next
-// point most often lies in its last point's face or a few faces on, and is
-// then placed with no walk, and valued from the cross products that placed
-// it.
-class ScanFace {
- public:
-  explicit ScanFace(const ServingMesh& mesh) : mesh_(mesh) {}
-
-  // Loads the face a walk answered if that is kFace in the domain; forgets
-  // the face otherwise.
-  void Load(const MeshWalkOutcome& w) {
-    loaded_ = w.type == LocationType::kFace && mesh_.InDomain(w.face);
-    if (loaded_) LoadFace(w.face);
-  }
-
-  // Forgets the loaded face (a new row starts elsewhere).
-  void Forget() { loaded_ = false; }
-
-  // True when a face holds q clearly inside, as Walk() would answer (kFace
-  // there): the loaded one, or one reached from it in at most `max_steps`
-  // steps, each across an edge that q is clearly beyond into an in-domain
-  // face (then loaded). False when none is loaded, a step would leave the
-  // hull or the domain, a test is undecided, or the steps run out; then
-  // face() is a good start for the exact walk.
-  bool Holds(const Point2& q, int max_steps) {
-    if (!loaded_) return false;
-    for (int step = 0;; ++step) {
-      edge_[0] = OrientationFilter(corner_[1], corner_[2], q);
-      edge_[1] = OrientationFilter(corner_[2], corner_[0], q);
-      edge_[2] = OrientationFilter(corner_[0], corner_[1], q);
-      if (edge_[0].ClearlyLeft() & edge_[1].ClearlyLeft() &
-          edge_[2].ClearlyLeft()) {
-        return true;
-      }
-      if (step == max_steps) return false;
-      const int exit = edge_[0].ClearlyRight()   ? 0
-                       : edge_[1].ClearlyRight() ? 1
-                       : edge_[2].ClearlyRight() ? 2
-                                                 : -1;
-      if (exit < 0) return false;
-      const uint32_t next = mesh_.Neighbor(face_, exit);
-      if (ServingMesh::IsHull(next) || !mesh_.InDomain(next)) return false;
-      LoadFace(next);
-    }
-  }
-
-  bool loaded() const { return loaded_; }
-  uint32_t face() const { return face_; }
-  // The linear value at q, which Holds() placed here: ValueAt()'s, bit
-  // for bit. Precondition: the mesh has values.
-  double LinearValue(const Point2& q) {
-    if (!barycentric_) barycentric_.emplace(corner_[0], corner_[1], corner_[2]);
-    return mesh_.CornerValue(face_, barycentric_->Of(q, edge_[0], edge_[1]));
-  }
-
- private:
-  void LoadFace(uint32_t f) {
-    face_ = f;
-    for (int i = 0; i < 3; ++i) corner_[i] = mesh_.CornerPoint(f, i);
-    barycentric_.reset();  // made for the face's first value
-  }
-
-  const ServingMesh& mesh_;
-  bool loaded_ = false;
-  uint32_t face_ = 0;
-  std::array<Point2, 3> corner_;
-  std::optional<TriangleBarycentric> barycentric_;
-  // The filters of the point Holds() last tested against the edges
-  // opposite corners 0, 1 and 2.
-  std::array<OrientationFilter, 3> edge_ = {OrientationFilter({}, {}, {}),
-                                            OrientationFilter({}, {}, {}),
-                                            OrientationFilter({}, {}, {})};
-};
 
 // Places each of `count` points (point(i), in scan order: see RenderPoints)
 // and writes `inside(scan, q)` for a point q inside the face
@@ -184,18 +100,15 @@ void ScanPoints(const ServingMesh& mesh, uint32_t hint, size_t count,
       *out++ = none;
       continue;
     }
-    if (scan.Holds(q, kMaxScanSteps)) {
+    if (scan.Holds(q)) {
       face = scan.face();
       if (!row_started) row_start = face;
       row_started = true;
       *out++ = inside(scan, q);
       continue;
     }
-    // From the last face the filters reached.
-    if (scan.loaded()) face = scan.face();
-    const MeshWalkOutcome w = Walk(mesh, face, q);
+    const MeshWalkOutcome w = scan.WalkTo(q, face);
     face = w.face;
-    scan.Load(w);
     if (!row_started) row_start = face;
     row_started = true;
     *out++ = at(w, q);

@@ -38,6 +38,7 @@ StartTable::Builder::Builder(const ServingMesh& mesh, const GridGeometry& grid,
       sub_grids_(std::move(sub_grids)),
       previous_(previous),
       table_(mesh, grid),
+      scan_(mesh),
       hint_(mesh.DefaultStart()) {}
 
 bool StartTable::Builder::Step(size_t max_units, size_t* units) {
@@ -81,12 +82,15 @@ bool StartTable::Builder::Step(size_t max_units, size_t* units) {
       // between reads a page per triangle, all of a mesh larger than RAM.
       const Point2 first = SubCellCentre(box, sub, 0, 0);
       hint_ = FaceNear(mesh_, mesh_.TriangleNear(first), first);
+      scan_.Forget();
     }
     for (; next_sub_ < sub.cells() && done < max_units; ++next_sub_, ++done) {
       const uint32_t sy = static_cast<uint32_t>(next_sub_ / sub.columns);
       const uint32_t j = static_cast<uint32_t>(next_sub_ % sub.columns);
       const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
-      hint_ = FaceNear(mesh_, hint_, SubCellCentre(box, sub, sx, sy));
+      const Point2 centre = SubCellCentre(box, sub, sx, sy);
+      hint_ =
+          scan_.Holds(centre) ? scan_.face() : scan_.WalkTo(centre, hint_).face;
       leaves_[size_t{sy} * sub.columns + sx] = hint_;
     }
     if (next_sub_ < sub.cells()) break;

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "locator/geometry.h"
+#include "server/core/mesh/scan_face.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tuning/query_histogram.h"
 
@@ -145,7 +146,8 @@ class StartTable {
 };
 
 // Builds the table StartTable(mesh, grid, sub_grids, previous) would, in steps
-// of a bounded number of work units: one unit per start located by a walk
+// of a bounded number of work units: one unit per start located (by the
+// filters along the scan of a cell's sub-cell centres, ScanFace, or a walk)
 // and per cell copied from `previous`.
 // Invariant: cells before the cursor (in serpentine order) are final.
 class StartTable::Builder {
@@ -167,6 +169,7 @@ class StartTable::Builder {
   const std::vector<SubGrid> sub_grids_;
   const StartTable* previous_;
   StartTable table_;
+  ScanFace scan_;  // along the sub-cell centres of the cell being filled
   Face hint_;
   size_t next_cell_ = 0;  // position in serpentine order
   size_t next_sub_ = 0;   // the same, within a refined cell being filled
