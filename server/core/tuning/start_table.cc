@@ -83,15 +83,28 @@ bool StartTable::Builder::Step(size_t max_units, size_t* units) {
       const Point2 first = SubCellCentre(box, sub, 0, 0);
       hint_ = FaceNear(mesh_, mesh_.TriangleNear(first), first);
       scan_.Forget();
+      // A centre's x depends on its column alone and its y on its row alone.
+      column_x_.resize(sub.columns);
+      for (uint32_t sx = 0; sx < sub.columns; ++sx) {
+        column_x_[sx] = SubCellCentre(box, sub, sx, 0).x;
+      }
+      row_y_.resize(sub.rows);
+      for (uint32_t sy = 0; sy < sub.rows; ++sy) {
+        row_y_[sy] = SubCellCentre(box, sub, 0, sy).y;
+      }
     }
+    uint32_t sy = static_cast<uint32_t>(next_sub_ / sub.columns);
+    uint32_t j = static_cast<uint32_t>(next_sub_ % sub.columns);
     for (; next_sub_ < sub.cells() && done < max_units; ++next_sub_, ++done) {
-      const uint32_t sy = static_cast<uint32_t>(next_sub_ / sub.columns);
-      const uint32_t j = static_cast<uint32_t>(next_sub_ % sub.columns);
       const uint32_t sx = (sy % 2 == 0) ? j : sub.columns - 1 - j;
-      const Point2 centre = SubCellCentre(box, sub, sx, sy);
+      const Point2 centre{column_x_[sx], row_y_[sy]};
       hint_ =
           scan_.Holds(centre) ? scan_.face() : scan_.WalkTo(centre, hint_).face;
       leaves_[size_t{sy} * sub.columns + sx] = hint_;
+      if (++j == sub.columns) {
+        j = 0;
+        ++sy;
+      }
     }
     if (next_sub_ < sub.cells()) break;
     cell.leaves = std::move(leaves_);  // leaves_ is null again

@@ -174,6 +174,9 @@ class StartTable::Builder {
   size_t next_cell_ = 0;  // position in serpentine order
   size_t next_sub_ = 0;   // the same, within a refined cell being filled
   std::shared_ptr<Face[]> leaves_;  // that cell's starts, or null
+  // The x of that cell's sub-cell centres by column, and their y by row.
+  std::vector<double> column_x_;
+  std::vector<double> row_y_;
 };
 
 }  // namespace locator
