@@ -8,10 +8,12 @@
 #ifndef LOCATOR_CORE_MESH_WALK_H_
 #define LOCATOR_CORE_MESH_WALK_H_
 
+#include <array>
 #include <cstdint>
 
 #include "locator/geometry.h"
 #include "locator/locate_result.h"
+#include "server/core/cgal/orientation.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/mesh/visibility_walk.h"
 
@@ -24,6 +26,29 @@ using MeshWalkOutcome = BasicWalkOutcome<uint32_t>;
 // (ClearWalk, up to 16 faces) while the filter decides, then by the exact
 // visibility walk from where that stopped. Precondition: IsFinite(q).
 MeshWalkOutcome Walk(const ServingMesh& mesh, uint32_t start, const Point2& q);
+
+// The orientation filters of q against the edges of a triangle (a, b, c),
+// counter-clockwise: edge[i] is the edge opposite corner i.
+struct FaceFilters {
+  FaceFilters(const Point2& a, const Point2& b, const Point2& c,
+              const Point2& q)
+      : edge{{{b, c, q}, {c, a, q}, {a, b, q}}} {}
+
+  // True only when q is in the triangle's interior.
+  bool ClearlyInside() const {
+    return edge[0].ClearlyLeft() & edge[1].ClearlyLeft() &
+           edge[2].ClearlyLeft();
+  }
+  // The first edge that q is clearly beyond (outside it), or -1.
+  int ClearExit() const {
+    return edge[0].ClearlyRight()   ? 0
+           : edge[1].ClearlyRight() ? 1
+           : edge[2].ClearlyRight() ? 2
+                                    : -1;
+  }
+
+  std::array<OrientationFilter, 3> edge;
+};
 
 // Walks from walk->face toward q by the orientation filter alone, for at
 // most `max_steps` steps, each across an edge that q is clearly beyond,
@@ -40,20 +65,15 @@ inline bool ClearWalk(const ServingMesh& mesh, const Point2& q, int max_steps,
   for (int step = 0;; ++step) {
     const uint32_t f = walk->face;
     ++walk->faces_visited;
-    const Point2& a = mesh.CornerPoint(f, 0);
-    const Point2& b = mesh.CornerPoint(f, 1);
-    const Point2& c = mesh.CornerPoint(f, 2);
-    const OrientationFilter edge[3] = {{b, c, q}, {c, a, q}, {a, b, q}};
-    if (edge[0].ClearlyLeft() & edge[1].ClearlyLeft() & edge[2].ClearlyLeft()) {
+    const FaceFilters filters(mesh.CornerPoint(f, 0), mesh.CornerPoint(f, 1),
+                              mesh.CornerPoint(f, 2), q);
+    if (filters.ClearlyInside()) {
       walk->type = LocationType::kFace;
       walk->feature = -1;
       return true;
     }
     if (step == max_steps) return false;
-    const int exit = edge[0].ClearlyRight()   ? 0
-                     : edge[1].ClearlyRight() ? 1
-                     : edge[2].ClearlyRight() ? 2
-                                              : -1;
+    const int exit = filters.ClearExit();
     if (exit < 0) return false;
     const uint32_t next = mesh.Neighbor(f, exit);
     if (ServingMesh::IsHull(next)) {

@@ -8,12 +8,10 @@
 #ifndef LOCATOR_CORE_MESH_SCAN_FACE_H_
 #define LOCATOR_CORE_MESH_SCAN_FACE_H_
 
-#include <array>
 #include <cstdint>
 #include <optional>
 
 #include "locator/geometry.h"
-#include "server/core/cgal/orientation.h"
 #include "server/core/geometry/barycentric.h"
 #include "server/core/mesh/mesh_walk.h"
 #include "server/core/mesh/serving_mesh.h"
@@ -53,18 +51,10 @@ class ScanFace {
   bool Holds(const Point2& q) {
     if (!loaded_) return false;
     for (int step = 0;; ++step) {
-      edge_[0] = OrientationFilter(corner_[1], corner_[2], q);
-      edge_[1] = OrientationFilter(corner_[2], corner_[0], q);
-      edge_[2] = OrientationFilter(corner_[0], corner_[1], q);
-      if (edge_[0].ClearlyLeft() & edge_[1].ClearlyLeft() &
-          edge_[2].ClearlyLeft()) {
-        return true;
-      }
+      filters_ = FaceFilters(corner_[0], corner_[1], corner_[2], q);
+      if (filters_.ClearlyInside()) return true;
       if (step == kMaxSteps) return false;
-      const int exit = edge_[0].ClearlyRight()   ? 0
-                       : edge_[1].ClearlyRight() ? 1
-                       : edge_[2].ClearlyRight() ? 2
-                                                 : -1;
+      const int exit = filters_.ClearExit();
       if (exit < 0) return false;
       const uint32_t next = mesh_.Neighbor(face_, exit);
       if (ServingMesh::IsHull(next) || !mesh_.InDomain(next)) return false;
@@ -86,7 +76,8 @@ class ScanFace {
   // for bit. Precondition: the mesh has values.
   double LinearValue(const Point2& q) {
     if (!barycentric_) barycentric_.emplace(corner_[0], corner_[1], corner_[2]);
-    return mesh_.CornerValue(face_, barycentric_->Of(q, edge_[0], edge_[1]));
+    return mesh_.CornerValue(
+        face_, barycentric_->Of(q, filters_.edge[0], filters_.edge[1]));
   }
 
  private:
@@ -101,11 +92,8 @@ class ScanFace {
   uint32_t face_ = 0;
   std::array<Point2, 3> corner_;
   std::optional<TriangleBarycentric> barycentric_;
-  // The filters of the point Holds() last tested against the edges
-  // opposite corners 0, 1 and 2.
-  std::array<OrientationFilter, 3> edge_ = {OrientationFilter({}, {}, {}),
-                                            OrientationFilter({}, {}, {}),
-                                            OrientationFilter({}, {}, {})};
+  // The filters of the point Holds() last tested.
+  FaceFilters filters_{{}, {}, {}, {}};
 };
 
 }  // namespace locator
