@@ -5,6 +5,13 @@
 // among it) while gRPC threads may still be finishing TLS work, a race that
 // ASAN caught as a double free in locator-load.
 //
+// OpenSSL is told not to clean up at exit (OPENSSL_INIT_NO_ATEXIT) before
+// gRPC first initialises it: a gRPC executor thread may still be finishing
+// TLS work when the process exits (seen under ASAN as a double free of an
+// OpenSSL thread's error state, in thread T7, after grpc_shutdown_blocking
+// returned), and the process's memory goes back to the system at exit
+// anyway.
+//
 // Declare one first thing in main(), so that every gRPC object the program
 // makes is destroyed before it. Thread-safety: one per process, on the main
 // thread.
@@ -13,12 +20,16 @@
 #define LOCATOR_COMMON_GRPC_LIFETIME_H_
 
 #include <grpc/grpc.h>
+#include <openssl/crypto.h>
 
 namespace locator {
 
 class GrpcLifetime {
  public:
-  GrpcLifetime() { grpc_init(); }
+  GrpcLifetime() {
+    OPENSSL_init_crypto(OPENSSL_INIT_NO_ATEXIT, nullptr);
+    grpc_init();
+  }
   ~GrpcLifetime() { grpc_shutdown_blocking(); }
 
   GrpcLifetime(const GrpcLifetime&) = delete;
