@@ -111,13 +111,16 @@ sanitized() {
   local reports="$PWD/$1/sanitizer-reports" status=0
   shift
   rm -rf "$reports" && mkdir -p "$reports" || return 1
-  ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_path=$reports/asan${ASAN_EXTRA:+:$ASAN_EXTRA}" \
-    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_path=$reports/ubsan" \
-    TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:log_path=$reports/tsan:suppressions=$PWD/tests/sanitizers/tsan.supp" \
+  ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:log_exe_name=1:log_path=$reports/asan${ASAN_EXTRA:+:$ASAN_EXTRA}" \
+    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_exe_name=1:log_path=$reports/ubsan" \
+    TSAN_OPTIONS="halt_on_error=1:log_exe_name=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:log_path=$reports/tsan:suppressions=$PWD/tests/sanitizers/tsan.supp" \
     "$@" || status=1
   if compgen -G "$reports/*" > /dev/null; then
-    echo "sanitizer reports in $reports:"
-    cat "$reports"/*
+    echo "sanitizer reports in $reports (named by program and pid):"
+    for report in "$reports"/*; do
+      echo "== ${report##*/}"
+      cat "$report"
+    done
     status=1
   fi
   return $status
