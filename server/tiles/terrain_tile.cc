@@ -39,8 +39,8 @@ constexpr double kMaxLatitude = 85.0511287798066;
 // cannot map is transformed exactly, point by point.
 class BlockTransform {
  public:
-  // Maps the centres of columns `column_x` by rows `row_y` into `pixels`
-  // (row by row), each within `tolerance` of its exact transform.
+  // Will map the centres of columns `column_x` by rows `row_y` (two or more
+  // of each) into `pixels`, row by row: see Run().
   BlockTransform(const gis::CrsTransformer& transformer,
                  std::span<const double> column_x,
                  std::span<const double> row_y, std::span<Point2> pixels)
@@ -116,11 +116,11 @@ class BlockTransform {
   }
 
   // The bilinear interpolation at (col, row) of the corners of block
-  // [c0, c1] x [r0, r1].
+  // [c0, c1] x [r0, r1] (c0 < c1, r0 < r1).
   Point2 Bilinear(size_t c0, size_t r0, size_t c1, size_t r1, size_t col,
                   size_t row) {
-    const double u = c1 > c0 ? static_cast<double>(col - c0) / (c1 - c0) : 0;
-    const double v = r1 > r0 ? static_cast<double>(row - r0) / (r1 - r0) : 0;
+    const double u = static_cast<double>(col - c0) / (c1 - c0);
+    const double v = static_cast<double>(row - r0) / (r1 - r0);
     const Point2 left = Lerp(At(c0, r0), At(c0, r1), v);
     return Lerp(left, Lerp(At(c1, r0), At(c1, r1), v), u);
   }

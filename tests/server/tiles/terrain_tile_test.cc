@@ -1,14 +1,14 @@
-// Terrain tiles of a TIN in UTM zone 33N: every pixel of a tile half over
-// the data decodes to the value LocateBatch gives at the pixel's centre
+// Terrain tiles of a TIN in UTM zone 33N: every pixel of a tile over the
+// data decodes to the value LocateBatch gives at the pixel's centre
 // (transformed exactly from EPSG:3857 by a CrsTransformer of the test's
 // own) within half the encoding's quantum (a quantum and a half on an
 // edge), plus the facet's slope times the distance from the renderer's
 // approximate centre, which is within kTilePositionTolerance of the exact
 // one; on facets of slope <= 1 that shift moves no value by half a quantum.
-// It is transparent exactly where LocateBatch finds no value. Tiles
-// far away or of the whole world are transparent where PROJ cannot go, a
-// dataset without a CRS or values gets none, and TileJSON names the right
-// zooms.
+// It is transparent exactly where LocateBatch finds no value, and a tile
+// wholly over the data is an RGB PNG. Tiles far away or of the whole world
+// are transparent where PROJ cannot go, a dataset without a CRS or values
+// gets none, and TileJSON names the right zooms.
 
 #include "server/tiles/terrain_tile.h"
 
@@ -36,7 +36,11 @@ using test::kUtm33;
 using test::MercatorUtmTransformer;
 using test::PixelCentresInUtm33;
 using test::Slope;
+using test::kSide;
+using test::kSouth;
+using test::kWest;
 using test::TileAtSouthWestCorner;
+using test::TileContaining;
 using test::UtmTerrain;
 
 using ::testing::HasSubstr;
@@ -54,8 +58,15 @@ Engine* TerrainTileTest::engine_ = nullptr;
 TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
   const TerrainEncoding encoding = GetParam();
   const double q = TerrainQuantum(encoding);
-  for (uint32_t z : {13u, 15u}) {
-    const TileAddress tile = TileAtSouthWestCorner(z);
+  // Two tiles partly over the data, so that both kinds of pixel are
+  // checked, and one wholly over it, written without an alpha channel.
+  const std::array<std::pair<TileAddress, bool>, 3> tiles = {
+      {{TileAtSouthWestCorner(13), false},
+       {TileAtSouthWestCorner(15), false},
+       {TileContaining(16, Point2{kWest + kSide / 2, kSouth + kSide / 2}),
+        true}}};
+  for (const auto& [tile, wholly_over_data] : tiles) {
+    const uint32_t z = tile.z;
     const StatusOr<std::string> png =
         RenderTerrainTile(*engine_, "utm", tile, encoding);
     ASSERT_TRUE(png.ok()) << png.status().ToString();
@@ -116,9 +127,17 @@ TEST_P(TerrainTileTest, PixelsAreLocateBatchValuesAtTheirCentres) {
           slope <= 1 && std::abs(at_rendered[i].value - r.value) >= 0.5 * q;
     }
     EXPECT_EQ(shifted_on_gentle_facets, 0u) << "z " << z;
-    // Partly over the data, so both kinds of pixel are checked.
-    EXPECT_GT(opaque, 1000u) << "z " << z;
-    EXPECT_LT(opaque, centres.size()) << "z " << z;
+    // The PNG's colour type (IHDR, byte 25): RGB (2) when no pixel is
+    // transparent, else RGBA (6).
+    ASSERT_GT(png->size(), 25u);
+    EXPECT_EQ(static_cast<uint8_t>((*png)[25]), wholly_over_data ? 2 : 6)
+        << "z " << z;
+    if (wholly_over_data) {
+      EXPECT_EQ(opaque, centres.size()) << "z " << z;
+    } else {
+      EXPECT_GT(opaque, 1000u) << "z " << z;
+      EXPECT_LT(opaque, centres.size()) << "z " << z;
+    }
   }
 }
 

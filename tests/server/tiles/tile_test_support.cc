@@ -74,15 +74,19 @@ std::vector<Point2> PixelCentresInUtm33(const TileAddress& tile) {
   return centres;
 }
 
-TileAddress TileAtSouthWestCorner(uint32_t z) {
+TileAddress TileContaining(uint32_t z, const Point2& utm) {
   const std::unique_ptr<gis::CrsTransformer> to_mercator =
       MercatorUtmTransformer();
-  std::vector<Point2> corner = {{kWest + 10, kSouth + 10}};
-  EXPECT_TRUE(to_mercator->ToRequest(corner).ok());
+  std::vector<Point2> at = {utm};
+  EXPECT_TRUE(to_mercator->ToRequest(at).ok());
   const double side = 2 * TileAddress::kHalfWorld / std::ldexp(1.0, z);
   return TileAddress{
-      z, static_cast<uint32_t>((corner[0].x + TileAddress::kHalfWorld) / side),
-      static_cast<uint32_t>((TileAddress::kHalfWorld - corner[0].y) / side)};
+      z, static_cast<uint32_t>((at[0].x + TileAddress::kHalfWorld) / side),
+      static_cast<uint32_t>((TileAddress::kHalfWorld - at[0].y) / side)};
+}
+
+TileAddress TileAtSouthWestCorner(uint32_t z) {
+  return TileContaining(z, Point2{kWest + 10, kSouth + 10});
 }
 
 }  // namespace locator::test

@@ -53,6 +53,9 @@ std::unique_ptr<gis::CrsTransformer> MercatorUtmTransformer();
 // kUtm33; a test failure if one cannot be transformed.
 std::vector<Point2> PixelCentresInUtm33(const TileAddress& tile);
 
+// The tile of zoom `z` holding the point `utm` (in kUtm33).
+TileAddress TileContaining(uint32_t z, const Point2& utm);
+
 // The tile of zoom `z` holding the terrain's south-west corner, so that it
 // is partly over the data.
 TileAddress TileAtSouthWestCorner(uint32_t z);
