@@ -34,10 +34,11 @@ struct FaceFilters {
               const Point2& q)
       : edge{{{b, c, q}, {c, a, q}, {a, b, q}}} {}
 
-  // True only when q is in the triangle's interior.
+  // True only when q is in the triangle's interior. (All three filters
+  // are read, without a branch between them.)
   bool ClearlyInside() const {
-    return edge[0].ClearlyLeft() & edge[1].ClearlyLeft() &
-           edge[2].ClearlyLeft();
+    return (int{edge[0].ClearlyLeft()} & int{edge[1].ClearlyLeft()} &
+            int{edge[2].ClearlyLeft()}) != 0;
   }
   // The first edge that q is clearly beyond (outside it), or -1.
   int ClearExit() const {
