@@ -80,7 +80,12 @@ void JsonApi::Handle(HttpRequest request, HttpReply reply) {
               HttpResponse response) { reply(std::move(response)); };
   const std::string_view path = request.path;
   if (path == kDatasetsPath) {
-    ServeListDatasets(request, std::move(reply));
+    ServeGet(request, std::nullopt, std::move(reply),
+             [this](const LocatorApp::Admission&) {
+               v1::ListDatasetsResponse response;
+               app_->ListDatasets(&response);
+               return JsonAnswer(response);
+             });
     return;
   }
   const std::string_view prefix = "/v1/datasets/";
@@ -112,46 +117,34 @@ void JsonApi::Handle(HttpRequest request, HttpReply reply) {
   std::string name(path.substr(prefix.size(), colon - prefix.size()));
   std::string method(path.substr(colon + 1));
   if (method == "topology") {
-    ServeTopology(request, name, std::move(reply));
+    ServeGet(request, name, std::move(reply),
+             [this](const LocatorApp::Admission& call) {
+               v1::GetTopologyResponse response;
+               app_->GetTopology(call, &response);
+               return JsonAnswer(response);
+             });
     return;
   }
   ServeDatasetMethod(std::move(request), std::move(name), std::move(method),
                      std::move(reply));
 }
 
-void JsonApi::ServeListDatasets(const HttpRequest& request, HttpReply reply) {
+void JsonApi::ServeGet(
+    const HttpRequest& request, std::optional<std::string_view> dataset,
+    HttpReply reply,
+    const std::function<HttpResponse(const LocatorApp::Admission&)>& answer) {
   if (request.method != "GET") {
     reply(MethodNotAllowed(request, "GET"));
     return;
   }
   // Held until the answer is made: the call counts as in flight for a drain.
-  const StatusOr<LocatorApp::Admission> call =
-      app_->Admit(request.Header("authorization"), AccessPolicy::Scope::kData,
-                  std::nullopt);
-  if (!call.ok()) {
-    reply(ApiError(call.status()));
-    return;
-  }
-  v1::ListDatasetsResponse response;
-  app_->ListDatasets(&response);
-  reply(JsonAnswer(response));
-}
-
-void JsonApi::ServeTopology(const HttpRequest& request, const std::string& name,
-                            HttpReply reply) {
-  if (request.method != "GET") {
-    reply(MethodNotAllowed(request, "GET"));
-    return;
-  }
   const StatusOr<LocatorApp::Admission> call = app_->Admit(
-      request.Header("authorization"), AccessPolicy::Scope::kData, name);
+      request.Header("authorization"), AccessPolicy::Scope::kData, dataset);
   if (!call.ok()) {
     reply(ApiError(call.status()));
     return;
   }
-  v1::GetTopologyResponse response;
-  app_->GetTopology(*call, &response);
-  reply(JsonAnswer(response));
+  reply(answer(*call));
 }
 
 void JsonApi::ServeDatasetMethod(HttpRequest request, std::string name,

@@ -156,11 +156,14 @@ class JsonApi {
   // POST /v1/datasets/{name}:{method}.
   void ServeDatasetMethod(HttpRequest request, std::string name,
                           std::string method, HttpReply reply);
-  // GET /v1/datasets.
-  void ServeListDatasets(const HttpRequest& request, HttpReply reply);
-  // GET /v1/datasets/{name}:topology (GetTopology).
-  void ServeTopology(const HttpRequest& request, const std::string& name,
-                     HttpReply reply);
+  // A GET answered by `answer` once the call is admitted for `dataset`
+  // (nullopt: a call about no single dataset): GET /v1/datasets and
+  // GET /v1/datasets/{name}:topology. 405 for another method, the
+  // admission's refusal as its status.
+  void ServeGet(
+      const HttpRequest& request, std::optional<std::string_view> dataset,
+      HttpReply reply,
+      const std::function<HttpResponse(const LocatorApp::Admission&)>& answer);
   // GET /v1/datasets/{name}/{rest}: the terrain tiles and their TileJSON,
   // and the hillshade tiles (tile_api.cc).
   void ServeTiles(HttpRequest request, std::string name, std::string rest,
