@@ -1,5 +1,6 @@
 #include "server/core/surface/raster_render.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -75,43 +76,41 @@ double CellValue(const ServingMesh& mesh, Interpolation how, double nodata,
   return ValueAt(mesh, f, q, how);
 }
 
-// Places each of `count` points (point(i), in scan order: see RenderPoints)
-// and writes `inside(scan, q)` for a point q inside the face
-// `scan` holds, `at(w, q)` for one that the walk `w` reached, or `none` for
-// a point that is not finite.
+// Places each of `count` points in rows of `row_length` (the last may be
+// shorter; point(row, column), in scan order: see RenderPoints) and writes
+// `inside(scan, q)` for a point q inside the face `scan` holds, `at(w, q)`
+// for one that the walk `w` reached, or `none` for a point that is not
+// finite.
 template <class T, class PointAt, class Inside, class AtPoint>
 void ScanPoints(const ServingMesh& mesh, uint32_t hint, size_t count,
                 PointAt point, size_t row_length, T none, Inside inside,
                 AtPoint at, T* out) {
   uint32_t row_start = hint;
-  uint32_t face = hint;
-  bool row_started = false;
   ScanFace scan(mesh);
-  for (size_t i = 0; i < count; ++i) {
+  for (size_t row = 0, first = 0; first < count; ++row, first += row_length) {
     // A row's first point is next to the previous row's, not to that row's
     // last point a tile's width away.
-    if (i % row_length == 0) {
-      face = row_start;
-      row_started = false;
-      scan.Forget();
-    }
-    const Point2 q = point(i);
-    if (!IsFinite(q)) {
-      *out++ = none;
-      continue;
-    }
-    if (scan.Holds(q)) {
-      face = scan.face();
+    uint32_t face = row_start;
+    bool row_started = false;
+    scan.Forget();
+    const size_t columns = std::min(row_length, count - first);
+    for (size_t column = 0; column < columns; ++column) {
+      const Point2 q = point(row, column);
+      if (!IsFinite(q)) {
+        *out++ = none;
+        continue;
+      }
+      if (scan.Holds(q)) {
+        face = scan.face();
+        *out++ = inside(scan, q);
+      } else {
+        const MeshWalkOutcome w = scan.WalkTo(q, face);
+        face = w.face;
+        *out++ = at(w, q);
+      }
       if (!row_started) row_start = face;
       row_started = true;
-      *out++ = inside(scan, q);
-      continue;
     }
-    const MeshWalkOutcome w = scan.WalkTo(q, face);
-    face = w.face;
-    if (!row_started) row_start = face;
-    row_started = true;
-    *out++ = at(w, q);
   }
 }
 
@@ -134,8 +133,8 @@ FacetGradient GradientOf(const ServingMesh& mesh, uint32_t f) {
   return FacetGradient{-nx / nz, -ny / nz};
 }
 
-// Renders the value at `count` points (point(i), in scan order) into `out`
-// as RenderPoints describes.
+// Renders the value at `count` points (point(row, column), in scan order)
+// into `out` as RenderPoints describes.
 template <class PointAt>
 void RenderScan(const ServingMesh& mesh, uint32_t hint, size_t count,
                 PointAt point, size_t row_length, Interpolation how,
@@ -172,8 +171,8 @@ void RenderRows(const ServingMesh& mesh, uint32_t hint, const RasterSpec& spec,
   }
   RenderScan(
       mesh, hint, size_t{rows} * spec.width,
-      [&](size_t i) {
-        return Point2{column_x[i % spec.width], row_y[i / spec.width]};
+      [&](size_t row, size_t column) {
+        return Point2{column_x[column], row_y[row]};
       },
       spec.width, spec.interpolation, spec.nodata, out);
 }
@@ -182,7 +181,10 @@ void RenderPoints(const ServingMesh& mesh, uint32_t hint,
                   std::span<const Point2> points, size_t row_length,
                   Interpolation how, double nodata, double* out) {
   RenderScan(
-      mesh, hint, points.size(), [&](size_t i) { return points[i]; },
+      mesh, hint, points.size(),
+      [&](size_t row, size_t column) {
+        return points[row * row_length + column];
+      },
       row_length, how, nodata, out);
 }
 
@@ -196,7 +198,10 @@ void RenderGradients(const ServingMesh& mesh, uint32_t hint,
   uint32_t last_face = ServingMesh::kNoFace;
   FacetGradient last_gradient;
   ScanPoints(
-      mesh, hint, points.size(), [&](size_t i) { return points[i]; },
+      mesh, hint, points.size(),
+      [&](size_t row, size_t column) {
+        return points[row * row_length + column];
+      },
       row_length, FacetGradient{},
       [&](const ScanFace& scan, const Point2&) {
         if (scan.face() != last_face) {
