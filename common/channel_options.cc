@@ -5,8 +5,6 @@
 #include <utility>
 #include <vector>
 
-#include "common/credential_files.h"
-
 namespace locator {
 namespace {
 
@@ -113,48 +111,6 @@ std::shared_ptr<grpc::Channel> CreateLocatorChannel(
   }
   return grpc::experimental::CreateCustomChannelWithInterceptors(
       options.target, Credentials(security), args, std::move(interceptors));
-}
-
-void AddChannelSecurityFlags(ChannelSecurityFlags* security_flags,
-                             FlagSet* flags) {
-  ChannelSecurityFlags& f = *security_flags;
-  flags->Add("token-file", flag::Text(&f.token_file).Shape("FILE"),
-             "send this file's token as 'authorization: Bearer <token>' on "
-             "every call");
-  flags->Add("tls", flag::Switch(&f.tls),
-             "speak TLS (implied by the other --tls flags); without --tls-ca, "
-             "trust the system's roots");
-  flags->Add("tls-ca", flag::Text(&f.tls_ca).Shape("FILE"),
-             "trust servers whose certificate this PEM CA signed");
-  flags->Add("tls-cert", flag::Text(&f.tls_cert).Shape("FILE"),
-             "mutual TLS: present this PEM certificate chain (needs "
-             "--tls-key)");
-  flags->Add("tls-key", flag::Text(&f.tls_key).Shape("FILE"),
-             "PEM private key of --tls-cert (unencrypted)");
-  flags->Add("tls-server-name", flag::Text(&f.tls_server_name).Shape("NAME"),
-             "check the server's certificate against this name instead of the "
-             "target's host");
-}
-
-Status LoadChannelSecurity(const ChannelSecurityFlags& flags,
-                           ChannelSecurity* security) {
-  *security = ChannelSecurity();
-  security->tls = flags.tls || !flags.tls_ca.empty() ||
-                  !flags.tls_cert.empty() || !flags.tls_server_name.empty();
-  security->server_name = flags.tls_server_name;
-  KeyPairPem pair;
-  Status status = ReadKeyPairFiles(flags.tls_cert, flags.tls_key, &pair);
-  security->cert_chain_pem = std::move(pair.cert_chain);
-  security->private_key_pem = std::move(pair.private_key);
-  if (status.ok() && !flags.token_file.empty()) {
-    status =
-        ReadTokenFile("token-file", flags.token_file, &security->bearer_token);
-  }
-  if (status.ok() && !flags.tls_ca.empty()) {
-    status = ReadPemFile("tls-ca", flags.tls_ca, PemKind::kCertificates,
-                         &security->root_pem);
-  }
-  return status;
 }
 
 }  // namespace locator

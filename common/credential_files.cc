@@ -119,17 +119,20 @@ Status ReadPemFile(std::string_view flag, const std::string& path, PemKind kind,
   return Status::OK();
 }
 
-Status ReadKeyPairFiles(const std::string& cert_path,
+Status ReadKeyPairFiles(std::string_view flag_prefix,
+                        const std::string& cert_path,
                         const std::string& key_path, KeyPairPem* pair) {
+  const std::string cert_flag = std::string(flag_prefix) + "tls-cert";
+  const std::string key_flag = std::string(flag_prefix) + "tls-key";
   if (cert_path.empty() != key_path.empty()) {
-    return Status::InvalidArgument(
-        "--tls-cert and --tls-key go together: give both or neither");
+    return Status::InvalidArgument("--" + cert_flag + " and --" + key_flag +
+                                   " go together: give both or neither");
   }
   if (cert_path.empty()) return Status::OK();
-  Status status = ReadPemFile("tls-cert", cert_path, PemKind::kCertificates,
+  Status status = ReadPemFile(cert_flag, cert_path, PemKind::kCertificates,
                               &pair->cert_chain);
   if (status.ok()) {
-    status = ReadPemFile("tls-key", key_path, PemKind::kPrivateKey,
+    status = ReadPemFile(key_flag, key_path, PemKind::kPrivateKey,
                          &pair->private_key);
   }
   if (!status.ok()) return status;
@@ -139,10 +142,10 @@ Status ReadKeyPairFiles(const std::string& cert_path,
                        X509_check_private_key(cert.get(), key.get()) == 1;
   ERR_clear_error();
   if (matches) return Status::OK();
-  return Status::InvalidArgument(
-      "--tls-key '" + key_path +
-      "' is not the private key of the first certificate in --tls-cert '" +
-      cert_path + "'");
+  return Status::InvalidArgument("--" + key_flag + " '" + key_path +
+                                 "' is not the private key of the first "
+                                 "certificate in --" +
+                                 cert_flag + " '" + cert_path + "'");
 }
 
 }  // namespace locator

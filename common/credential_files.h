@@ -42,10 +42,11 @@ struct KeyPairPem {
   std::string private_key;
 };
 
-// Reads --tls-cert and --tls-key (`cert_path`, `key_path`): both or neither
-// must be given (neither leaves `pair` empty), and the key must be the
-// private key of the chain's first certificate.
-Status ReadKeyPairFiles(const std::string& cert_path,
+// Reads --<flag_prefix>tls-cert and --<flag_prefix>tls-key (`cert_path`,
+// `key_path`): both or neither must be given (neither leaves `pair` empty),
+// and the key must be the private key of the chain's first certificate.
+Status ReadKeyPairFiles(std::string_view flag_prefix,
+                        const std::string& cert_path,
                         const std::string& key_path, KeyPairPem* pair);
 
 }  // namespace locator

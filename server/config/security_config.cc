@@ -72,7 +72,7 @@ Status ReadTransportFiles(const TransportFiles& files,
         "--tls-client-ca needs --tls-cert and --tls-key");
   }
   KeyPairPem pair;
-  Status status = ReadKeyPairFiles(files.tls_cert, files.tls_key, &pair);
+  Status status = ReadKeyPairFiles("", files.tls_cert, files.tls_key, &pair);
   if (!status.ok()) return status;
   tls.cert_chain_pem = std::move(pair.cert_chain);
   tls.private_key_pem = std::move(pair.private_key);

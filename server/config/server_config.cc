@@ -118,8 +118,17 @@ Status ParseListenAddress(std::string_view text, std::string* host, int* port) {
 
 namespace {
 
-// --tiles needs a tile-set dataset to select from, --route its --shards.
-Status CheckShardFlags(const ServerConfig& config) {
+// --tiles needs a tile-set dataset to select from, --route its --shards;
+// the --shard-tls flags are for --route.
+Status CheckShardFlags(const ServerConfig& config,
+                       const ChannelSecurityFlags& shard_tls) {
+  const bool any_shard_tls = shard_tls.tls || !shard_tls.tls_ca.empty() ||
+                             !shard_tls.tls_cert.empty() ||
+                             !shard_tls.tls_key.empty() ||
+                             !shard_tls.tls_server_name.empty();
+  if (!config.route && any_shard_tls) {
+    return Status::InvalidArgument("--shard-tls flags are for --route");
+  }
   if (!config.tiles.empty()) {
     RETURN_IF_ERROR(ShardTiles::CheckSelector(config.tiles));
     const bool any_tile_set = std::any_of(
@@ -181,6 +190,8 @@ Status ParseServerConfig(int argc, const char* const argv[],
   flags.Add("shards", flag::Texts(&config->shards).Shape("TARGET,..."),
             "with --route: the gRPC targets of the shards, one per shard "
             "(a target may resolve to several replicas: dns:///NAME:PORT)");
+  ChannelSecurityFlags shard_tls;
+  AddChannelTlsFlags("shard-", &shard_tls, &flags);
   AddServingFlags(&config->serving, &transport_files, &flags);
   AddEngineFlags(config, &flags);
   AddHttpFlags(config, &flags);
@@ -199,7 +210,10 @@ Status ParseServerConfig(int argc, const char* const argv[],
       status = FlagError("reload-dir", config->reload_dir, "not a directory");
     }
   }
-  if (status.ok()) status = CheckShardFlags(*config);
+  if (status.ok()) status = CheckShardFlags(*config, shard_tls);
+  if (status.ok()) {
+    status = LoadChannelSecurity(shard_tls, &config->shard_security, "shard-");
+  }
   if (status.ok()) status = CheckEngineFlags(*config);
   if (status.ok()) status = CheckHttpFlags(*config);
   if (status.ok()) {

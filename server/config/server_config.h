@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/channel_security.h"
 #include "locator/dataset_sources.h"
 #include "locator/engine.h"
 #include "locator/status.h"
@@ -115,6 +116,10 @@ struct ServerConfig {
   // --shards TARGET,...: the gRPC targets of the shards a router forwards
   // to, one per shard.
   std::vector<std::string> shards;
+  // --shard-tls, --shard-tls-ca, --shard-tls-cert, --shard-tls-key,
+  // --shard-tls-server-name: how a router's channels to its shards are
+  // secured (plaintext by default). A caller's token goes on as it came.
+  ChannelSecurity shard_security;
   // --log-level: the least severe log lines written (error, warning, info,
   // debug).
   LogLevel log_level = LogLevel::kInfo;

@@ -25,12 +25,14 @@ constexpr std::chrono::seconds kTopologyDeadline{10};
 
 void RunRouter(std::string_view program, const ServerConfig& config) {
   // Replicas behind one target share its calls; a call that never reached
-  // a live one is retried (UNAVAILABLE only: it did not run).
+  // a live one is retried (UNAVAILABLE only: it did not run). TLS as the
+  // --shard-tls flags say.
   ChannelOptions channel;
   channel.max_message_bytes = static_cast<int>(std::min<size_t>(
       config.serving.max_message_bytes, std::numeric_limits<int>::max()));
   channel.retry_unavailable = true;
   channel.balance_addresses = true;
+  channel.security = config.shard_security;
   ShardTopology topology(config.shards, channel, kTopologyDeadline);
   ShardRouter router(&topology, std::max<size_t>(2, config.serving.threads),
                      config.serving.max_batch_points);

@@ -105,10 +105,12 @@ std::vector<std::string> TestPki::ServerFlags(bool mutual) const {
   return flags;
 }
 
-std::vector<std::string> TestPki::ClientFlags(bool client_cert) const {
-  std::vector<std::string> flags = {"--tls-ca", Path("ca.crt")};
+std::vector<std::string> TestPki::ClientFlags(bool client_cert,
+                                              const std::string& prefix) const {
+  const std::string tls = "--" + prefix + "tls";
+  std::vector<std::string> flags = {tls + "-ca", Path("ca.crt")};
   if (client_cert) {
-    flags.insert(flags.end(), {"--tls-cert", Path("client.crt"), "--tls-key",
+    flags.insert(flags.end(), {tls + "-cert", Path("client.crt"), tls + "-key",
                                Path("client.key")});
   }
   return flags;

@@ -39,8 +39,10 @@ class TestPki {
   // The credentials of a client that trusts the CA and, with
   // `client_cert`, presents the client certificate.
   ChannelSecurity ClientSecurity(bool client_cert) const;
-  // The same as `locator` / `locator-load` flags.
-  std::vector<std::string> ClientFlags(bool client_cert) const;
+  // The same as `locator` / `locator-load` flags, or with `prefix` as a
+  // router's to its shards ("shard-": --shard-tls-ca, ...).
+  std::vector<std::string> ClientFlags(bool client_cert,
+                                       const std::string& prefix = "") const;
 
  private:
   explicit TestPki(std::string dir) : dir_(std::move(dir)) {}

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace locator {
@@ -152,6 +153,8 @@ TEST(ServerConfigTest, HelpListsTheFlags) {
         "--max-profile-samples", "--log-level error|warning|info|debug"}) {
     EXPECT_THAT(help, HasSubstr(flag));
   }
+  EXPECT_THAT(help, HasSubstr("--shard-tls-ca FILE"));
+  EXPECT_THAT(help, HasSubstr("--shard-tls-server-name NAME"));
 }
 
 TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
@@ -216,6 +219,31 @@ TEST(ServerConfigTest, BadValuesFailNamingTheFlag) {
     const Status status = Parse(args, &config);
     EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << args[0];
     EXPECT_THAT(status.message(), HasSubstr(args[0]));
+  }
+}
+
+TEST(ServerConfigTest, ShardTlsFlagsAreARoutersAndNameTheirFiles) {
+  ServerConfig config;
+  ASSERT_TRUE(Parse({"--route", "--shards", "a:1,b:2",
+                     "--shard-tls-server-name", "shards.example"},
+                    &config)
+                  .ok());
+  EXPECT_TRUE(config.shard_security.tls);
+  EXPECT_EQ(config.shard_security.server_name, "shards.example");
+  ASSERT_TRUE(Parse({"--route", "--shards", "a:1"}, &config).ok());
+  EXPECT_FALSE(config.shard_security.tls);
+
+  const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+      {{"--shard-tls"}, "--shard-tls flags are for --route"},
+      {{"--route", "--shards", "a:1", "--shard-tls-ca", "/no/such/ca.pem"},
+       "--shard-tls-ca '/no/such/ca.pem'"},
+      {{"--route", "--shards", "a:1", "--shard-tls-cert", "/no/such/c.pem"},
+       "--shard-tls-cert and --shard-tls-key go together"},
+  };
+  for (const auto& [args, message] : bad) {
+    const Status status = Parse(args, &config);
+    EXPECT_EQ(status.code(), Status::Code::kInvalidArgument) << message;
+    EXPECT_THAT(status.message(), HasSubstr(message));
   }
 }
 

@@ -15,12 +15,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "client/locator_client.h"
@@ -32,6 +34,7 @@
 #include "tests/server/http/http_test_client.h"
 #include "tests/server/main/e2e_support.h"
 #include "tests/testing/run_binary.h"
+#include "tests/testing/test_pki.h"
 
 namespace locator::test {
 namespace {
@@ -107,12 +110,19 @@ class LocatordTileSetTest : public ::testing::Test {
     EXPECT_THAT(built.out, HasSubstr("20000 points"));
   }
 
-  // Two shards (--tiles 0/2 and 1/2) of the tile set and a router over
-  // them with `router_flags` added.
-  void StartShardsAndRouter(const std::vector<std::string>& router_flags) {
+  // Two shards (--tiles 0/2 and 1/2) of the tile set, with `shard_flags`
+  // added (and probed with `shard_security`), and a router over them with
+  // `router_flags` added.
+  void StartShardsAndRouter(const std::vector<std::string>& router_flags,
+                            const std::vector<std::string>& shard_flags = {},
+                            const ChannelSecurity& shard_security = {}) {
     const std::string spec = "tiles=" + tiles_ + "/manifest.json";
-    ASSERT_TRUE(StartLocatord(spec, {"--tiles", "0/2"}, &shard0_).ok());
-    ASSERT_TRUE(StartLocatord(spec, {"--tiles", "1/2"}, &shard1_).ok());
+    for (const auto& [tiles, shard] :
+         {std::pair{"0/2", &shard0_}, std::pair{"1/2", &shard1_}}) {
+      std::vector<std::string> flags = {"--tiles", tiles};
+      flags.insert(flags.end(), shard_flags.begin(), shard_flags.end());
+      ASSERT_TRUE(StartLocatord(spec, flags, shard, shard_security).ok());
+    }
     std::vector<std::string> flags = {
         "--route", "--shards", shard0_->target() + "," + shard1_->target()};
     flags.insert(flags.end(), router_flags.begin(), router_flags.end());
@@ -246,6 +256,44 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
       stub->Retune(&retune_context, v1::RetuneRequest(), &retuned);
   EXPECT_EQ(retune.error_code(), grpc::StatusCode::UNIMPLEMENTED);
   EXPECT_THAT(retune.error_message(), HasSubstr("call a shard"));
+}
+
+// Shards that serve mutual TLS only are reached by a router given the
+// --shard-tls flags (the CA, and its client certificate and key); a router
+// without them is told why it cannot reach a shard.
+TEST_F(LocatordTileSetTest, TheRouterReachesTlsShardsWithTheShardTlsFlags) {
+  std::unique_ptr<TestPki> pki;
+  ASSERT_TRUE(TestPki::Create(&pki).ok());
+  ASSERT_NO_FATAL_FAILURE(
+      StartShardsAndRouter(pki->ClientFlags(/*client_cert=*/true, "shard-"),
+                           pki->ServerFlags(/*mutual=*/true),
+                           pki->ClientSecurity(/*client_cert=*/true)));
+  std::unique_ptr<Reference> reference;
+  ASSERT_TRUE(Reference::Build(csv_, &reference).ok());
+  const std::vector<Point2> queries = TestQueries();
+  const std::vector<LocateResult> answers =
+      LocateInBatches(*NewStub(*router_), queries, 4096);
+  ASSERT_EQ(answers.size(), queries.size());
+  EXPECT_EQ(reference->Disagreements(queries, answers, false), "");
+
+  std::unique_ptr<ServerProcess> plaintext_router;
+  ASSERT_TRUE(StartLocatord("tiles=" + tiles_ + "/manifest.json",
+                            {"--route", "--shards",
+                             shard0_->target() + "," + shard1_->target()},
+                            &plaintext_router)
+                  .ok());
+  const std::vector<Point2> middle = {{0.5, 0.5}};
+  v1::LocateBatchRequest request = BatchRequestFor(middle);
+  request.set_dataset("tiles");
+  v1::LocateBatchResponse response;
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() +
+                       std::chrono::seconds(30));
+  const grpc::Status refused =
+      NewStub(*plaintext_router)->LocateBatch(&context, request, &response);
+  EXPECT_EQ(refused.error_code(), grpc::StatusCode::UNAVAILABLE);
+  EXPECT_THAT(refused.error_message(),
+              HasSubstr("shard 0 (" + shard0_->target() + ")"));
 }
 
 // The router's HTTP/JSON API answers browsers as the gRPC router does.
