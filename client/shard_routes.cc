@@ -4,6 +4,7 @@
 
 #include "common/routing/batch_fan_out.h"
 #include "common/routing/batch_split.h"
+#include "common/status_mapping.h"
 
 namespace locator {
 
@@ -48,10 +49,7 @@ void ShardRoutes::StartLocateBatch(const v1::LocateBatchRequest* request,
                                    Completion done) const {
   BatchSplit split;
   if (Status status = SplitBatch(*request, map_, &split); !status.ok()) {
-    done(grpc::Status(status.code() == Status::Code::kFailedPrecondition
-                          ? grpc::StatusCode::FAILED_PRECONDITION
-                          : grpc::StatusCode::INVALID_ARGUMENT,
-                      status.message()));
+    done(ToGrpcStatus(status));
     return;
   }
   ShardCalls calls;

@@ -1,6 +1,6 @@
 #include "server/grpc/call_context.h"
 
-#include "server/grpc/status_mapping.h"
+#include "common/status_mapping.h"
 
 namespace locator {
 

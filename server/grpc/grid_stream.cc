@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "common/status_mapping.h"
 #include "server/app/surface_convert.h"
-#include "server/grpc/status_mapping.h"
 
 namespace locator {
 

@@ -2,8 +2,8 @@
 
 #include <utility>
 
+#include "common/status_mapping.h"
 #include "server/grpc/call_context.h"
-#include "server/grpc/status_mapping.h"
 
 namespace locator {
 

@@ -4,10 +4,10 @@
 #include <type_traits>
 #include <utility>
 
+#include "common/status_mapping.h"
 #include "server/grpc/call_context.h"
 #include "server/grpc/grid_stream.h"
 #include "server/grpc/locate_stream_reactor.h"
-#include "server/grpc/status_mapping.h"
 
 namespace locator {
 namespace {

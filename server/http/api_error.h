@@ -1,6 +1,6 @@
 // ApiError: how locatord's HTTP server answers a failed call, whatever the
 // endpoint, and the one place where a Status becomes an HTTP status (gRPC's
-// is server/grpc/status_mapping.h). The answer has the HTTP status
+// is common/status_mapping.h). The answer has the HTTP status
 // HttpStatusFor() maps the status's code to (or `http_status`, where HTTP
 // has a more precise one: 413 for a body over the limit, 405 for a method a
 // path does not take, 406 for an Accept that takes no type the route

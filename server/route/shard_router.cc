@@ -5,8 +5,8 @@
 
 #include "common/routing/batch_fan_out.h"
 #include "common/routing/batch_split.h"
+#include "common/status_mapping.h"
 #include "server/app/batch_locator.h"
-#include "server/grpc/status_mapping.h"
 
 namespace locator {
 namespace {

@@ -34,12 +34,12 @@
 #include <utility>
 #include <vector>
 
+#include "common/status_mapping.h"
 #include "locator/engine.h"
 #include "locator/v1/locator.pb.h"
 #include "server/app/batch_locator.h"
 #include "server/app/proto_convert.h"
 #include "server/core/cgal/triangulation.h"
-#include "server/grpc/status_mapping.h"
 
 namespace locator {
 namespace {

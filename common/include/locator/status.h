@@ -5,7 +5,7 @@
 // but kIOError has the meaning of the canonical gRPC code of the same name;
 // kIOError (a file that exists could not be read or written) has no gRPC
 // twin. The server maps them in one place per transport (gRPC:
-// server/grpc/status_mapping.cc; HTTP: server/http/api_error.cc); the core
+// common/status_mapping.cc; HTTP: server/http/api_error.cc); the core
 // itself never includes gRPC.
 //
 // [[nodiscard]]: every function returning a Status must have it handled.

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/input_text.h"
-#include "server/grpc/status_mapping.h"
+#include "common/status_mapping.h"
 #include "tests/server/http/json_value.h"
 
 namespace locator {

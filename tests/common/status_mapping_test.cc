@@ -1,4 +1,4 @@
-#include "server/grpc/status_mapping.h"
+#include "common/status_mapping.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "common/input_text.h"
-#include "server/http/api_error.h"
 
 namespace locator {
 namespace {

@@ -1,4 +1,5 @@
-// The one place where a Status becomes a gRPC status (HTTP's is
+// The one place where a Status becomes a gRPC status, for the server's
+// handlers and the clients' own refusals alike (HTTP's is
 // server/http/api_error.h).
 //
 // Every RPC that fails goes through ToGrpcStatus, so a client sees the same
@@ -10,8 +11,8 @@
 // quote client text short (common/input_text.h), so only a bug or an
 // unforeseen echo ever reaches the cut.
 
-#ifndef LOCATOR_SERVER_STATUS_MAPPING_H_
-#define LOCATOR_SERVER_STATUS_MAPPING_H_
+#ifndef LOCATOR_COMMON_STATUS_MAPPING_H_
+#define LOCATOR_COMMON_STATUS_MAPPING_H_
 
 #include <grpcpp/support/status.h>
 
@@ -25,4 +26,4 @@ grpc::Status ToGrpcStatus(const Status& status);
 
 }  // namespace locator
 
-#endif  // LOCATOR_SERVER_STATUS_MAPPING_H_
+#endif  // LOCATOR_COMMON_STATUS_MAPPING_H_

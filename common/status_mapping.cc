@@ -1,4 +1,4 @@
-#include "server/grpc/status_mapping.h"
+#include "common/status_mapping.h"
 
 #include "common/input_text.h"
 
