@@ -1,8 +1,10 @@
 // The main() of every test that makes gRPC objects: GoogleTest's, run inside
-// a GrpcLifetime (common/grpc_lifetime.h). gRPC then shuts down on the main
-// thread before the process exits, and OpenSSL does no exit-time cleanup
-// that could race a gRPC thread still finishing TLS work (ASAN saw that
-// race as a double free in a gRPC thread of a test process).
+// a GrpcLifetime (common/grpc_lifetime.h), as locatord's and the clients'
+// mains are. gRPC then shuts down on the main thread before the process
+// exits, and OpenSSL does no exit-time cleanup that could race a gRPC
+// thread still finishing TLS work: the likeliest source of the ASAN "double
+// free in thread T7" that CI runs reported from processes they did not name
+// (grpc/grpc pull request 42608 proposes the same for this race).
 
 #include <gtest/gtest.h>
 

@@ -32,13 +32,13 @@
 namespace locator {
 namespace {
 
+using test::kSide;
+using test::kSouth;
 using test::kUtm33;
+using test::kWest;
 using test::MercatorUtmTransformer;
 using test::PixelCentresInUtm33;
 using test::Slope;
-using test::kSide;
-using test::kSouth;
-using test::kWest;
 using test::TileAtSouthWestCorner;
 using test::TileContaining;
 using test::UtmTerrain;
