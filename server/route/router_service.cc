@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "server/grpc/call_context.h"
+#include "server/route/grid_relay.h"
 
 namespace locator {
 namespace {
@@ -170,10 +171,18 @@ RouterService::LocateStream(grpc::CallbackServerContext* /*context*/) {
 }
 
 grpc::ServerWriteReactor<v1::GridResponse>* RouterService::Grid(
-    grpc::CallbackServerContext* /*context*/,
-    const v1::GridRequest* /*request*/) {
-  return new Refusal<grpc::ServerWriteReactor<v1::GridResponse>>(
-      NotRouted("Grid"));
+    grpc::CallbackServerContext* context, const v1::GridRequest* request) {
+  // Any shard answers a grid whole; the centre's has its pages.
+  size_t shard = 0;
+  if (std::shared_ptr<const ShardTopology::Routed> routed =
+          topology_->Known(request->dataset());
+      routed != nullptr) {
+    const v1::BoundingBox& box = request->box();
+    const uint32_t owner = routed->map.ShardOf(
+        {box.min_x() / 2 + box.max_x() / 2, box.min_y() / 2 + box.max_y() / 2});
+    if (owner != ShardMap::kNoShard) shard = owner;
+  }
+  return new GridRelay(topology_, shard, ShardContext(*context), *request);
 }
 
 }  // namespace locator

@@ -97,6 +97,22 @@ std::vector<Point2> TileSeamQueries(const std::string& dir) {
   return queries;
 }
 
+// The messages of a Grid call on `stub`, which must succeed.
+std::vector<v1::GridResponse> ReadGrid(v1::Locator::Stub& stub,
+                                       const v1::GridRequest& request) {
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() +
+                       std::chrono::seconds(60));
+  std::unique_ptr<grpc::ClientReader<v1::GridResponse>> reader =
+      stub.Grid(&context, request);
+  std::vector<v1::GridResponse> messages(1);
+  while (reader->Read(&messages.back())) messages.emplace_back();
+  messages.pop_back();
+  const grpc::Status status = reader->Finish();
+  EXPECT_TRUE(status.ok()) << status.error_message();
+  return messages;
+}
+
 class LocatordTileSetTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -250,6 +266,48 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   grpc::ClientContext crs_context;
   EXPECT_EQ(stub->LocateBatch(&crs_context, with_crs, &refused).error_code(),
             grpc::StatusCode::INVALID_ARGUMENT);
+  // A grid is streamed from one shard, which answers it whole: as a
+  // shard called directly answers it.
+  v1::GridRequest grid;
+  grid.set_dataset("tiles");
+  grid.mutable_box()->set_min_x(-0.1);
+  grid.mutable_box()->set_min_y(0.05);
+  grid.mutable_box()->set_max_x(1.1);
+  grid.mutable_box()->set_max_y(0.95);
+  grid.set_width(300);
+  grid.set_height(700);
+  grid.set_nodata(-1);
+  const std::vector<v1::GridResponse> routed_grid = ReadGrid(*stub, grid);
+  const std::vector<v1::GridResponse> shard_grid =
+      ReadGrid(*NewStub(shard1), grid);
+  ASSERT_GT(routed_grid.size(), 1u);  // a header and rows, in messages
+  ASSERT_EQ(routed_grid.size(), shard_grid.size());
+  for (size_t i = 0; i < routed_grid.size(); ++i) {
+    EXPECT_EQ(routed_grid[i].SerializeAsString(),
+              shard_grid[i].SerializeAsString())
+        << "message " << i;
+  }
+  // The shard's refusal reaches the caller naming the shard; a caller that
+  // stops reading and cancels leaves the router serving.
+  v1::GridRequest empty = grid;
+  empty.set_width(0);
+  grpc::ClientContext empty_context;
+  v1::GridResponse unused;
+  auto empty_reader = stub->Grid(&empty_context, empty);
+  while (empty_reader->Read(&unused)) {
+  }
+  const grpc::Status empty_status = empty_reader->Finish();
+  EXPECT_EQ(empty_status.error_code(), grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_THAT(empty_status.error_message(), HasSubstr("shard "));
+  for (int call = 0; call < 3; ++call) {
+    grpc::ClientContext cancelled;
+    auto reader = stub->Grid(&cancelled, grid);
+    ASSERT_TRUE(reader->Read(&unused));
+    cancelled.TryCancel();
+    EXPECT_EQ(reader->Finish().error_code(), grpc::StatusCode::CANCELLED);
+  }
+  EXPECT_EQ(ReadGrid(*stub, grid).size(), routed_grid.size());
+
   grpc::ClientContext retune_context;
   v1::RetuneResponse retuned;
   const grpc::Status retune =
