@@ -69,45 +69,6 @@ v1::GridRequest GridRequestFor(const BoundingBox& box, uint32_t width,
   return request;
 }
 
-// The whole stream of a Grid call as one message (the HTTP form): the
-// header and every row in order. Each row must come exactly once.
-grpc::Status StreamGrid(v1::Locator::Stub& stub, const v1::GridRequest& request,
-                        v1::GridResponse* whole, int* messages = nullptr) {
-  grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() +
-                       std::chrono::seconds(60));
-  auto reader = stub.Grid(&context, request);
-  v1::GridResponse message;
-  std::vector<std::vector<double>> rows;
-  int count = 0;
-  while (reader->Read(&message)) {
-    EXPECT_EQ(message.has_header(), count == 0);
-    if (message.has_header()) {
-      *whole->mutable_header() = message.header();
-      rows.resize(message.header().height());
-    }
-    const uint32_t width = whole->header().width();
-    EXPECT_EQ(message.values_size(), int64_t{message.rows()} * width);
-    for (uint32_t r = 0; r < message.rows(); ++r) {
-      std::vector<double>& row = rows.at(message.first_row() + r);
-      EXPECT_TRUE(row.empty()) << "row " << message.first_row() + r;
-      row.assign(message.values().begin() + r * width,
-                 message.values().begin() + (r + 1) * width);
-    }
-    ++count;
-  }
-  const grpc::Status status = reader->Finish();
-  if (!status.ok()) return status;
-  whole->set_first_row(0);
-  whole->set_rows(static_cast<uint32_t>(rows.size()));
-  for (const std::vector<double>& row : rows) {
-    EXPECT_FALSE(row.empty());
-    whole->mutable_values()->Add(row.begin(), row.end());
-  }
-  if (messages != nullptr) *messages = count;
-  return status;
-}
-
 class SurfaceTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {

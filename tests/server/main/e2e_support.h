@@ -127,6 +127,11 @@ std::vector<LocateResult> LocateEach(
 std::vector<LocateResult> LocateInBatches(v1::Locator::Stub& stub,
                                           std::span<const Point2> queries,
                                           size_t batch_size);
+// The whole stream of a Grid call as one message (the HTTP form): the
+// header and every row in order, and in *messages (if not null) how many
+// messages came. Each row must come exactly once, the header first.
+grpc::Status StreamGrid(v1::Locator::Stub& stub, const v1::GridRequest& request,
+                        v1::GridResponse* whole, int* messages = nullptr);
 // One LocateStream carrying every query (written from a second thread, as
 // the server stops reading while its answers wait unread).
 std::vector<LocateResult> LocateOverStream(v1::Locator::Stub& stub,

@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <filesystem>
@@ -97,48 +96,6 @@ std::vector<Point2> TileSeamQueries(const std::string& dir) {
     }
   }
   return queries;
-}
-
-// The messages of a Grid call on `stub`, which must succeed.
-std::vector<v1::GridResponse> ReadGrid(v1::Locator::Stub& stub,
-                                       const v1::GridRequest& request) {
-  grpc::ClientContext context;
-  context.set_deadline(std::chrono::system_clock::now() +
-                       std::chrono::seconds(60));
-  std::unique_ptr<grpc::ClientReader<v1::GridResponse>> reader =
-      stub.Grid(&context, request);
-  std::vector<v1::GridResponse> messages(1);
-  while (reader->Read(&messages.back())) messages.emplace_back();
-  messages.pop_back();
-  const grpc::Status status = reader->Finish();
-  EXPECT_TRUE(status.ok()) << status.error_message();
-  return messages;
-}
-
-// The header and the values (row by row) of a Grid call's `messages`;
-// a test failure unless each row comes exactly once.
-void AssembleGrid(const std::vector<v1::GridResponse>& messages,
-                  v1::GridHeader* header, std::vector<double>* values) {
-  ASSERT_FALSE(messages.empty());
-  ASSERT_TRUE(messages[0].has_header());
-  *header = messages[0].header();
-  const size_t width = header->width();
-  values->assign(width * header->height(), std::nan(""));
-  std::vector<char> seen(header->height(), 0);
-  for (const v1::GridResponse& message : messages) {
-    ASSERT_EQ(static_cast<size_t>(message.values_size()),
-              size_t{message.rows()} * width);
-    for (uint32_t r = 0; r < message.rows(); ++r) {
-      const uint32_t row = message.first_row() + r;
-      ASSERT_LT(row, seen.size());
-      ASSERT_FALSE(seen[row]) << "row " << row << " twice";
-      seen[row] = 1;
-      std::copy_n(message.values().begin() + r * width, width,
-                  values->begin() + row * width);
-    }
-  }
-  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1),
-            static_cast<std::ptrdiff_t>(seen.size()));
 }
 
 class LocatordTileSetTest : public ::testing::Test {
@@ -306,21 +263,19 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
   grid.set_width(300);
   grid.set_height(700);
   grid.set_nodata(-1);
-  const std::vector<v1::GridResponse> routed_grid = ReadGrid(*stub, grid);
-  ASSERT_GT(routed_grid.size(), 1u);  // a header and rows, in messages
-  v1::GridHeader routed_header, shard_header;
-  std::vector<double> routed_values, shard_values;
-  ASSERT_NO_FATAL_FAILURE(
-      AssembleGrid(routed_grid, &routed_header, &routed_values));
-  ASSERT_NO_FATAL_FAILURE(AssembleGrid(ReadGrid(*NewStub(shard1), grid),
-                                       &shard_header, &shard_values));
-  EXPECT_EQ(routed_header.SerializeAsString(),
-            shard_header.SerializeAsString());
-  ASSERT_EQ(routed_values.size(), size_t{300} * 700);
-  ASSERT_EQ(shard_values.size(), routed_values.size());
-  for (size_t v = 0; v < routed_values.size(); ++v) {
+  v1::GridResponse routed_grid, shard_grid;
+  int routed_messages = 0;
+  ASSERT_TRUE(StreamGrid(*stub, grid, &routed_grid, &routed_messages).ok());
+  ASSERT_GT(routed_messages, 1);  // a header and rows, in messages
+  ASSERT_TRUE(StreamGrid(*NewStub(shard1), grid, &shard_grid).ok());
+  EXPECT_EQ(routed_grid.header().SerializeAsString(),
+            shard_grid.header().SerializeAsString());
+  ASSERT_EQ(routed_grid.values_size(), 300 * 700);
+  ASSERT_EQ(shard_grid.values_size(), routed_grid.values_size());
+  for (int v = 0; v < routed_grid.values_size(); ++v) {
     // A cell on an edge may take its value from either face.
-    ASSERT_NEAR(routed_values[v], shard_values[v], 1e-9) << "cell " << v;
+    ASSERT_NEAR(routed_grid.values(v), shard_grid.values(v), 1e-9)
+        << "cell " << v;
   }
   // The shard's refusal reaches the caller naming the shard; a caller that
   // stops reading and cancels leaves the router serving.
@@ -341,7 +296,10 @@ TEST_F(LocatordTileSetTest, ShardsBehindARouterAnswerAsTheWholeSet) {
     cancelled.TryCancel();
     EXPECT_EQ(reader->Finish().error_code(), grpc::StatusCode::CANCELLED);
   }
-  EXPECT_EQ(ReadGrid(*stub, grid).size(), routed_grid.size());
+  v1::GridResponse again;
+  int again_messages = 0;
+  EXPECT_TRUE(StreamGrid(*stub, grid, &again, &again_messages).ok());
+  EXPECT_EQ(again_messages, routed_messages);
 
   grpc::ClientContext retune_context;
   v1::RetuneResponse retuned;
