@@ -40,8 +40,8 @@ Status LoadChannelSecurity(const ChannelSecurityFlags& flags,
                            ChannelSecurity* security,
                            std::string_view flag_prefix) {
   *security = ChannelSecurity();
-  security->tls = flags.tls || !flags.tls_ca.empty() ||
-                  !flags.tls_cert.empty() || !flags.tls_server_name.empty();
+  // A key alone fails below, in ReadKeyPairFiles.
+  security->tls = flags.AnyTls();
   security->server_name = flags.tls_server_name;
   KeyPairPem pair;
   Status status =

@@ -38,6 +38,12 @@ struct ChannelSecurity {
 
 // The security flags as typed.
 struct ChannelSecurityFlags {
+  // Whether any TLS flag was given (each implies --tls).
+  bool AnyTls() const {
+    return tls || !tls_ca.empty() || !tls_cert.empty() || !tls_key.empty() ||
+           !tls_server_name.empty();
+  }
+
   std::string token_file;
   bool tls = false;
   std::string tls_ca;

@@ -122,11 +122,7 @@ namespace {
 // the --shard-tls flags are for --route.
 Status CheckShardFlags(const ServerConfig& config,
                        const ChannelSecurityFlags& shard_tls) {
-  const bool any_shard_tls = shard_tls.tls || !shard_tls.tls_ca.empty() ||
-                             !shard_tls.tls_cert.empty() ||
-                             !shard_tls.tls_key.empty() ||
-                             !shard_tls.tls_server_name.empty();
-  if (!config.route && any_shard_tls) {
+  if (!config.route && shard_tls.AnyTls()) {
     return Status::InvalidArgument("--shard-tls flags are for --route");
   }
   if (!config.tiles.empty()) {
