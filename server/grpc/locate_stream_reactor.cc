@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "common/status_mapping.h"
+#include "server/app/proto_convert.h"
 #include "server/grpc/call_context.h"
 
 namespace locator {
@@ -19,7 +20,7 @@ LocateStreamReactor::LocateStreamReactor(
     // them after it too, but through synchronization ThreadSanitizer cannot
     // see.
     MutexLock lock(&mu_);
-    if (deadline_.ServerEnforced()) alarms_pending_ = 1;
+    if (deadline_.ServerEnforced()) holds_ = 1;
   }
   // gRPC enforces a deadline the client set; the server's default is ours.
   if (deadline_.ServerEnforced()) {
@@ -30,20 +31,46 @@ LocateStreamReactor::LocateStreamReactor(
 }
 
 void LocateStreamReactor::OnReadDone(bool ok) {
+  if (!ok) {
+    // The client half-closed (or the call died, in which case the status is
+    // never seen).
+    Actions actions;
+    {
+      MutexLock lock(&mu_);
+      actions = ToActionsLocked(state_.ReadFailed());
+    }
+    Start(actions);
+    return;
+  }
+  LocateStreamState::Ticket ticket;
+  {
+    MutexLock lock(&mu_);
+    ticket = state_.PointRead();
+    ++holds_;  // until the answer comes
+  }
+  locate_(request_, [this, ticket](const grpc::Status& located,
+                                   v1::LocateResponse* answer) {
+    OnLocated(ticket, located, answer);
+  });
   Actions actions;
   {
     MutexLock lock(&mu_);
-    if (!ok) {
-      // The client half-closed (or the call died, in which case the status
-      // is never seen).
-      actions = ToActionsLocked(state_.ReadFailed());
-    } else {
-      LocateResult result;
-      const Status located = locate_(request_, &result);
-      actions = ToActionsLocked(state_.PointRead(located, result));
-    }
+    actions = ToActionsLocked(state_.LocateStarted());
   }
   Start(actions);
+}
+
+void LocateStreamReactor::OnLocated(LocateStreamState::Ticket ticket,
+                                    const grpc::Status& located,
+                                    v1::LocateResponse* answer) {
+  Actions actions;
+  {
+    MutexLock lock(&mu_);
+    actions = ToActionsLocked(state_.Answered(ticket, located, answer));
+  }
+  // Safe without gRPC's reference: this answer's hold keeps the reactor.
+  Start(actions);
+  Release();
 }
 
 void LocateStreamReactor::OnWriteDone(bool ok) {
@@ -64,7 +91,7 @@ void LocateStreamReactor::OnDone() {
     // Counted like an alarm while the alarms are cancelled below: their
     // callbacks run on other threads, and the last one to run deletes the
     // reactor, which must not happen while this thread still touches it.
-    if (!delete_now) ++alarms_pending_;
+    if (!delete_now) ++holds_;
   }
   if (delete_now) {
     delete this;
@@ -73,7 +100,7 @@ void LocateStreamReactor::OnDone() {
   // The pending callbacks run with fired == false.
   deadline_alarm_.Cancel();
   stuck_write_alarm_.Cancel();
-  ReleaseAlarm();
+  Release();
 }
 
 void LocateStreamReactor::OnDeadline(bool fired) {
@@ -84,7 +111,7 @@ void LocateStreamReactor::OnDeadline(bool fired) {
       bool write_in_flight = false;
       actions = ToActionsLocked(state_.DeadlinePassed(&write_in_flight));
       if (write_in_flight) {
-        ++alarms_pending_;
+        ++holds_;
         stuck_write_alarm_.Set(
             std::chrono::system_clock::now() + kStuckWriteGrace,
             [this](bool stuck) { OnStuckWrite(stuck); });
@@ -93,7 +120,7 @@ void LocateStreamReactor::OnDeadline(bool fired) {
   }
   // Safe without gRPC's reference: this alarm's count keeps the reactor.
   Start(actions);
-  ReleaseAlarm();
+  Release();
 }
 
 void LocateStreamReactor::OnStuckWrite(bool fired) {
@@ -103,14 +130,14 @@ void LocateStreamReactor::OnStuckWrite(bool fired) {
     MutexLock lock(&mu_);
     if (fired && !state_.finished() && !done_) context_->TryCancel();
   }
-  ReleaseAlarm();
+  Release();
 }
 
-void LocateStreamReactor::ReleaseAlarm() {
+void LocateStreamReactor::Release() {
   bool delete_now;
   {
     MutexLock lock(&mu_);
-    --alarms_pending_;
+    --holds_;
     delete_now = DoneLocked();
   }
   if (delete_now) delete this;
@@ -127,7 +154,7 @@ LocateStreamReactor::Actions LocateStreamReactor::ToActionsLocked(
       actions.finish = grpc::Status::OK;
       break;
     case LocateStreamState::End::kBadPoint:
-      actions.finish = ToGrpcStatus(state_.bad_point_status());
+      actions.finish = state_.bad_point_status();
       break;
     case LocateStreamState::End::kClientGone:
       // Nobody reads it; it only matters for the logs.
@@ -146,6 +173,21 @@ void LocateStreamReactor::Start(const Actions& actions) {
   if (actions.write != nullptr) StartWrite(actions.write);
   if (actions.read) StartRead(&request_);
   if (actions.finish) Finish(*actions.finish);
+}
+
+LocateStreamReactor::LocateFn AnswerAtOnce(
+    std::function<Status(const v1::LocateRequest& request,
+                         LocateResult* result)>
+        locate) {
+  return
+      [locate = std::move(locate)](const v1::LocateRequest& request,
+                                   const LocateStreamReactor::Answer& answer) {
+        LocateResult result;
+        v1::LocateResponse response;
+        const Status located = locate(request, &result);
+        if (located.ok()) ToLocateResponse(result, &response);
+        answer(ToGrpcStatus(located), &response);
+      };
 }
 
 }  // namespace locator

@@ -3,11 +3,15 @@
 //
 // What to read, write and finish next is decided by a LocateStreamState
 // (see there: one write in flight, at most kMaxQueuedAnswers queued, how
-// each kind of end is reached); this class carries it out with gRPC.
+// each kind of end is reached); this class carries it out with gRPC. A
+// point is answered by a LocateFn, at once (a server's engine) or later
+// from another thread (a router's shard call), so points may be located
+// while others wait to be written.
 //
-// Until the reactor finishes, a read or a write is always outstanding, so a
-// cancelled call always surfaces as a failed operation and then finishes:
-// OnCancel() needs no action of its own.
+// Until the reactor finishes, a read, a write or a locate is always
+// outstanding, so a cancelled call always surfaces as a failed operation
+// (or a locate failing with the call) and then finishes: OnCancel() needs
+// no action of its own.
 //
 // A stream whose client set no deadline gets the server's default (see
 // CallDeadline), enforced by an alarm: when it fires the stream finishes
@@ -16,9 +20,10 @@
 // answer) and is not written within kStuckWriteGrace, the call is cancelled.
 //
 // Owns itself: deletes itself once OnDone() has run and no alarm callback
-// is pending. Thread-safety: gRPC may run the read and write reactions and
-// the alarm callbacks concurrently; the call's state is guarded by mu_, and
-// gRPC operations are started after mu_ is released.
+// or answer is pending. Thread-safety: gRPC may run the read and write
+// reactions and the alarm callbacks, and a LocateFn its answers,
+// concurrently; the call's state is guarded by mu_, and gRPC operations are
+// started after mu_ is released.
 
 #ifndef LOCATOR_SERVER_LOCATE_STREAM_REACTOR_H_
 #define LOCATOR_SERVER_LOCATE_STREAM_REACTOR_H_
@@ -32,7 +37,6 @@
 #include <optional>
 
 #include "common/mutex.h"
-#include "locator/geometry.h"
 #include "locator/locate_result.h"
 #include "locator/status.h"
 #include "locator/v1/locator.pb.h"
@@ -46,12 +50,17 @@ class LocateStreamReactor final
  public:
   static constexpr std::chrono::seconds kStuckWriteGrace{1};
 
-  // Answers one request: the engine's (in the request's CRS), or the no-op
-  // server's canned answer.
+  // Takes the answer to one point: `located` OK with `*answer` (which it
+  // may move from), or the error that ends the stream.
+  using Answer = std::function<void(const grpc::Status& located,
+                                    v1::LocateResponse* answer)>;
+  // Locates one point and calls `answer` exactly once, on this thread
+  // before returning or on any thread later. It reads `request` only until
+  // it returns. Calls come one at a time, in the order of the points.
   using LocateFn =
-      std::function<Status(const v1::LocateRequest& request, LocateResult*)>;
+      std::function<void(const v1::LocateRequest& request, Answer answer)>;
 
-  // Starts reading the stream of `context`; every point is answered with
+  // Starts reading the stream of `context`; every point is answered by
   // `locate`; `default_deadline` (zero: none) bounds a stream whose client
   // set no deadline.
   LocateStreamReactor(grpc::CallbackServerContext* context,
@@ -74,16 +83,17 @@ class LocateStreamReactor final
   Actions ToActionsLocked(const LocateStreamState::Actions& next) const
       REQUIRES(mu_);
   void Start(const Actions& actions) EXCLUDES(mu_);
+  // A LocateFn's answer to the point of `ticket`.
+  void OnLocated(LocateStreamState::Ticket ticket, const grpc::Status& located,
+                 v1::LocateResponse* answer) EXCLUDES(mu_);
   // Alarm callbacks: `fired` is false when the alarm was cancelled.
   void OnDeadline(bool fired) EXCLUDES(mu_);
   void OnStuckWrite(bool fired) EXCLUDES(mu_);
-  // Ends an alarm callback: deletes the reactor if it was the last thing
-  // keeping it.
-  void ReleaseAlarm() EXCLUDES(mu_);
+  // Ends an alarm callback or an answer: deletes the reactor if it was the
+  // last thing keeping it.
+  void Release() EXCLUDES(mu_);
   // Whether the reactor may be deleted now.
-  bool DoneLocked() const REQUIRES(mu_) {
-    return done_ && alarms_pending_ == 0;
-  }
+  bool DoneLocked() const REQUIRES(mu_) { return done_ && holds_ == 0; }
 
   grpc::CallbackServerContext* const context_;
   const CallDeadline deadline_;
@@ -92,11 +102,19 @@ class LocateStreamReactor final
 
   Mutex mu_;
   LocateStreamState state_ GUARDED_BY(mu_);
-  bool done_ GUARDED_BY(mu_) = false;       // OnDone() has run
-  int alarms_pending_ GUARDED_BY(mu_) = 0;  // alarm callbacks still to run
+  bool done_ GUARDED_BY(mu_) = false;  // OnDone() has run
+  // Alarm callbacks and answers still to come, each keeping the reactor.
+  int holds_ GUARDED_BY(mu_) = 0;
   grpc::Alarm deadline_alarm_;
   grpc::Alarm stuck_write_alarm_;
 };
+
+// A LocateFn that answers at once with what `locate` returns: the result of
+// one point located on this thread (a server's engine, the no-op server).
+LocateStreamReactor::LocateFn AnswerAtOnce(
+    std::function<Status(const v1::LocateRequest& request,
+                         LocateResult* result)>
+        locate);
 
 }  // namespace locator
 

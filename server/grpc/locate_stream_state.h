@@ -1,29 +1,35 @@
 // LocateStreamState: the state machine of one LocateStream call, without
-// gRPC: which read, write and finish to start next, given what has happened
-// (a point read, the client's half-close, a write done or failed, the
-// deadline). LocateStreamReactor feeds it gRPC's reactions and starts the
-// operations it returns; tests drive it directly.
+// gRPC's calls: which read, write and finish to start next, given what has
+// happened (a point read, its answer, the client's half-close, a write done
+// or failed, the deadline). LocateStreamReactor feeds it gRPC's reactions
+// and starts the operations it returns; tests drive it directly.
 //
-// At most one write is in flight; answers computed meanwhile wait in a
-// queue. While kMaxQueuedAnswers are waiting no read is started, so a client
-// that sends without reading cannot grow the server's memory. A point that
-// failed to locate ends the stream with its status once the answers before it
-// are written; a failed write ends it at once. Until the stream finishes a
-// read or a write is always outstanding. When the deadline passes, the
-// answers not yet being written are dropped and the stream finishes as soon
-// as no write is in flight.
+// A point read takes a ticket; its answer may come at once (a server's
+// engine) or later, from another thread (a router's shard), and answers are
+// written in the order of their points whatever order they come in. At
+// most one write is in flight; answers located meanwhile, and points still
+// being located, wait in a queue. While kMaxQueuedAnswers are waiting no
+// read is started, so a client that sends without reading cannot grow the
+// server's memory. A point that failed to locate ends the stream with its
+// status once the answers before it are written; no point after it is
+// read, and none after it is answered. A failed write ends the stream at
+// once. Until the stream finishes a read, a write or a locate is always
+// outstanding. When the deadline passes, the answers not yet being written
+// are dropped (and points still being located are answered in vain) and
+// the stream finishes as soon as no write is in flight.
 //
 // Thread-safety: none; the reactor calls it under its mutex.
 
 #ifndef LOCATOR_SERVER_LOCATE_STREAM_STATE_H_
 #define LOCATOR_SERVER_LOCATE_STREAM_STATE_H_
 
+#include <grpcpp/support/status.h>
+
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <optional>
 
-#include "locator/locate_result.h"
-#include "locator/status.h"
 #include "locator/v1/locator.pb.h"
 
 namespace locator {
@@ -47,14 +53,25 @@ class LocateStreamState {
     std::optional<End> finish;
   };
 
+  // Names a point read, for its answer.
+  using Ticket = uint64_t;
+
   // A new stream: its first read is outstanding (started by the caller).
   LocateStreamState() = default;
 
   LocateStreamState(const LocateStreamState&) = delete;
   LocateStreamState& operator=(const LocateStreamState&) = delete;
 
-  // A read completed with a point, located with `located` and `result`.
-  Actions PointRead(const Status& located, const LocateResult& result);
+  // A read completed with a point, which is now being located. No read
+  // starts until LocateStarted() (the read buffer holds the point).
+  Ticket PointRead();
+  // The locate of the last point read has started, or is done: the read
+  // buffer is free.
+  Actions LocateStarted();
+  // The point of `ticket` was located: `located` OK with `*answer` (taken),
+  // or its error. An answer the stream no longer waits for is dropped.
+  Actions Answered(Ticket ticket, const grpc::Status& located,
+                   v1::LocateResponse* answer);
   // A read failed: the client half-closed.
   Actions ReadFailed();
   // The write in flight completed (`ok`) or failed.
@@ -66,20 +83,31 @@ class LocateStreamState {
 
   // Whether the stream has been told to finish.
   bool finished() const { return finished_; }
-  // Answers located and not yet written (the one in flight included).
-  size_t queued_answers() const { return answers_.size(); }
+  // Points read and not yet written (the one in flight included).
+  size_t queued_answers() const { return queue_.size(); }
   // The status of the point that failed to locate (End::kBadPoint).
-  const Status& bad_point_status() const { return bad_point_status_; }
+  const grpc::Status& bad_point_status() const { return bad_point_status_; }
 
  private:
+  // A point read, in the order of reading.
+  struct Queued {
+    Ticket ticket;
+    bool answered = false;
+    grpc::Status located;       // when answered
+    v1::LocateResponse answer;  // when answered OK
+  };
+
   Actions NextActions();
   void EndWith(End end);
 
-  std::deque<v1::LocateResponse> answers_;  // front is in flight if writing_
+  std::deque<Queued> queue_;  // front is in flight if writing_
+  Ticket next_ticket_ = 0;
   bool writing_ = false;
   bool reading_ = true;     // the first read starts with the stream
+  bool locating_ = false;   // PointRead() until LocateStarted()
+  bool failed_ = false;     // a point in the queue failed to locate
   std::optional<End> end_;  // set once no more points will be read
-  Status bad_point_status_;
+  grpc::Status bad_point_status_;
   bool finished_ = false;
 };
 

@@ -98,17 +98,17 @@ StreamReactor* LocatorService::LocateStream(
         // a time, so `resolved` needs no lock of its own.
         return new LocateStreamReactor(
             context, app_->default_deadline(),
-            [app = app_, call = std::move(call),
-             resolved = std::map<const DatasetSlot*, Admission>()](
-                const v1::LocateRequest& request,
-                LocateResult* result) mutable -> Status {
+            AnswerAtOnce([app = app_, call = std::move(call),
+                          resolved = std::map<const DatasetSlot*, Admission>()](
+                             const v1::LocateRequest& request,
+                             LocateResult* result) mutable -> Status {
               StatusOr<Admission> dataset = app->Resolve(request.dataset());
               if (!dataset.ok()) return dataset.status();
               const Admission& pinned =
                   resolved.try_emplace(dataset->dataset, *std::move(dataset))
                       .first->second;
               return app->LocateOn(pinned, request, result);
-            });
+            }));
       });
 }
 

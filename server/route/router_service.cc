@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "server/grpc/call_context.h"
+#include "server/grpc/locate_stream_reactor.h"
 #include "server/route/grid_relay.h"
 
 namespace locator {
@@ -38,14 +39,6 @@ size_t ShardServing(const ShardTopology& topology, const std::string& dataset,
   const uint32_t owner = routed->map.ShardOf(p);
   return owner == ShardMap::kNoShard ? 0 : owner;
 }
-
-// Finishes a call the router does not forward as soon as it starts.
-template <typename Reactor>
-class Refusal final : public Reactor {
- public:
-  explicit Refusal(const grpc::Status& status) { this->Finish(status); }
-  void OnDone() override { delete this; }
-};
 
 }  // namespace
 
@@ -172,10 +165,32 @@ grpc::ServerUnaryReactor* RouterService::Reload(
 }
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
-RouterService::LocateStream(grpc::CallbackServerContext* /*context*/) {
-  return new Refusal<
-      grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>>(
-      NotRouted("LocateStream (use LocateBatch)"));
+RouterService::LocateStream(grpc::CallbackServerContext* context) {
+  // Each point is routed as a Locate is, several in flight at once; the
+  // reactor writes their answers in the order of the points.
+  return new LocateStreamReactor(
+      context, default_deadline_,
+      [this, context](const v1::LocateRequest& request,
+                      LocateStreamReactor::Answer answer) {
+        struct Routed {
+          v1::LocateRequest request;
+          v1::LocateResponse response;
+        };
+        auto point = std::make_shared<Routed>();
+        point->request = request;
+        // Made now, while the stream is surely alive: a Locate makes at most
+        // one shard call, perhaps after the stream has finished.
+        std::shared_ptr<grpc::ClientContext> shard = ShardContext(*context);
+        router_->Locate(
+            &point->request, &point->response,
+            ShardRouter::Call{
+                .authorization = Authorization(*context),
+                .new_context = [shard] { return shard; },
+                .finish =
+                    [point, answer = std::move(answer)](grpc::Status status) {
+                      answer(status, &point->response);
+                    }});
+      });
 }
 
 grpc::ServerWriteReactor<v1::GridResponse>* RouterService::Grid(

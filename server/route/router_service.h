@@ -5,12 +5,14 @@
 // nothing but the shards.
 //
 //   Locate, LocateBatch, GetTopology   ShardRouter (shard_router.h)
+//   LocateStream  each point as a Locate, several in flight, answered in
+//                 order (LocateStreamReactor)
 //   Profile       to the shard of the line's first vertex (any shard
 //                 answers a profile whole)
 //   Grid          to the shard of the grid's centre, streamed back as it
 //                 comes (GridRelay: any shard answers a grid whole)
 //   GetStats, ListDatasets   to the first shard
-//   LocateStream, Retune, Reload   UNIMPLEMENTED: call the shards
+//   Retune, Reload   UNIMPLEMENTED: call the shards
 //
 // Every forwarded call carries the caller's deadline (or the router's
 // default) and authorization header, and is cancelled with the caller's.

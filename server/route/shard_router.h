@@ -52,6 +52,8 @@ class ShardRouter {
   ShardRouter(ShardTopology* topology, size_t threads, size_t max_batch_points);
 
   // The calls; `request` and `response` must live until call.finish ran.
+  // Locate makes at most one shard call (call.new_context runs at most
+  // once), perhaps on another thread once the topology is known.
   void Locate(const v1::LocateRequest* request, v1::LocateResponse* response,
               Call call);
   void LocateBatch(const v1::LocateBatchRequest* request,

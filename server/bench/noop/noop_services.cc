@@ -66,11 +66,11 @@ grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
 NoopLocatorService::LocateStream(grpc::CallbackServerContext* context) {
   return new LocateStreamReactor(
       context, default_deadline_,
-      [](const v1::LocateRequest& request, LocateResult* result) {
+      AnswerAtOnce([](const v1::LocateRequest& request, LocateResult* result) {
         *result =
             CannedAnswer(Point2{request.point().x(), request.point().y()});
         return Status::OK();
-      });
+      }));
 }
 
 grpc::ServerUnaryReactor* NoopLocatorService::GetStats(

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <string>
 
 namespace locator {
 namespace {
@@ -13,14 +14,55 @@ namespace {
 using End = LocateStreamState::End;
 using Actions = LocateStreamState::Actions;
 
-LocateResult AnswerFor(int64_t triangle) {
-  LocateResult result;
-  result.triangle_id = triangle;
-  return result;
+v1::LocateResponse AnswerFor(int64_t triangle) {
+  v1::LocateResponse answer;
+  answer.set_triangle_id(triangle);
+  return answer;
+}
+
+// What the reactor starts after both: `first`'s operations, then `second`'s.
+Actions Both(const Actions& first, const Actions& second) {
+  EXPECT_FALSE(first.write != nullptr && second.write != nullptr);
+  EXPECT_FALSE(first.read && second.read);
+  return Actions{.write = first.write != nullptr ? first.write : second.write,
+                 .read = first.read || second.read,
+                 .finish = first.finish ? first.finish : second.finish};
+}
+
+// A point read and answered at once (`located`), as a server's engine
+// answers it: the actions of its answer and of its locate's start.
+Actions Located(LocateStreamState& state, const grpc::Status& located,
+                int64_t triangle) {
+  const LocateStreamState::Ticket ticket = state.PointRead();
+  v1::LocateResponse answer = AnswerFor(triangle);
+  const Actions answered = state.Answered(ticket, located, &answer);
+  return Both(answered, state.LocateStarted());
 }
 
 Actions Point(LocateStreamState& state, int64_t triangle) {
-  return state.PointRead(Status::OK(), AnswerFor(triangle));
+  return Located(state, grpc::Status::OK, triangle);
+}
+
+// A point read whose answer comes later, as a router's shard answers it.
+LocateStreamState::Ticket Pending(LocateStreamState& state,
+                                  Actions* started = nullptr) {
+  const LocateStreamState::Ticket ticket = state.PointRead();
+  const Actions actions = state.LocateStarted();
+  if (started != nullptr) *started = actions;
+  return ticket;
+}
+
+Actions Answer(LocateStreamState& state, LocateStreamState::Ticket ticket,
+               int64_t triangle) {
+  v1::LocateResponse answer = AnswerFor(triangle);
+  return state.Answered(ticket, grpc::Status::OK, &answer);
+}
+
+Actions Fail(LocateStreamState& state, LocateStreamState::Ticket ticket,
+             const std::string& why) {
+  v1::LocateResponse unused;
+  return state.Answered(
+      ticket, grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, why), &unused);
 }
 
 TEST(LocateStreamStateTest, AnswersInOrderOneWriteAtATime) {
@@ -87,15 +129,16 @@ TEST(LocateStreamStateTest, StopsReadingWhileTheQueueIsFull) {
 TEST(LocateStreamStateTest, BadPointEndsTheStreamAfterTheAnswersBeforeIt) {
   LocateStreamState state;
   Point(state, 1);
-  Actions bad =
-      state.PointRead(Status::InvalidArgument("non-finite"), LocateResult());
+  Actions bad = Located(
+      state, grpc::Status(grpc::StatusCode::INVALID_ARGUMENT, "non-finite"), 0);
   EXPECT_FALSE(bad.read);
   EXPECT_FALSE(bad.finish);
   Actions written = state.WriteDone(true);
   ASSERT_TRUE(written.finish);
   EXPECT_EQ(*written.finish, End::kBadPoint);
-  EXPECT_EQ(state.bad_point_status().code(), Status::Code::kInvalidArgument);
-  EXPECT_EQ(state.bad_point_status().message(), "non-finite");
+  EXPECT_EQ(state.bad_point_status().error_code(),
+            grpc::StatusCode::INVALID_ARGUMENT);
+  EXPECT_EQ(state.bad_point_status().error_message(), "non-finite");
 }
 
 TEST(LocateStreamStateTest, FailedWriteDropsTheRestAndEnds) {
@@ -164,6 +207,108 @@ TEST(LocateStreamStateTest, DeadlineAfterFinishChangesNothing) {
   Actions late = state.DeadlinePassed(&write_in_flight);
   EXPECT_FALSE(write_in_flight);
   EXPECT_FALSE(late.finish);
+}
+
+TEST(LocateStreamStateTest, ReadsWaitUntilTheLocateHasTheBufferNoMore) {
+  LocateStreamState state;
+  const LocateStreamState::Ticket ticket = state.PointRead();
+  v1::LocateResponse answer = AnswerFor(5);
+  Actions answered = state.Answered(ticket, grpc::Status::OK, &answer);
+  ASSERT_NE(answered.write, nullptr);
+  EXPECT_EQ(answered.write->triangle_id(), 5);
+  EXPECT_FALSE(answered.read);  // the point is still in the read buffer
+  EXPECT_TRUE(state.LocateStarted().read);
+}
+
+TEST(LocateStreamStateTest, AnswersThatComeOutOfOrderAreWrittenInOrder) {
+  LocateStreamState state;
+  Actions started;
+  const auto first = Pending(state, &started);
+  EXPECT_TRUE(started.read);  // reading goes on while the point is located
+  EXPECT_EQ(started.write, nullptr);
+  const auto second = Pending(state, &started);
+  EXPECT_TRUE(started.read);
+  EXPECT_EQ(state.queued_answers(), 2u);
+
+  Actions later = Answer(state, second, 2);
+  EXPECT_EQ(later.write, nullptr);  // the first point's answer comes first
+  Actions earlier = Answer(state, first, 1);
+  ASSERT_NE(earlier.write, nullptr);
+  EXPECT_EQ(earlier.write->triangle_id(), 1);
+  Actions written = state.WriteDone(true);
+  ASSERT_NE(written.write, nullptr);
+  EXPECT_EQ(written.write->triangle_id(), 2);
+}
+
+TEST(LocateStreamStateTest, PointsBeingLocatedCountAgainstTheQueue) {
+  LocateStreamState state;
+  Actions started;
+  LocateStreamState::Ticket first = 0;
+  for (size_t i = 0; i < LocateStreamState::kMaxQueuedAnswers; ++i) {
+    const auto ticket = Pending(state, &started);
+    if (i == 0) first = ticket;
+  }
+  EXPECT_FALSE(started.read);
+  Actions answered = Answer(state, first, 7);
+  ASSERT_NE(answered.write, nullptr);
+  EXPECT_FALSE(answered.read);  // written, not yet out of the queue
+  EXPECT_TRUE(state.WriteDone(true).read);
+}
+
+TEST(LocateStreamStateTest, AFailureWaitsForTheAnswersBeforeItAndStopsReads) {
+  LocateStreamState state;
+  const auto first = Pending(state);
+  const auto second = Pending(state);
+  EXPECT_FALSE(Fail(state, second, "second").finish);
+  // The read outstanding completes: its point comes after the failure.
+  Actions started;
+  Pending(state, &started);
+  EXPECT_FALSE(started.read);
+  EXPECT_EQ(state.queued_answers(), 2u);
+
+  Actions answered = Answer(state, first, 1);
+  ASSERT_NE(answered.write, nullptr);
+  EXPECT_FALSE(answered.finish);
+  Actions written = state.WriteDone(true);
+  EXPECT_EQ(written.write, nullptr);
+  ASSERT_TRUE(written.finish);
+  EXPECT_EQ(*written.finish, End::kBadPoint);
+  EXPECT_EQ(state.bad_point_status().error_message(), "second");
+}
+
+TEST(LocateStreamStateTest, TheEarliestFailureEndsTheStream) {
+  LocateStreamState state;
+  const auto first = Pending(state);
+  const auto second = Pending(state);
+  EXPECT_FALSE(Fail(state, second, "second").finish);
+  Actions failed = Fail(state, first, "first");
+  ASSERT_TRUE(failed.finish);
+  EXPECT_EQ(*failed.finish, End::kBadPoint);
+  EXPECT_EQ(state.bad_point_status().error_message(), "first");
+}
+
+TEST(LocateStreamStateTest, AFailureAfterTheHalfCloseStillEndsTheStream) {
+  LocateStreamState state;
+  const auto ticket = Pending(state);
+  EXPECT_FALSE(state.ReadFailed().finish);  // an answer is still to come
+  Actions failed = Fail(state, ticket, "late");
+  ASSERT_TRUE(failed.finish);
+  EXPECT_EQ(*failed.finish, End::kBadPoint);
+}
+
+TEST(LocateStreamStateTest, TheDeadlineDropsPointsBeingLocated) {
+  LocateStreamState state;
+  const auto ticket = Pending(state);
+  bool write_in_flight = true;
+  Actions expired = state.DeadlinePassed(&write_in_flight);
+  EXPECT_FALSE(write_in_flight);
+  ASSERT_TRUE(expired.finish);
+  EXPECT_EQ(*expired.finish, End::kDeadline);
+  // The answer comes after the finish: nothing to do.
+  Actions late = Answer(state, ticket, 1);
+  EXPECT_EQ(late.write, nullptr);
+  EXPECT_FALSE(late.finish);
+  EXPECT_FALSE(late.read);
 }
 
 }  // namespace

@@ -422,7 +422,22 @@ grpc::Status StreamGrid(v1::Locator::Stub& stub, const v1::GridRequest& request,
 
 std::vector<LocateResult> LocateOverStream(v1::Locator::Stub& stub,
                                            std::span<const Point2> queries) {
+  std::vector<LocateResult> answers;
+  answers.reserve(queries.size());
+  const grpc::Status status =
+      StreamPoints(stub, queries, [&](const v1::LocateResponse& response) {
+        answers.push_back(FromLocateResponse(response));
+      });
+  EXPECT_TRUE(status.ok()) << status.error_message();
+  return answers;
+}
+
+grpc::Status StreamPoints(
+    v1::Locator::Stub& stub, std::span<const Point2> queries,
+    const std::function<void(const v1::LocateResponse&)>& answered) {
   grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() +
+                       std::chrono::seconds(60));
   auto stream = stub.LocateStream(&context);
   std::thread writer([&] {
     for (const Point2& q : queries) {
@@ -430,16 +445,10 @@ std::vector<LocateResult> LocateOverStream(v1::Locator::Stub& stub,
     }
     stream->WritesDone();
   });
-  std::vector<LocateResult> answers;
-  answers.reserve(queries.size());
   v1::LocateResponse response;
-  while (stream->Read(&response)) {
-    answers.push_back(FromLocateResponse(response));
-  }
+  while (stream->Read(&response)) answered(response);
   writer.join();
-  const grpc::Status status = stream->Finish();
-  EXPECT_TRUE(status.ok()) << status.error_message();
-  return answers;
+  return stream->Finish();
 }
 
 Reference::~Reference() = default;

@@ -136,6 +136,11 @@ grpc::Status StreamGrid(v1::Locator::Stub& stub, const v1::GridRequest& request,
 // the server stops reading while its answers wait unread).
 std::vector<LocateResult> LocateOverStream(v1::Locator::Stub& stub,
                                            std::span<const Point2> queries);
+// One LocateStream carrying every query, as LocateOverStream, whatever its
+// end: `answered` sees each answer, and the stream's status is returned.
+grpc::Status StreamPoints(
+    v1::Locator::Stub& stub, std::span<const Point2> queries,
+    const std::function<void(const v1::LocateResponse&)>& answered);
 
 // CGAL's own answers for the same dataset file, built in-process.
 class Reference {

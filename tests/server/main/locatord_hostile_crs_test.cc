@@ -21,9 +21,9 @@
 #include "tests/common/gis/gis_fixtures.h"
 #include "tests/common/gis/hostile_crs.h"
 #include "tests/core/scratch_dir.h"
-#include "tests/server/main/e2e_support.h"
 #include "tests/server/http/json_api_support.h"
 #include "tests/server/http/status_e2e_support.h"
+#include "tests/server/main/e2e_support.h"
 #include "tests/testing/wait.h"
 
 namespace locator::test {
