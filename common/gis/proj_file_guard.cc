@@ -9,7 +9,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <set>
+#include <string>
 #include <string_view>
+#include <utility>
 
 #include "common/mutex.h"
 
@@ -118,8 +120,6 @@ constexpr PROJ_FILE_API kFileApi = {
     .rename_cbk = RefusedRename,
 };
 
-void IgnoreLog(void*, int, const char*) {}
-
 }  // namespace
 
 const std::vector<std::string>& ProjDataDirectories() {
@@ -144,7 +144,7 @@ GuardedProjContext::GuardedProjContext(ProjFileScope scope)
   const std::vector<std::string>& dirs = ProjDataDirectories();
   // Errors come back as Status messages; a hostile request must not fill
   // the log through PROJ's stderr logger.
-  proj_log_func(context_, nullptr, IgnoreLog);
+  proj_log_func(context_, this, &GuardedProjContext::KeepError);
   proj_context_set_enable_network(context_, 0);
   proj_context_set_fileapi(context_, &kFileApi, this);
   if (scope_ == ProjFileScope::kDataDirectories) {
@@ -158,6 +158,23 @@ GuardedProjContext::GuardedProjContext(ProjFileScope scope)
 }
 
 GuardedProjContext::~GuardedProjContext() { proj_context_destroy(context_); }
+
+void GuardedProjContext::KeepError(void* self, int level, const char* message) {
+  if (level != PJ_LOG_ERROR || message == nullptr) return;
+  std::string_view text(message);
+  // "proj_create: ...": the function is PROJ's business, not the caller's.
+  if (const size_t colon = text.find(": ");
+      colon != std::string_view::npos &&
+      text.substr(0, colon).find(' ') == std::string_view::npos) {
+    text.remove_prefix(colon + 2);
+  }
+  static_cast<GuardedProjContext*>(self)->logged_error_ =
+      std::string(text.substr(0, kMaxLoggedError));
+}
+
+std::string GuardedProjContext::TakeLoggedError() {
+  return std::exchange(logged_error_, std::string());
+}
 
 std::string GuardedProjContext::TakeRefusal() {
   std::string refusal;

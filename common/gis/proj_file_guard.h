@@ -38,6 +38,8 @@ enum class ProjFileScope { kAnyRegularFile, kDataDirectories };
 
 class GuardedProjContext {
  public:
+  static constexpr size_t kMaxLoggedError = 200;
+
   explicit GuardedProjContext(ProjFileScope scope);
   ~GuardedProjContext();
   GuardedProjContext(const GuardedProjContext&) = delete;
@@ -49,6 +51,12 @@ class GuardedProjContext {
   // The first file PROJ asked for and was refused since the last call, as
   // "'NAME' (WHY)", or "" if none was; forgets it.
   std::string TakeRefusal();
+
+  // The last error PROJ logged since the last call (without the name of
+  // the PROJ function that logged it, cut to kMaxLoggedError bytes), or ""
+  // if none was; forgets it. PROJ's error code alone is no substitute:
+  // proj_create() leaves an earlier failure's code in the context.
+  std::string TakeLoggedError();
 
   // Whether PROJ's look-up of the grid or file `name`, as a CRS names it,
   // stays where this scope lets PROJ read (a name without a directory is
@@ -66,9 +74,12 @@ class GuardedProjContext {
   // The path PROJ may use for `name`, or "" with the refusal recorded.
   std::string Vet(const char* name);
   void Refuse(const char* name, const char* why);
+  // PROJ's logger: keeps the last error.
+  static void KeepError(void* self, int level, const char* message);
 
   const ProjFileScope scope_;
   std::string refusal_;
+  std::string logged_error_;
   PJ_CONTEXT* const context_;
 };
 

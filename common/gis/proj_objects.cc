@@ -75,13 +75,16 @@ StatusOr<PjPtr> CreateCrs(GuardedProjContext& ctx, std::string_view crs) {
       text.find("type=crs") == std::string::npos) {
     text += " +type=crs";
   }
-  ctx.TakeRefusal();  // only this creation's refusals count
+  // Only this creation's refusals and errors count.
+  ctx.TakeRefusal();
+  ctx.TakeLoggedError();
   PjPtr created(text.empty() ? nullptr : proj_create(ctx.get(), text.c_str()));
   RETURN_IF_ERROR(RefusedFileError(ctx, crs));
   if (created == nullptr) {
-    return Status::InvalidArgument(
-        "unknown CRS " + QuotedCrs(crs) + ": " +
-        (text.empty() ? "empty" : LastProjError(ctx.get())));
+    std::string why = text.empty() ? "empty" : ctx.TakeLoggedError();
+    if (why.empty()) why = LastProjError(ctx.get());
+    return Status::InvalidArgument("unknown CRS " + QuotedCrs(crs) + ": " +
+                                   why);
   }
   if (!proj_is_crs(created.get())) {
     return Status::InvalidArgument(

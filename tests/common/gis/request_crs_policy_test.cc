@@ -60,6 +60,22 @@ TEST(RequestCrsPolicyTest, HostileCrssAreRefusedNamingTheFile) {
   EXPECT_FALSE(fifo.opened()) << "PROJ opened " << fifo.path();
 }
 
+// An unknown CRS gets PROJ's own words for it, whatever failed before on
+// the thread (PROJ leaves an earlier failure's code in the context).
+TEST(RequestCrsPolicyTest, AnUnknownCrsIsRefusedInWordsOfItsOwn) {
+  std::string fresh;
+  std::thread([&] {
+    fresh = CreateRequestCrs("/etc/passwd").status().message();
+  }).join();
+  EXPECT_THAT(fresh, HasSubstr("unknown CRS '/etc/passwd': "));
+  for (const std::string before :
+       {"+proj=nonsense", "GEOGCRS[", "EPSG:999999", "+proj=longlat +a=-1"}) {
+    EXPECT_FALSE(CreateRequestCrs(before).ok()) << before;
+    EXPECT_EQ(CreateRequestCrs("/etc/passwd").status().message(), fresh)
+        << "after " << before;
+  }
+}
+
 TEST(RequestCrsPolicyTest, TheLengthLimitIsNamed) {
   const std::string at_limit(kMaxRequestCrsBytes, ' ');
   EXPECT_TRUE(CheckRequestCrsLength(at_limit).ok());
