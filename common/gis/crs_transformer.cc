@@ -223,4 +223,19 @@ Status CrsTransformer::ToRequest(std::span<Point2> points) const {
   return Status::OK();
 }
 
+Status RequestTransformer(const std::string& request_crs,
+                          const std::string& dataset_crs,
+                          CrsTransformer** out) {
+  if (dataset_crs.empty()) {
+    return Status::InvalidArgument(
+        "crs: the request names CRS " + QuotedCrs(request_crs) +
+        " but the dataset has none; send points in the dataset's own "
+        "coordinates (no crs)");
+  }
+  const Status status =
+      CrsTransformer::ForThread(request_crs, dataset_crs, out);
+  if (status.ok()) return status;
+  return Status::InvalidArgument("crs: " + status.message());
+}
+
 }  // namespace locator::gis

@@ -102,6 +102,13 @@ class CrsTransformer {
   std::vector<AreaOfUse> areas_;
 };
 
+// The calling thread's transformer (ForThread) from a request's CRS to a
+// dataset's, failing as a server fails the request: InvalidArgument
+// starting "crs: ", and saying so when the dataset has no CRS. For the
+// servers and for those who route their requests.
+Status RequestTransformer(const std::string& request_crs,
+                          const std::string& dataset_crs, CrsTransformer** out);
+
 }  // namespace locator::gis
 
 #endif  // LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_

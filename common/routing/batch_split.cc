@@ -18,17 +18,18 @@ void CopyEntries(const Column& source, int from, Column* target, int to,
 }  // namespace
 
 Status SplitBatch(const v1::LocateBatchRequest& request, const ShardMap& map,
-                  BatchSplit* split) {
+                  BatchSplit* split, std::span<const Point2> where) {
   if (request.xs_size() != request.ys_size()) {
     return Status::InvalidArgument(
         "xs has " + std::to_string(request.xs_size()) + " values and ys " +
         std::to_string(request.ys_size()));
   }
-  if (!request.crs().empty()) {
+  if (!request.crs().empty() &&
+      where.size() != static_cast<size_t>(request.xs_size())) {
     return Status::InvalidArgument(
-        "a batch with a crs cannot be routed by topology (points are routed "
-        "in the dataset's own coordinates); send it to a router (locatord "
-        "--route) or transform the points first");
+        "a batch with a crs is routed by its points in the dataset's CRS, "
+        "and they were not given; send it to a router (locatord --route) or "
+        "transform the points first");
   }
   v1::LocateBatchRequest scope = request;
   scope.clear_xs();
@@ -37,10 +38,11 @@ Status SplitBatch(const v1::LocateBatchRequest& request, const ShardMap& map,
   split->positions.assign(map.num_shards(), {});
   for (int i = 0; i < request.xs_size(); ++i) {
     const Point2 p{request.xs(i), request.ys(i)};
-    const uint32_t shard = map.ShardOf(p);
+    const Point2 at = request.crs().empty() ? p : where[i];
+    const uint32_t shard = map.ShardOf(at);
     if (shard == ShardMap::kNoShard) {
       return NoShardFor(map.dataset(), static_cast<size_t>(i), p,
-                        map.TileOf(p));
+                        map.TileOf(at));
     }
     split->parts[shard].add_xs(p.x);
     split->parts[shard].add_ys(p.y);

@@ -28,13 +28,15 @@ struct BatchSplit {
   std::vector<std::vector<uint32_t>> positions;
 };
 
-// Splits `request` by `map` into *split. InvalidArgument when xs and ys
-// differ in length or the request has a CRS (points are routed in the
-// dataset's own coordinates);
-// FailedPrecondition (NoShardFor) for the first point whose tile has no
-// shard.
+// Splits `request` by `map` into *split. A request with a crs is routed by
+// `where`, its points transformed to the dataset's CRS (map.crs()), one per
+// point, and its parts keep the points as they came. InvalidArgument when
+// xs and ys differ in length or a request with a crs comes without
+// `where`; FailedPrecondition (NoShardFor) for the first point whose tile
+// has no shard.
 [[nodiscard]] Status SplitBatch(const v1::LocateBatchRequest& request,
-                                const ShardMap& map, BatchSplit* split);
+                                const ShardMap& map, BatchSplit* split,
+                                std::span<const Point2> where = {});
 
 // Merges `answers` (answers[s] to split.parts[s]; ignored for a part
 // without points) into *merged, in input order. Unavailable naming the

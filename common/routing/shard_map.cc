@@ -10,6 +10,7 @@ StatusOr<ShardMap> ShardMap::FromTopology(
     const v1::GetTopologyResponse& topology) {
   ShardMap map;
   map.dataset_ = topology.dataset();
+  map.crs_ = topology.crs();
   if (topology.shards_size() == 0) {
     return Status::InvalidArgument("topology of dataset '" + map.dataset_ +
                                    "' lists no shard");

@@ -47,6 +47,9 @@ class ShardMap {
   // Whether points go to more than one shard.
   bool sharded() const { return targets_.size() > 1; }
   const std::string& dataset() const { return dataset_; }
+  // The dataset's CRS (GetTopologyResponse.crs), in which points are
+  // routed; empty when it has none.
+  const std::string& crs() const { return crs_; }
   // The tiles, when the dataset is a tile set.
   const std::optional<TileRouter>& tiles() const { return tiles_; }
 
@@ -54,6 +57,7 @@ class ShardMap {
   ShardMap() = default;
 
   std::string dataset_;
+  std::string crs_;
   std::optional<TileRouter> tiles_;
   std::vector<uint32_t> shard_of_tile_;
   std::vector<std::string> targets_;

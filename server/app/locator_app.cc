@@ -164,7 +164,8 @@ void LocatorApp::LocateBatch(Admission call,
 
 void LocatorApp::GetTopology(const Admission& call,
                              v1::GetTopologyResponse* response) const {
-  ToGetTopologyResponse(call.dataset->name(), call.tiles.get(), response);
+  ToGetTopologyResponse(call.dataset->name(), call.engine->dataset_info().crs,
+                        call.tiles.get(), response);
 }
 
 void LocatorApp::ListDatasets(v1::ListDatasetsResponse* response) const {

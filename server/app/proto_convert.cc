@@ -266,9 +266,11 @@ void ToDatasetEntry(const EngineStats& stats, uint64_t generation,
   entry->set_generation(generation);
 }
 
-void ToGetTopologyResponse(const std::string& name, const ShardTiles* tiles,
+void ToGetTopologyResponse(const std::string& name, const std::string& crs,
+                           const ShardTiles* tiles,
                            v1::GetTopologyResponse* response) {
   response->set_dataset(name);
+  response->set_crs(crs);
   v1::TopologyShard* self = response->add_shards();
   response->set_complete(tiles == nullptr || tiles->serves_all());
   if (tiles == nullptr) return;

@@ -83,10 +83,11 @@ void ToReloadResponse(const EngineStats& stats, uint64_t generation,
 void ToDatasetEntry(const EngineStats& stats, uint64_t generation,
                     v1::DatasetEntry* entry);
 
-// The topology of dataset `name`: the tiles of a tile set and those this
-// server serves (`tiles`), or one shard serving all of a dataset that is
-// not a tile set (`tiles` null).
-void ToGetTopologyResponse(const std::string& name, const ShardTiles* tiles,
+// The topology of dataset `name` in CRS `crs`: the tiles of a tile set and
+// those this server serves (`tiles`), or one shard serving all of a dataset
+// that is not a tile set (`tiles` null).
+void ToGetTopologyResponse(const std::string& name, const std::string& crs,
+                           const ShardTiles* tiles,
                            v1::GetTopologyResponse* response);
 
 }  // namespace locator

@@ -13,20 +13,9 @@ namespace locator {
 namespace {
 
 // The calling thread's transformer from `request_crs` to the dataset's.
-// Errors name the request's field.
 Status TransformerFor(const Engine& engine, const std::string& request_crs,
                       gis::CrsTransformer** out) {
-  const std::string& dataset_crs = engine.dataset_info().crs;
-  if (dataset_crs.empty()) {
-    return Status::InvalidArgument(
-        "crs: the request names CRS " + gis::QuotedCrs(request_crs) +
-        " but the dataset has none; send points in the dataset's own "
-        "coordinates (no crs)");
-  }
-  const Status status =
-      gis::CrsTransformer::ForThread(request_crs, dataset_crs, out);
-  if (status.ok()) return status;
-  return Status::InvalidArgument("crs: " + status.message());
+  return gis::RequestTransformer(request_crs, engine.dataset_info().crs, out);
 }
 
 }  // namespace

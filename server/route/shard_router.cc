@@ -3,8 +3,10 @@
 #include <utility>
 #include <vector>
 
+#include "common/gis/crs_transformer.h"
 #include "common/routing/batch_fan_out.h"
 #include "common/routing/batch_split.h"
+#include "common/status_macros.h"
 #include "common/status_mapping.h"
 #include "server/app/batch_locator.h"
 
@@ -15,11 +17,13 @@ namespace {
 // thread (as short as routing one point); larger ones on the pool.
 constexpr int kInlineBatchPoints = 4096;
 
-grpc::Status CannotRouteCrs() {
-  return grpc::Status(
-      grpc::StatusCode::INVALID_ARGUMENT,
-      "the router routes points in the dataset's own coordinates; a request "
-      "with a crs must go to a shard or an unsharded server");
+// `points`, sent in `crs`, in the dataset's CRS (map.crs()) as a shard
+// transforms them, to route them; a shard's error when it cannot.
+Status InDatasetCrs(const std::string& crs, const ShardMap& map,
+                    std::span<Point2> points) {
+  gis::CrsTransformer* transformer = nullptr;
+  RETURN_IF_ERROR(gis::RequestTransformer(crs, map.crs(), &transformer));
+  return transformer->ToDataset(points);
 }
 
 }  // namespace
@@ -60,8 +64,9 @@ void ShardRouter::WithTopology(
 
 void ShardRouter::Locate(const v1::LocateRequest* request,
                          v1::LocateResponse* response, Call call) {
-  // Routing one point is a table lookup: short enough for this thread.
-  WithTopology(request->dataset(), /*here=*/true, call,
+  // Routing one point is a table lookup: short enough for this thread;
+  // transforming it (PROJ, perhaps making a transformer) is not.
+  WithTopology(request->dataset(), /*here=*/request->crs().empty(), call,
                [=, this](const ShardTopology::Routed& routed) {
                  ForwardLocate(request, response, call, routed);
                });
@@ -70,18 +75,22 @@ void ShardRouter::Locate(const v1::LocateRequest* request,
 void ShardRouter::ForwardLocate(const v1::LocateRequest* request,
                                 v1::LocateResponse* response, const Call& call,
                                 const ShardTopology::Routed& routed) {
-  if (!request->crs().empty()) {
-    call.finish(CannotRouteCrs());
-    return;
-  }
   // Without a point the first shard says what is wrong.
   uint32_t shard = 0;
   if (request->has_point()) {
     const Point2 p{request->point().x(), request->point().y()};
-    shard = routed.map.ShardOf(p);
+    Point2 at = p;
+    if (!request->crs().empty()) {
+      if (Status status = InDatasetCrs(request->crs(), routed.map, {&at, 1});
+          !status.ok()) {
+        call.finish(ToGrpcStatus(status));
+        return;
+      }
+    }
+    shard = routed.map.ShardOf(at);
     if (shard == ShardMap::kNoShard) {
       call.finish(ToGrpcStatus(
-          NoShardFor(routed.map.dataset(), 0, p, routed.map.TileOf(p))));
+          NoShardFor(routed.map.dataset(), 0, p, routed.map.TileOf(at))));
       return;
     }
   }
@@ -100,11 +109,13 @@ void ShardRouter::ForwardLocate(const v1::LocateRequest* request,
 void ShardRouter::LocateBatch(const v1::LocateBatchRequest* request,
                               v1::LocateBatchResponse* response, Call call) {
   // A small batch is split on this thread as a point is routed; a large
-  // one on the pool.
-  WithTopology(request->dataset(), request->xs_size() <= kInlineBatchPoints,
-               call, [=, this](const ShardTopology::Routed& routed) {
-                 RouteBatch(request, response, call, routed);
-               });
+  // one, or one to transform, on the pool.
+  WithTopology(
+      request->dataset(),
+      request->xs_size() <= kInlineBatchPoints && request->crs().empty(), call,
+      [=, this](const ShardTopology::Routed& routed) {
+        RouteBatch(request, response, call, routed);
+      });
 }
 
 void ShardRouter::RouteBatch(const v1::LocateBatchRequest* request,
@@ -118,12 +129,20 @@ void ShardRouter::RouteBatch(const v1::LocateBatchRequest* request,
     call.finish(ToGrpcStatus(valid));
     return;
   }
+  std::vector<Point2> where;
   if (!request->crs().empty()) {
-    call.finish(CannotRouteCrs());
-    return;
+    for (int i = 0; i < request->xs_size(); ++i) {
+      where.push_back({request->xs(i), request->ys(i)});
+    }
+    if (Status status = InDatasetCrs(request->crs(), routed.map, where);
+        !status.ok()) {
+      call.finish(ToGrpcStatus(status));
+      return;
+    }
   }
   BatchSplit split;
-  if (Status status = SplitBatch(*request, routed.map, &split); !status.ok()) {
+  if (Status status = SplitBatch(*request, routed.map, &split, where);
+      !status.ok()) {
     call.finish(ToGrpcStatus(status));
     return;
   }

@@ -5,17 +5,20 @@
 // (router_service.h) and the HTTP/JSON API (router_http_api.h) are thin
 // adapters over it.
 //
-// Points are routed in the dataset's coordinates: a request with a crs is
-// INVALID_ARGUMENT. A batch is validated whole first (the point limit,
-// finite coordinates: ValidateBatchRequest), so that an error names the
-// point's index in the batch. A shard's error reaches the caller with its
+// Points are routed where they are in the dataset's CRS: a request with a
+// crs has its points transformed as a shard transforms them
+// (gis::RequestTransformer, to GetTopologyResponse.crs), with a shard's
+// errors, and is sent on with its points as they came. A batch is
+// validated whole first (the point limit, finite coordinates:
+// ValidateBatchRequest), so that an error names the point's index in the
+// batch. A shard's error reaches the caller with its
 // code, the message naming the shard; a shard refusing a point it does not
 // serve also makes the router fetch the topology again.
 //
-// Topology fetches, which wait on the shards, and the splitting and merging
-// of large batches run on the router's worker pool; routing a point or a
-// small batch by a known topology runs on the calling thread (as short as
-// a gRPC reaction should be).
+// Topology fetches, which wait on the shards, transforms, and the splitting
+// and merging of large batches run on the router's worker pool; routing a
+// point or a small batch in the dataset's CRS by a known topology runs on
+// the calling thread (as short as a gRPC reaction should be).
 //
 // Thread-safety: all methods may be called concurrently.
 

@@ -12,7 +12,7 @@ bool SameTiles(const v1::GetTopologyResponse& a,
                const v1::GetTopologyResponse& b) {
   using google::protobuf::util::MessageDifferencer;
   return a.tiled() == b.tiled() && a.grid_level() == b.grid_level() &&
-         a.fingerprint() == b.fingerprint() &&
+         a.fingerprint() == b.fingerprint() && a.crs() == b.crs() &&
          MessageDifferencer::Equals(a.bounds(), b.bounds()) &&
          a.tiles_size() == b.tiles_size() &&
          std::equal(a.tiles().begin(), a.tiles().end(), b.tiles().begin(),

@@ -78,6 +78,7 @@ v1::GetTopologyResponse Topology(
     const std::vector<std::vector<uint32_t>>& shard_tiles) {
   v1::GetTopologyResponse topology;
   topology.set_dataset("big");
+  topology.set_crs("EPSG:32633");
   topology.set_tiled(true);
   topology.mutable_bounds()->set_min_x(kBox.min_x);
   topology.mutable_bounds()->set_min_y(kBox.min_y);
@@ -104,6 +105,7 @@ TEST(ShardMapTest, RoutesEachTileToTheShardListingIt) {
   EXPECT_TRUE(map->complete());
   EXPECT_TRUE(map->sharded());
   EXPECT_EQ(map->target(1), "shard1:50051");
+  EXPECT_EQ(map->crs(), "EPSG:32633");
   std::mt19937_64 random(3);
   std::uniform_real_distribution<double> x(-3, 4), y(9, 13);
   for (int i = 0; i < 1000; ++i) {
@@ -206,10 +208,20 @@ TEST(BatchSplitTest, RefusesWhatCannotBeRouted) {
   request.add_xs(0);
   EXPECT_EQ(SplitBatch(request, *map, &split).code(),
             Status::Code::kInvalidArgument);
+  // A batch with a crs is routed by its points in the dataset's CRS, and
+  // sent with its own.
   v1::LocateBatchRequest with_crs;
   with_crs.set_crs("EPSG:4326");
+  with_crs.add_xs(15);
+  with_crs.add_ys(49.6);
   EXPECT_THAT(SplitBatch(with_crs, *map, &split).message(),
-              HasSubstr("dataset's own coordinates"));
+              HasSubstr("routed by its points in the dataset's CRS"));
+  const Point2 where[] = {{kBox.min_x, kBox.min_y}};  // tile 0
+  ASSERT_TRUE(SplitBatch(with_crs, *map, &split, where).ok());
+  ASSERT_EQ(split.parts[0].xs_size(), 1);
+  EXPECT_EQ(split.parts[0].xs(0), 15);
+  EXPECT_EQ(split.parts[0].crs(), "EPSG:4326");
+  EXPECT_EQ(split.positions[0], std::vector<uint32_t>{0});
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <iomanip>
 #include <limits>
 #include <memory>
 #include <span>
@@ -19,9 +21,12 @@
 #include <utility>
 #include <vector>
 
+#include "common/gis/crs_transformer.h"
+#include "locator/dataset_sources.h"
 #include "tests/server/http/http_test_client.h"
 #include "tests/server/main/e2e_support.h"
 #include "tests/server/main/tile_set_fixture.h"
+#include "tests/testing/run_binary.h"
 #include "tests/testing/test_pki.h"
 
 namespace locator::test {
@@ -360,6 +365,110 @@ TEST_F(LocatordTileSetTest, TheRouterGivesHostileSurfacesAShardsAnswers) {
   EXPECT_EQ(
       reference->Disagreements(control, LocateEach(*routed, control), false),
       "");
+}
+
+// Points sent in another CRS are routed where they are in the dataset's
+// CRS, as a shard transforms them: through the router, a tile set in UTM
+// answers lon/lat batches and locates as one server serving it whole, seams
+// included, and refuses what that server refuses with its words.
+TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
+  // The tile set, in UTM zone 33N: a 2 km square near 15°E 49.6°N.
+  const std::string csv = dir_.path() + "/utm.csv";
+  {
+    std::ofstream out(csv);
+    out << "x,y,h\n";
+    for (const Point2& p : GenerateUniform(3000, 5).points) {
+      out << std::setprecision(12) << 500000 + 2000 * p.x << ","
+          << 5500000 + 2000 * p.y << "," << 100 + 50 * p.x << "\n";
+    }
+  }
+  tiles_ = dir_.path() + "/utm_tiles";
+  const BinaryResult built =
+      RunBinary(LOCATOR_BUILD_PATH,
+                {"ogr:" + csv +
+                     "?oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y&z=h&a_srs="
+                     "EPSG:32633",
+                 "--out", tiles_, "--tile-points", "400"});
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter({}));
+  std::unique_ptr<ServerProcess> whole;
+  ASSERT_TRUE(
+      StartLocatord("tiles=" + tiles_ + "/manifest.json", {}, &whole).ok());
+  auto routed = NewStub(*router_);
+  auto reference = NewStub(*whole);
+
+  // Lon/lat queries: uniform ones and the seams between tiles, mapped from
+  // UTM with PROJ.
+  std::vector<Point2> queries;
+  for (const Point2& p : GenerateUniform(1000, 8).points) {
+    queries.push_back({499900 + 2200 * p.x, 5499900 + 2200 * p.y});
+  }
+  const std::vector<Point2> seams = TileSeamQueries(tiles_);
+  queries.insert(queries.end(), seams.begin(), seams.end());
+  auto to_lon_lat = gis::CrsTransformer::Create("EPSG:4326", "EPSG:32633");
+  ASSERT_TRUE(to_lon_lat.ok()) << to_lon_lat.status().message();
+  ASSERT_TRUE((*to_lon_lat)->ToRequest(queries).ok());
+
+  const auto batch = [&](v1::Locator::Stub& stub,
+                         const v1::LocateBatchRequest& request,
+                         v1::LocateBatchResponse* response) {
+    grpc::ClientContext context;
+    context.set_deadline(std::chrono::system_clock::now() +
+                         std::chrono::seconds(30));
+    return stub.LocateBatch(&context, request, response);
+  };
+  v1::LocateBatchRequest request = BatchRequestFor(queries);
+  request.set_crs("EPSG:4326");
+  v1::LocateBatchResponse via_router, from_whole;
+  ASSERT_TRUE(batch(*routed, request, &via_router).ok());
+  ASSERT_TRUE(batch(*reference, request, &from_whole).ok());
+  ASSERT_EQ(via_router.types_size(), static_cast<int>(queries.size()));
+  for (size_t i = 0; i < queries.size(); ++i) {
+    const LocateResult got = FromBatchRow(via_router, i);
+    const LocateResult want = FromBatchRow(from_whole, i);
+    ASSERT_EQ(got.type, want.type) << "point " << i;
+    ASSERT_EQ(got.triangle_id, want.triangle_id) << "point " << i;
+    ASSERT_EQ(got.vertex_ids, want.vertex_ids) << "point " << i;
+    ASSERT_EQ(got.has_value, want.has_value) << "point " << i;
+    if (got.has_value) ASSERT_EQ(got.value, want.value) << "point " << i;
+  }
+  for (size_t i = 0; i < 50; ++i) {
+    v1::LocateRequest one = LocateRequestFor(queries[i * 7]);
+    one.set_crs("EPSG:4326");
+    one.set_vertices_in_request_crs(true);
+    v1::LocateResponse got, want;
+    grpc::ClientContext context, reference_context;
+    ASSERT_TRUE(routed->Locate(&context, one, &got).ok());
+    ASSERT_TRUE(reference->Locate(&reference_context, one, &want).ok());
+    EXPECT_EQ(got.triangle_id(), want.triangle_id());
+    EXPECT_EQ(got.vertices(0).SerializeAsString(),
+              want.vertices(0).SerializeAsString());
+  }
+
+  // Refused as the whole set's server refuses them: a point outside the
+  // CRS's area of use, an unknown CRS, one that names a file.
+  for (const auto& [crs, far] : {std::pair{"EPSG:4326", Point2{170, -80}},
+                                 std::pair{"EPSG:999999", Point2{15, 49.6}},
+                                 std::pair{"/etc/passwd", Point2{15, 49.6}}}) {
+    std::vector<Point2> points(queries.begin(), queries.begin() + 20);
+    points[13] = far;
+    v1::LocateBatchRequest refused = BatchRequestFor(points);
+    refused.set_crs(crs);
+    const grpc::Status status = batch(*routed, refused, &via_router);
+    const grpc::Status want = batch(*reference, refused, &from_whole);
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::INVALID_ARGUMENT) << crs;
+    EXPECT_EQ(status.error_code(), want.error_code()) << crs;
+    EXPECT_EQ(status.error_message(), want.error_message()) << crs;
+    v1::LocateRequest one = LocateRequestFor(far);
+    one.set_crs(crs);
+    v1::LocateResponse unused;
+    grpc::ClientContext context, reference_context;
+    const grpc::Status located = routed->Locate(&context, one, &unused);
+    const grpc::Status wanted =
+        reference->Locate(&reference_context, one, &unused);
+    EXPECT_EQ(located.error_code(), wanted.error_code()) << crs;
+    EXPECT_EQ(located.error_message(), wanted.error_message()) << crs;
+  }
 }
 
 // Shards that serve mutual TLS only are reached by a router given the
