@@ -1,16 +1,19 @@
 #include "client/shard_routes.h"
 
+#include <string>
 #include <utility>
+#include <vector>
 
+#include "common/gis/crs_transformer.h"
 #include "common/routing/batch_fan_out.h"
 #include "common/routing/batch_split.h"
 #include "common/status_mapping.h"
 
 namespace locator {
 
-ShardRoutes::ShardRoutes(ShardMap map,
+ShardRoutes::ShardRoutes(ShardMap map, std::string crs,
                          std::vector<std::unique_ptr<LocatorClient>> shards)
-    : map_(std::move(map)), shards_(std::move(shards)) {}
+    : map_(std::move(map)), crs_(std::move(crs)), shards_(std::move(shards)) {}
 
 grpc::Status ShardRoutes::Create(const v1::GetTopologyResponse& topology,
                                  const ChannelOptions& channel,
@@ -36,19 +39,37 @@ grpc::Status ShardRoutes::Create(const v1::GetTopologyResponse& topology,
     shards.push_back(std::make_unique<LocatorClient>(
         CreateLocatorChannel(options), deadline, scope));
   }
-  routes->reset(new ShardRoutes(*std::move(map), std::move(shards)));
+  routes->reset(new ShardRoutes(*std::move(map), scope.crs, std::move(shards)));
   return grpc::Status::OK;
 }
 
 LocatorClient& ShardRoutes::ClientFor(const Point2& point) const {
-  return *shards_[map_.ShardOf(point)];
+  Point2 at = point;
+  // A point PROJ cannot map is refused by any shard, in the same words.
+  if (!crs_.empty() &&
+      !gis::RequestPointsToDataset(crs_, map_.crs(), {&at, 1}).ok()) {
+    return *shards_[0];
+  }
+  return *shards_[map_.ShardOf(at)];
 }
 
 void ShardRoutes::StartLocateBatch(const v1::LocateBatchRequest* request,
                                    v1::LocateBatchResponse* response,
                                    Completion done) const {
+  std::vector<Point2> where;
+  if (!request->crs().empty()) {
+    for (int i = 0; i < request->xs_size(); ++i) {
+      where.push_back({request->xs(i), request->ys(i)});
+    }
+    if (Status status =
+            gis::RequestPointsToDataset(request->crs(), map_.crs(), where);
+        !status.ok()) {
+      done(ToGrpcStatus(status));
+      return;
+    }
+  }
   BatchSplit split;
-  if (Status status = SplitBatch(*request, map_, &split); !status.ok()) {
+  if (Status status = SplitBatch(*request, map_, &split, where); !status.ok()) {
     done(ToGrpcStatus(status));
     return;
   }

@@ -4,7 +4,9 @@
 // map. A Locate goes to the shard of its point; a LocateBatch is split by
 // shard (common/routing/batch_split.h), the parts sent at once, each with
 // a context of its own and the client's deadline, and the answers merged in
-// input order; the first failing part cancels the others.
+// input order; the first failing part cancels the others. Points in the
+// scope's crs are routed where PROJ puts them in the dataset's CRS
+// (gis::RequestPointsToDataset, as a shard maps them) and sent as they are.
 //
 // Thread-safety: immutable after Create(); calls may start from any
 // thread.
@@ -17,6 +19,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "client/locator_client.h"
@@ -50,9 +53,11 @@ class ShardRoutes {
                         Completion done) const;
 
  private:
-  ShardRoutes(ShardMap map, std::vector<std::unique_ptr<LocatorClient>> shards);
+  ShardRoutes(ShardMap map, std::string crs,
+              std::vector<std::unique_ptr<LocatorClient>> shards);
 
   const ShardMap map_;
+  const std::string crs_;  // the scope's: the CRS of the points routed
   const std::vector<std::unique_ptr<LocatorClient>> shards_;
 };
 

@@ -238,4 +238,12 @@ Status RequestTransformer(const std::string& request_crs,
   return Status::InvalidArgument("crs: " + status.message());
 }
 
+Status RequestPointsToDataset(const std::string& request_crs,
+                              const std::string& dataset_crs,
+                              std::span<Point2> points) {
+  CrsTransformer* transformer = nullptr;
+  RETURN_IF_ERROR(RequestTransformer(request_crs, dataset_crs, &transformer));
+  return transformer->ToDataset(points);
+}
+
 }  // namespace locator::gis

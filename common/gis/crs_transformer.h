@@ -109,6 +109,13 @@ class CrsTransformer {
 Status RequestTransformer(const std::string& request_crs,
                           const std::string& dataset_crs, CrsTransformer** out);
 
+// Maps `points` from a request's CRS to a dataset's in place, as a server
+// maps a request's points (RequestTransformer, then ToDataset), with its
+// errors: for those who route requests by where their points are.
+Status RequestPointsToDataset(const std::string& request_crs,
+                              const std::string& dataset_crs,
+                              std::span<Point2> points);
+
 }  // namespace locator::gis
 
 #endif  // LOCATOR_COMMON_GIS_CRS_TRANSFORMER_H_

@@ -6,7 +6,6 @@
 #include "common/gis/crs_transformer.h"
 #include "common/routing/batch_fan_out.h"
 #include "common/routing/batch_split.h"
-#include "common/status_macros.h"
 #include "common/status_mapping.h"
 #include "server/app/batch_locator.h"
 
@@ -16,15 +15,6 @@ namespace {
 // Batches up to this many points are split and merged on the calling
 // thread (as short as routing one point); larger ones on the pool.
 constexpr int kInlineBatchPoints = 4096;
-
-// `points`, sent in `crs`, in the dataset's CRS (map.crs()) as a shard
-// transforms them, to route them; a shard's error when it cannot.
-Status InDatasetCrs(const std::string& crs, const ShardMap& map,
-                    std::span<Point2> points) {
-  gis::CrsTransformer* transformer = nullptr;
-  RETURN_IF_ERROR(gis::RequestTransformer(crs, map.crs(), &transformer));
-  return transformer->ToDataset(points);
-}
 
 }  // namespace
 
@@ -81,7 +71,8 @@ void ShardRouter::ForwardLocate(const v1::LocateRequest* request,
     const Point2 p{request->point().x(), request->point().y()};
     Point2 at = p;
     if (!request->crs().empty()) {
-      if (Status status = InDatasetCrs(request->crs(), routed.map, {&at, 1});
+      if (Status status = gis::RequestPointsToDataset(
+              request->crs(), routed.map.crs(), {&at, 1});
           !status.ok()) {
         call.finish(ToGrpcStatus(status));
         return;
@@ -134,7 +125,8 @@ void ShardRouter::RouteBatch(const v1::LocateBatchRequest* request,
     for (int i = 0; i < request->xs_size(); ++i) {
       where.push_back({request->xs(i), request->ys(i)});
     }
-    if (Status status = InDatasetCrs(request->crs(), routed.map, where);
+    if (Status status = gis::RequestPointsToDataset(request->crs(),
+                                                    routed.map.crs(), where);
         !status.ok()) {
       call.finish(ToGrpcStatus(status));
       return;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -21,6 +22,8 @@
 #include <utility>
 #include <vector>
 
+#include "client/locator_client.h"
+#include "common/channel_options.h"
 #include "common/gis/crs_transformer.h"
 #include "locator/dataset_sources.h"
 #include "tests/server/http/http_test_client.h"
@@ -367,6 +370,32 @@ TEST_F(LocatordTileSetTest, TheRouterGivesHostileSurfacesAShardsAnswers) {
       "");
 }
 
+// "" when `got` and `want`, two answers for the same point, agree: the same
+// kind of location and the same triangle, or for a point on an edge (a
+// vertex) triangles sharing it, which any walk may name; the same value.
+std::string Disagreement(const LocateResult& got, const LocateResult& want) {
+  if (got.type != want.type) return "another type";
+  int shared = 0;
+  for (const int64_t v : got.vertex_ids) {
+    shared += std::count(want.vertex_ids.begin(), want.vertex_ids.end(), v);
+  }
+  const bool degenerate =
+      got.type == LocationType::kEdge || got.type == LocationType::kVertex;
+  if (!degenerate && got.triangle_id != want.triangle_id) {
+    return "triangle " + std::to_string(got.triangle_id) + ", not " +
+           std::to_string(want.triangle_id);
+  }
+  if (degenerate && shared < (got.type == LocationType::kVertex ? 1 : 2)) {
+    return "no shared edge or vertex";
+  }
+  if (got.has_value != want.has_value) return "a value where none is due";
+  if (got.has_value && !(std::abs(got.value - want.value) <=
+                         1e-9 * (1 + std::abs(want.value)))) {
+    return "value " + std::to_string(got.value);
+  }
+  return "";
+}
+
 // Points sent in another CRS are routed where they are in the dataset's
 // CRS, as a shard transforms them: through the router, a tile set in UTM
 // answers lon/lat batches and locates as one server serving it whole, seams
@@ -424,13 +453,10 @@ TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
   ASSERT_TRUE(batch(*reference, request, &from_whole).ok());
   ASSERT_EQ(via_router.types_size(), static_cast<int>(queries.size()));
   for (size_t i = 0; i < queries.size(); ++i) {
-    const LocateResult got = FromBatchRow(via_router, i);
-    const LocateResult want = FromBatchRow(from_whole, i);
-    ASSERT_EQ(got.type, want.type) << "point " << i;
-    ASSERT_EQ(got.triangle_id, want.triangle_id) << "point " << i;
-    ASSERT_EQ(got.vertex_ids, want.vertex_ids) << "point " << i;
-    ASSERT_EQ(got.has_value, want.has_value) << "point " << i;
-    if (got.has_value) ASSERT_EQ(got.value, want.value) << "point " << i;
+    ASSERT_EQ(
+        Disagreement(FromBatchRow(via_router, i), FromBatchRow(from_whole, i)),
+        "")
+        << "point " << i;
   }
   for (size_t i = 0; i < 50; ++i) {
     v1::LocateRequest one = LocateRequestFor(queries[i * 7]);
@@ -443,6 +469,41 @@ TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
     EXPECT_EQ(got.triangle_id(), want.triangle_id());
     EXPECT_EQ(got.vertices(0).SerializeAsString(),
               want.vertices(0).SerializeAsString());
+  }
+
+  // A client routing by the topology itself maps the points as the router
+  // does.
+  RequestScope scope;
+  scope.crs = "EPSG:4326";
+  const ChannelOptions to_router{.target = router_->target()};
+  LocatorClient client(CreateLocatorChannel(to_router),
+                       std::chrono::seconds(30), scope);
+  ASSERT_TRUE(client.RouteByTopology(to_router).ok());
+  std::vector<double> xs, ys;
+  for (const Point2& q : queries) {
+    xs.push_back(q.x);
+    ys.push_back(q.y);
+  }
+  v1::LocateBatchResponse by_client;
+  ASSERT_TRUE(client
+                  .LocateBatch(
+                      xs, ys,
+                      {.vertex_ids = true, .barycentric = true, .values = true},
+                      &by_client)
+                  .ok());
+  ASSERT_EQ(by_client.triangle_ids_size(), from_whole.triangle_ids_size());
+  for (size_t i = 0; i < queries.size(); ++i) {
+    ASSERT_EQ(
+        Disagreement(FromBatchRow(by_client, i), FromBatchRow(from_whole, i)),
+        "")
+        << "point " << i;
+  }
+  for (size_t i = 0; i < queries.size(); i += 97) {
+    v1::LocateResponse one;
+    ASSERT_TRUE(client.Locate(queries[i], &one).ok()) << i;
+    EXPECT_EQ(
+        Disagreement(FromLocateResponse(one), FromBatchRow(from_whole, i)), "")
+        << "point " << i;
   }
 
   // Refused as the whole set's server refuses them: a point outside the
