@@ -20,9 +20,9 @@ HttpResponse NotRouted(const HttpRequest& request) {
   return ApiError(Status::NotFound(
       "the router has no route " +
       QuotedInput(request.method + " " + request.path) +
-      " (POST /v1/datasets/{name}:locate, :locateBatch, GET "
-      "/v1/datasets/{name}:topology); profiles, grids, tiles and the "
-      "elevation APIs are answered by any shard"));
+      " (POST /v1/datasets/{name}:locate, :locateBatch, :profile, GET "
+      "/v1/datasets/{name}:topology); grids, tiles and the elevation APIs "
+      "are a shard's"));
 }
 
 // One HTTP call's request and response, alive until it is answered.
@@ -52,7 +52,8 @@ void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
   }
   const std::string name(path.substr(kPrefix.size(), colon - kPrefix.size()));
   const std::string_view method = path.substr(colon + 1);
-  const bool post = method == "locate" || method == "locateBatch";
+  const bool post =
+      method == "locate" || method == "locateBatch" || method == "profile";
   if (!post && method != "topology") {
     reply(NotRouted(request));
     return;
@@ -85,6 +86,17 @@ void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
                                            status.error_message()));
             }};
   };
+  // A POST's body is the request, for the dataset the path names.
+  const auto forward = [&]<typename Request, typename Response>(
+                           void (ShardRouter::*route)(const Request*, Response*,
+                                                      ShardRouter::Call)) {
+    auto exchange = std::make_shared<Exchange<Request, Response>>();
+    if (Status bad = ParseBody(request, name, &exchange->request); !bad.ok()) {
+      reply(ApiError(bad));
+      return;
+    }
+    (router_->*route)(&exchange->request, &exchange->response, call(exchange));
+  };
   if (method == "topology") {
     auto exchange = std::make_shared<
         Exchange<v1::GetTopologyRequest, v1::GetTopologyResponse>>();
@@ -92,22 +104,11 @@ void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
     router_->GetTopology(&exchange->request, &exchange->response,
                          call(exchange));
   } else if (method == "locate") {
-    auto exchange =
-        std::make_shared<Exchange<v1::LocateRequest, v1::LocateResponse>>();
-    if (Status bad = ParseBody(request, name, &exchange->request); !bad.ok()) {
-      reply(ApiError(bad));
-      return;
-    }
-    router_->Locate(&exchange->request, &exchange->response, call(exchange));
+    forward(&ShardRouter::Locate);
+  } else if (method == "locateBatch") {
+    forward(&ShardRouter::LocateBatch);
   } else {
-    auto exchange = std::make_shared<
-        Exchange<v1::LocateBatchRequest, v1::LocateBatchResponse>>();
-    if (Status bad = ParseBody(request, name, &exchange->request); !bad.ok()) {
-      reply(ApiError(bad));
-      return;
-    }
-    router_->LocateBatch(&exchange->request, &exchange->response,
-                         call(exchange));
+    forward(&ShardRouter::Profile);
   }
 }
 

@@ -5,12 +5,13 @@
 //   POST /v1/datasets/{name}:locate        LocateRequest -> LocateResponse
 //   POST /v1/datasets/{name}:locateBatch   LocateBatchRequest
 //                                          -> LocateBatchResponse
+//   POST /v1/datasets/{name}:profile       ProfileRequest -> ProfileResponse
 //   GET  /v1/datasets/{name}:topology      -> GetTopologyResponse
 //
 // in the JSON of locatord's own API (server/http/json/json_api.h: the same
 // bodies, answers and error shape), routed by ShardRouter. Every other path
-// is 404 naming these: profiles, grids, terrain tiles and the elevation
-// APIs are a shard's (any shard answers them whole). HTTP carries no
+// is 404 naming these: grids, terrain tiles and the elevation APIs are a
+// shard's. HTTP carries no
 // deadline: each call gets the router's default (60 s without one), and
 // the caller's authorization header goes on to the shards.
 //

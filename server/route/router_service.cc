@@ -28,18 +28,6 @@ grpc::Status NotRouted(std::string_view method) {
                           "; call a shard (GetTopology lists them)");
 }
 
-// The shard serving `p` in `dataset`, whose pages a profile or grid there
-// touches; 0 (any shard answers those whole) while the topology is not
-// known or when no shard serves p.
-size_t ShardServing(const ShardTopology& topology, const std::string& dataset,
-                    const Point2& p) {
-  const std::shared_ptr<const ShardTopology::Routed> routed =
-      topology.Known(dataset);
-  if (routed == nullptr) return 0;
-  const uint32_t owner = routed->map.ShardOf(p);
-  return owner == ShardMap::kNoShard ? 0 : owner;
-}
-
 }  // namespace
 
 RouterService::RouterService(ShardRouter* router,
@@ -114,17 +102,9 @@ grpc::ServerUnaryReactor* ForwardUnary(
 grpc::ServerUnaryReactor* RouterService::Profile(
     grpc::CallbackServerContext* context, const v1::ProfileRequest* request,
     v1::ProfileResponse* response) {
-  // The first vertex's shard, when its coordinates are the dataset's.
-  const size_t shard =
-      request->crs().empty() && request->vertices_size() > 0
-          ? ShardServing(*topology_, request->dataset(),
-                         {request->vertices(0).x(), request->vertices(0).y()})
-          : 0;
-  return ForwardUnary(
-      context, topology_, ShardContext(*context), shard, request, response,
-      [](auto* async, auto* call, auto* req, auto* resp, auto done) {
-        async->Profile(call, req, resp, std::move(done));
-      });
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  router_->Profile(request, response, CallOf(context, reactor));
+  return reactor;
 }
 
 grpc::ServerUnaryReactor* RouterService::GetStats(
@@ -197,8 +177,8 @@ grpc::ServerWriteReactor<v1::GridResponse>* RouterService::Grid(
     grpc::CallbackServerContext* context, const v1::GridRequest* request) {
   // The centre's shard (halves first: the box may span the doubles).
   const v1::BoundingBox& box = request->box();
-  const size_t shard = ShardServing(
-      *topology_, request->dataset(),
+  const size_t shard = router_->ShardNear(
+      request->dataset(),
       {box.min_x() / 2 + box.max_x() / 2, box.min_y() / 2 + box.max_y() / 2});
   return new GridRelay(topology_, shard, ShardContext(*context), *request);
 }

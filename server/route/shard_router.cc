@@ -167,6 +167,31 @@ void ShardRouter::RouteBatch(const v1::LocateBatchRequest* request,
               call.finish);
 }
 
+void ShardRouter::Profile(const v1::ProfileRequest* request,
+                          v1::ProfileResponse* response, Call call) {
+  // The first vertex's shard, when its coordinates are the dataset's.
+  const size_t shard =
+      request->crs().empty() && request->vertices_size() > 0
+          ? ShardNear(request->dataset(),
+                      {request->vertices(0).x(), request->vertices(0).y()})
+          : 0;
+  std::shared_ptr<grpc::ClientContext> context = call.new_context();
+  topology_->async(shard)->Profile(
+      context.get(), request, response,
+      [this, context, shard, finish = call.finish](grpc::Status status) {
+        finish(FromShard(*topology_, shard, status));
+      });
+}
+
+size_t ShardRouter::ShardNear(const std::string& dataset,
+                              const Point2& p) const {
+  const std::shared_ptr<const ShardTopology::Routed> routed =
+      topology_->Known(dataset);
+  if (routed == nullptr) return 0;
+  const uint32_t owner = routed->map.ShardOf(p);
+  return owner == ShardMap::kNoShard ? 0 : owner;
+}
+
 void ShardRouter::GetTopology(const v1::GetTopologyRequest* request,
                               v1::GetTopologyResponse* response, Call call) {
   WithTopology(

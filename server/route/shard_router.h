@@ -1,7 +1,8 @@
 // ShardRouter: what a router (locatord --route) does with a call, whatever
 // transport brought it: Locate to the shard of its point, LocateBatch split
-// by shard and merged in input order (common/routing/batch_split.h), and
-// GetTopology from the shards' (ShardTopology). The gRPC service
+// by shard and merged in input order (common/routing/batch_split.h),
+// Profile to the shard of its first vertex, and GetTopology from the
+// shards' (ShardTopology). The gRPC service
 // (router_service.h) and the HTTP/JSON API (router_http_api.h) are thin
 // adapters over it.
 //
@@ -63,6 +64,15 @@ class ShardRouter {
                    v1::LocateBatchResponse* response, Call call);
   void GetTopology(const v1::GetTopologyRequest* request,
                    v1::GetTopologyResponse* response, Call call);
+  // To the shard of the line's first vertex (any shard answers a profile
+  // whole: ShardNear).
+  void Profile(const v1::ProfileRequest* request, v1::ProfileResponse* response,
+               Call call);
+
+  // The shard whose pages a profile or grid about `p` in `dataset`'s
+  // coordinates touches: the one serving p; 0 (any shard answers those
+  // whole) while the topology is not known or when no shard serves p.
+  size_t ShardNear(const std::string& dataset, const Point2& p) const;
 
   ShardTopology& topology() const { return *topology_; }
 

@@ -605,12 +605,46 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
       SendHttp(http_port, "GET", "/v1/datasets/tiles:topology", &reply).ok());
   EXPECT_EQ(reply.status, 200u);
   EXPECT_THAT(reply.body, HasSubstr("\"complete\":true"));
+  // A profile across the tiles, as a shard answers it over gRPC.
+  v1::ProfileRequest line;
+  line.set_dataset("tiles");
+  for (const Point2& p : {Point2{0.05, 0.1}, Point2{0.95, 0.9}}) {
+    v1::Point* vertex = line.add_vertices();
+    vertex->set_x(p.x);
+    vertex->set_y(p.y);
+  }
+  v1::ProfileResponse over_grpc_profile;
+  grpc::ClientContext profile_context;
+  ASSERT_TRUE(NewStub(*shard0_)
+                  ->Profile(&profile_context, line, &over_grpc_profile)
+                  .ok());
+  ASSERT_GT(over_grpc_profile.breakpoints_size(), 10);
+  line.clear_dataset();
+  std::string profile_body;
+  ASSERT_TRUE(
+      google::protobuf::util::MessageToJsonString(line, &profile_body).ok());
+  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:profile", &reply,
+                       profile_body)
+                  .ok());
+  ASSERT_EQ(reply.status, 200u) << reply.body;
+  v1::ProfileResponse over_http_profile;
+  ASSERT_TRUE(google::protobuf::util::JsonStringToMessage(reply.body,
+                                                          &over_http_profile)
+                  .ok());
+  EXPECT_EQ(over_http_profile.SerializeAsString(),
+            over_grpc_profile.SerializeAsString());
+  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:profile", &reply,
+                       "{\"vertices\": [{\"x\": 1e999, \"y\": 0}]}")
+                  .ok());
+  EXPECT_EQ(reply.status, 400u) << reply.body;
+
   // A shard's own routes are not the router's; bad bodies are 400.
   ASSERT_TRUE(
       SendHttp(http_port, "GET", "/v1/datasets/tiles/tiles/0/0/0.png", &reply)
           .ok());
   EXPECT_EQ(reply.status, 404u);
-  EXPECT_THAT(reply.body, HasSubstr("answered by any shard"));
+  EXPECT_THAT(reply.body,
+              HasSubstr("tiles and the elevation APIs are a shard's"));
   ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
                        "{\"point\": {\"x\": \"NaN\", \"y\": 1}}")
                   .ok());
