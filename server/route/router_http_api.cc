@@ -20,9 +20,9 @@ HttpResponse NotRouted(const HttpRequest& request) {
   return ApiError(Status::NotFound(
       "the router has no route " +
       QuotedInput(request.method + " " + request.path) +
-      " (POST /v1/datasets/{name}:locate, :locateBatch, :profile, GET "
-      "/v1/datasets/{name}:topology); grids, tiles and the elevation APIs "
-      "are a shard's"));
+      " (POST /v1/datasets/{name}:locate, :locateBatch, :profile, :grid, "
+      "GET /v1/datasets/{name}:topology); terrain tiles and the elevation "
+      "APIs are a shard's"));
 }
 
 // One HTTP call's request and response, alive until it is answered.
@@ -52,8 +52,8 @@ void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
   }
   const std::string name(path.substr(kPrefix.size(), colon - kPrefix.size()));
   const std::string_view method = path.substr(colon + 1);
-  const bool post =
-      method == "locate" || method == "locateBatch" || method == "profile";
+  const bool post = method == "locate" || method == "locateBatch" ||
+                    method == "profile" || method == "grid";
   if (!post && method != "topology") {
     reply(NotRouted(request));
     return;
@@ -107,8 +107,10 @@ void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
     forward(&ShardRouter::Locate);
   } else if (method == "locateBatch") {
     forward(&ShardRouter::LocateBatch);
-  } else {
+  } else if (method == "profile") {
     forward(&ShardRouter::Profile);
+  } else {
+    forward(&ShardRouter::GridWhole);
   }
 }
 

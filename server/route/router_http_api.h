@@ -6,12 +6,14 @@
 //   POST /v1/datasets/{name}:locateBatch   LocateBatchRequest
 //                                          -> LocateBatchResponse
 //   POST /v1/datasets/{name}:profile       ProfileRequest -> ProfileResponse
+//   POST /v1/datasets/{name}:grid          GridRequest -> one GridResponse
 //   GET  /v1/datasets/{name}:topology      -> GetTopologyResponse
 //
 // in the JSON of locatord's own API (server/http/json/json_api.h: the same
-// bodies, answers and error shape), routed by ShardRouter. Every other path
-// is 404 naming these: grids, terrain tiles and the elevation APIs are a
-// shard's. HTTP carries no
+// bodies, answers and error shape, and a :grid held to
+// --http-max-grid-cells), routed by ShardRouter. Every other path is 404
+// naming these: terrain tiles and the elevation APIs are a shard's. HTTP
+// carries no
 // deadline: each call gets the router's default (60 s without one), and
 // the caller's authorization header goes on to the shards.
 //

@@ -35,7 +35,8 @@ void RunRouter(std::string_view program, const ServerConfig& config) {
   channel.security = config.shard_security;
   ShardTopology topology(config.shards, channel, kTopologyDeadline);
   ShardRouter router(&topology, std::max<size_t>(2, config.serving.threads),
-                     config.serving.max_batch_points);
+                     config.serving.max_batch_points,
+                     config.http_max_grid_cells);
   RouterService service(&router, config.serving.transport.default_deadline);
   std::unique_ptr<ServerRunner> runner;
   if (Status started =

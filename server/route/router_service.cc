@@ -175,12 +175,8 @@ RouterService::LocateStream(grpc::CallbackServerContext* context) {
 
 grpc::ServerWriteReactor<v1::GridResponse>* RouterService::Grid(
     grpc::CallbackServerContext* context, const v1::GridRequest* request) {
-  // The centre's shard (halves first: the box may span the doubles).
-  const v1::BoundingBox& box = request->box();
-  const size_t shard = router_->ShardNear(
-      request->dataset(),
-      {box.min_x() / 2 + box.max_x() / 2, box.min_y() / 2 + box.max_y() / 2});
-  return new GridRelay(topology_, shard, ShardContext(*context), *request);
+  return new GridRelay(topology_, router_->ShardOfGrid(*request),
+                       ShardContext(*context), *request);
 }
 
 }  // namespace locator

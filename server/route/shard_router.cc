@@ -8,6 +8,7 @@
 #include "common/routing/batch_split.h"
 #include "common/status_mapping.h"
 #include "server/app/batch_locator.h"
+#include "server/route/grid_collector.h"
 
 namespace locator {
 namespace {
@@ -24,9 +25,10 @@ grpc::Status FromShard(const ShardTopology& topology, size_t shard,
 }
 
 ShardRouter::ShardRouter(ShardTopology* topology, size_t threads,
-                         size_t max_batch_points)
+                         size_t max_batch_points, uint64_t max_whole_grid_cells)
     : topology_(topology),
       max_batch_points_(max_batch_points),
+      max_whole_grid_cells_(max_whole_grid_cells),
       pool_(threads) {}
 
 void ShardRouter::WithTopology(
@@ -181,6 +183,19 @@ void ShardRouter::Profile(const v1::ProfileRequest* request,
       [this, context, shard, finish = call.finish](grpc::Status status) {
         finish(FromShard(*topology_, shard, status));
       });
+}
+
+void ShardRouter::GridWhole(const v1::GridRequest* request,
+                            v1::GridResponse* whole, Call call) {
+  GridCollector::Start(topology_, ShardOfGrid(*request), call.new_context(),
+                       request, max_whole_grid_cells_, whole, call.finish);
+}
+
+size_t ShardRouter::ShardOfGrid(const v1::GridRequest& request) const {
+  // Halves first: the box may span the doubles.
+  const v1::BoundingBox& box = request.box();
+  return ShardNear(request.dataset(), {box.min_x() / 2 + box.max_x() / 2,
+                                       box.min_y() / 2 + box.max_y() / 2});
 }
 
 size_t ShardRouter::ShardNear(const std::string& dataset,

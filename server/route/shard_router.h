@@ -1,7 +1,8 @@
 // ShardRouter: what a router (locatord --route) does with a call, whatever
 // transport brought it: Locate to the shard of its point, LocateBatch split
 // by shard and merged in input order (common/routing/batch_split.h),
-// Profile to the shard of its first vertex, and GetTopology from the
+// Profile to the shard of its first vertex, a grid read whole from the shard
+// of its centre (for an answer in one message), and GetTopology from the
 // shards' (ShardTopology). The gRPC service
 // (router_service.h) and the HTTP/JSON API (router_http_api.h) are thin
 // adapters over it.
@@ -52,8 +53,10 @@ class ShardRouter {
   };
 
   // Routes to the shards of `topology` (which must outlive it) with
-  // `threads` workers, refusing batches of more than `max_batch_points`.
-  ShardRouter(ShardTopology* topology, size_t threads, size_t max_batch_points);
+  // `threads` workers, refusing batches of more than `max_batch_points` and
+  // grids in one message (GridWhole) of more than `max_whole_grid_cells`.
+  ShardRouter(ShardTopology* topology, size_t threads, size_t max_batch_points,
+              uint64_t max_whole_grid_cells);
 
   // The calls; `request` and `response` must live until call.finish ran.
   // Locate makes at most one shard call (call.new_context runs at most
@@ -68,6 +71,14 @@ class ShardRouter {
   // whole: ShardNear).
   void Profile(const v1::ProfileRequest* request, v1::ProfileResponse* response,
                Call call);
+
+  // To the shard of the grid's centre (ShardOfGrid), read whole into one
+  // message (GridCollector): a grid of more than max_whole_grid_cells is
+  // RESOURCE_EXHAUSTED.
+  void GridWhole(const v1::GridRequest* request, v1::GridResponse* whole,
+                 Call call);
+  // The shard whose pages `request`'s grid touches: ShardNear its centre.
+  size_t ShardOfGrid(const v1::GridRequest& request) const;
 
   // The shard whose pages a profile or grid about `p` in `dataset`'s
   // coordinates touches: the one serving p; 0 (any shard answers those
@@ -92,6 +103,7 @@ class ShardRouter {
 
   ShardTopology* const topology_;
   const size_t max_batch_points_;
+  const uint64_t max_whole_grid_cells_;
   WorkerPool pool_;
 };
 

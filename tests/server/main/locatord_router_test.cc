@@ -573,7 +573,8 @@ TEST_F(LocatordTileSetTest, TheRouterReachesTlsShardsWithTheShardTlsFlags) {
 // The router's HTTP/JSON API answers browsers as the gRPC router does.
 TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter(
-      {"--http-listen", "127.0.0.1:0", "--http-max-body-bytes", "4096"}));
+      {"--http-listen", "127.0.0.1:0", "--http-max-body-bytes", "4096",
+       "--http-max-grid-cells", "1000"}));
   auto stub = NewStub(*router_);
   ASSERT_TRUE(router_->WaitForListening().ok());  // its HTTP line
   const int http_port = router_->port();
@@ -637,6 +638,49 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
                        "{\"vertices\": [{\"x\": 1e999, \"y\": 0}]}")
                   .ok());
   EXPECT_EQ(reply.status, 400u) << reply.body;
+
+  // A grid in one JSON answer, as a shard streams it over gRPC; one past
+  // the router's --http-max-grid-cells is refused naming it.
+  v1::GridRequest grid;
+  grid.set_dataset("tiles");
+  grid.mutable_box()->set_min_x(-0.1);
+  grid.mutable_box()->set_min_y(0.05);
+  grid.mutable_box()->set_max_x(1.1);
+  grid.mutable_box()->set_max_y(0.95);
+  grid.set_width(40);
+  grid.set_height(25);
+  grid.set_nodata(-1);
+  v1::GridResponse streamed;
+  ASSERT_TRUE(StreamGrid(*NewStub(*shard1_), grid, &streamed).ok());
+  grid.clear_dataset();
+  std::string grid_body;
+  ASSERT_TRUE(
+      google::protobuf::util::MessageToJsonString(grid, &grid_body).ok());
+  ASSERT_TRUE(
+      SendHttp(http_port, "POST", "/v1/datasets/tiles:grid", &reply, grid_body)
+          .ok());
+  ASSERT_EQ(reply.status, 200u) << reply.body.substr(0, 300);
+  v1::GridResponse over_http_grid;
+  ASSERT_TRUE(
+      google::protobuf::util::JsonStringToMessage(reply.body, &over_http_grid)
+          .ok());
+  EXPECT_EQ(over_http_grid.header().SerializeAsString(),
+            streamed.header().SerializeAsString());
+  EXPECT_EQ(over_http_grid.rows(), 25u);
+  ASSERT_EQ(over_http_grid.values_size(), 40 * 25);
+  for (int v = 0; v < over_http_grid.values_size(); ++v) {
+    // A cell on an edge may take its value from either face.
+    ASSERT_NEAR(over_http_grid.values(v), streamed.values(v), 1e-9) << v;
+  }
+  grid.set_height(26);
+  grid_body.clear();
+  ASSERT_TRUE(
+      google::protobuf::util::MessageToJsonString(grid, &grid_body).ok());
+  ASSERT_TRUE(
+      SendHttp(http_port, "POST", "/v1/datasets/tiles:grid", &reply, grid_body)
+          .ok());
+  EXPECT_EQ(reply.status, 429u) << reply.body;
+  EXPECT_THAT(reply.body, HasSubstr("--http-max-grid-cells"));
 
   // A shard's own routes are not the router's; bad bodies are 400.
   ASSERT_TRUE(
