@@ -68,6 +68,19 @@ std::vector<Point2> TileSeamQueries(const std::string& dir) {
   return queries;
 }
 
+v1::GridRequest GridAcrossTheTiles(uint32_t width, uint32_t height) {
+  v1::GridRequest grid;
+  grid.set_dataset("tiles");
+  grid.mutable_box()->set_min_x(-0.1);
+  grid.mutable_box()->set_min_y(0.05);
+  grid.mutable_box()->set_max_x(1.1);
+  grid.mutable_box()->set_max_y(0.95);
+  grid.set_width(width);
+  grid.set_height(height);
+  grid.set_nodata(-1);
+  return grid;
+}
+
 void LocatordTileSetTest::SetUp() {
   csv_ = dir_.path() + "/survey.csv";
   WriteUniformCsv(csv_, 20000, 9);

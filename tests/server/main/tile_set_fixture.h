@@ -9,12 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "common/channel_security.h"
 #include "locator/geometry.h"
+#include "locator/v1/locator.pb.h"
 #include "tests/core/scratch_dir.h"
 #include "tests/server/main/e2e_support.h"
 
@@ -26,6 +28,10 @@ std::vector<std::string> FilesIn(const std::string& dir);
 // Tile corners and border midpoints, and the midpoints of edges whose ends
 // are in different tiles, read from the tile files in `dir`.
 std::vector<Point2> TileSeamQueries(const std::string& dir);
+
+// A grid of `width` x `height` cells over the tile set (dataset "tiles")
+// and beyond it (nodata -1 there).
+v1::GridRequest GridAcrossTheTiles(uint32_t width, uint32_t height);
 
 class LocatordTileSetTest : public ::testing::Test {
  protected:
