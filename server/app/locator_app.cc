@@ -130,7 +130,7 @@ void LocatorApp::LocateBatch(Admission call,
                              const v1::LocateBatchRequest& request,
                              BatchLocator::CallControl control,
                              v1::LocateBatchResponse* response,
-                             OutsideAreaOfUse outside) {
+                             BatchFor batch_for) {
   StatusOr<QueryOptions> options = QueryOptionsOf(request);
   if (!options.ok()) {
     control.finish(options.status());
@@ -142,13 +142,13 @@ void LocatorApp::LocateBatch(Admission call,
   // Each block is transformed where it is located, on its shard's thread.
   batch_locator_.Run(
       request,
-      [call = std::move(call), options = *std::move(options), outside](
+      [call = std::move(call), options = *std::move(options), batch_for](
           std::span<Point2> points, size_t first_index,
           std::vector<LocateResult>* results,
           const std::function<bool()>& keep_going) {
-        if (outside == OutsideAreaOfUse::kNoValue) {
-          return LocateBatchWhereDefined(*call.engine, call.tiles.get(),
-                                         options, points, results, keep_going);
+        if (batch_for == BatchFor::kElevation) {
+          return LocateBatchWhereDefined(*call.engine, options, points, results,
+                                         keep_going);
         }
         RETURN_IF_ERROR(
             PointsInDatasetCrs(*call.engine, options.crs, points, first_index));

@@ -155,17 +155,25 @@ class LocatorApp {
   // a point of a tile this server does not serve (ShardTiles).
   Status LocateOn(const Admission& call, const v1::LocateRequest& request,
                   LocateResult* result) const;
-  // What LocateBatch does with a point outside the area of use of the
-  // request's CRS: fail the call (INVALID_ARGUMENT naming the point, the
-  // locator.v1 contract), or answer it OUTSIDE_CONVEX_HULL without a value,
-  // as the elevation APIs (Open Topo Data, OGC API EDR) answer null there.
-  enum class OutsideAreaOfUse { kFail, kNoValue };
+  // Whose batch LocateBatch answers.
+  enum class BatchFor {
+    // locator.v1's: a point outside the area of use of the request's CRS
+    // fails the call (INVALID_ARGUMENT naming the point), and so does a
+    // point of a tile this server does not serve (FAILED_PRECONDITION: a
+    // stale route).
+    kLocate,
+    // The elevation APIs' (Open Topo Data, OGC API EDR): a point outside
+    // the area of use is answered OUTSIDE_CONVEX_HULL without a value (they
+    // answer null there), and points of every tile are answered
+    // (LocateBatchWhereDefined).
+    kElevation,
+  };
   // LocateBatch on an admitted call, finished through control.finish (see
   // BatchLocator::Run); `request` and `response` must live until then.
   void LocateBatch(Admission call, const v1::LocateBatchRequest& request,
                    BatchLocator::CallControl control,
                    v1::LocateBatchResponse* response,
-                   OutsideAreaOfUse outside = OutsideAreaOfUse::kFail);
+                   BatchFor batch_for = BatchFor::kLocate);
   // GetTopology on an admitted call: the tiles of a tile set and those this
   // server serves, or one shard (this server) for any other dataset.
   void GetTopology(const Admission& call,

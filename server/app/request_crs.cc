@@ -42,13 +42,12 @@ Status PointsInRequestCrs(const Engine& engine, const std::string& crs,
   return transformer->ToRequest(points);
 }
 
-Status LocateBatchWhereDefined(const Engine& engine, const ShardTiles* tiles,
+Status LocateBatchWhereDefined(const Engine& engine,
                                const QueryOptions& options,
                                std::span<Point2> points,
                                std::vector<LocateResult>* results,
                                const std::function<bool()>& keep_going) {
   if (options.crs.empty()) {
-    if (tiles != nullptr) RETURN_IF_ERROR(tiles->CheckServed(points, 0));
     return engine.LocateBatch(points, results, keep_going,
                               options.interpolation, options.detail);
   }
@@ -64,9 +63,6 @@ Status LocateBatchWhereDefined(const Engine& engine, const ShardTiles* tiles,
       defined.push_back(points[i]);
       places.push_back(i);
     }
-  }
-  for (size_t k = 0; tiles != nullptr && k < defined.size(); ++k) {
-    RETURN_IF_ERROR(tiles->CheckServed(std::span(&defined[k], 1), places[k]));
   }
   std::vector<LocateResult> located;
   RETURN_IF_ERROR(engine.LocateBatch(defined, &located, keep_going,

@@ -57,9 +57,10 @@ Status PointsInRequestCrs(const Engine& engine, const std::string& crs,
 // of use of options.crs or the dataset's CRS (or one PROJ cannot map) is
 // answered kOutsideConvexHull without a value instead of failing the call:
 // the elevation APIs answer null there. `points` are transformed in place.
-// With `tiles`, a point this server does not serve fails the call
-// (ShardTiles::CheckServed), as in LocateInRequestCrs.
-Status LocateBatchWhereDefined(const Engine& engine, const ShardTiles* tiles,
+// Points of every tile are answered, on a shard too: the elevation APIs,
+// which no client routes, are answered whole by any shard, as profiles,
+// grids and terrain tiles are (every shard maps the whole mesh).
+Status LocateBatchWhereDefined(const Engine& engine,
                                const QueryOptions& options,
                                std::span<Point2> points,
                                std::vector<LocateResult>* results,

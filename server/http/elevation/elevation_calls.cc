@@ -46,7 +46,7 @@ void LocateValues(LocatorApp* app, LocatorApp::Admission call,
                 const auto& values = batch->response.values();
                 done(std::vector<double>(values.begin(), values.end()));
               }},
-      &batch->response, LocatorApp::OutsideAreaOfUse::kNoValue);
+      &batch->response, LocatorApp::BatchFor::kElevation);
 }
 
 StatusOr<std::vector<LinePoint>> LineValues(const LocatorApp& app,

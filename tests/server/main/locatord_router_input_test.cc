@@ -1,7 +1,8 @@
 // The router's inputs end to end: hostile grids and profiles get what a
 // shard gives them, and points sent in another CRS are routed where PROJ
 // puts them in the dataset's CRS, by the router and by clients routing
-// themselves, answered and refused as one server serving the whole set.
+// themselves, answered and refused as one server serving the whole set. A
+// shard answers the elevation APIs (which nobody routes) for every tile.
 
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
@@ -15,6 +16,7 @@
 #include <iomanip>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +25,7 @@
 #include "common/channel_options.h"
 #include "common/gis/crs_transformer.h"
 #include "locator/dataset_sources.h"
+#include "tests/server/http/http_test_client.h"
 #include "tests/server/main/e2e_support.h"
 #include "tests/server/main/tile_set_fixture.h"
 #include "tests/testing/run_binary.h"
@@ -205,13 +208,11 @@ std::string Disagreement(const LocateResult& got, const LocateResult& want) {
   return "";
 }
 
-// Points sent in another CRS are routed where they are in the dataset's
-// CRS, as a shard transforms them: through the router, a tile set in UTM
-// answers lon/lat batches and locates as one server serving it whole, seams
-// included, and refuses what that server refuses with its words.
-TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
-  // The tile set, in UTM zone 33N: a 2 km square near 15°E 49.6°N.
-  const std::string csv = dir_.path() + "/utm.csv";
+// A tile set in UTM zone 33N built in `dir` (a 2 km square near 15°E
+// 49.6°N: 3,000 points valued 100 m rising 50 m eastwards, tiles of 400
+// points); its directory, "" (and a test failure) if it was not built.
+std::string BuildUtmTileSet(const std::string& dir) {
+  const std::string csv = dir + "/utm.csv";
   {
     std::ofstream out(csv);
     out << "x,y,h\n";
@@ -220,14 +221,40 @@ TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
           << 5500000 + 2000 * p.y << "," << 100 + 50 * p.x << "\n";
     }
   }
-  tiles_ = dir_.path() + "/utm_tiles";
+  const std::string tiles = dir + "/utm_tiles";
   const BinaryResult built =
       RunBinary(LOCATOR_BUILD_PATH,
                 {"ogr:" + csv +
                      "?oo=X_POSSIBLE_NAMES=x&oo=Y_POSSIBLE_NAMES=y&z=h&a_srs="
                      "EPSG:32633",
-                 "--out", tiles_, "--tile-points", "400"});
-  ASSERT_EQ(built.exit_code, 0) << built.err;
+                 "--out", tiles, "--tile-points", "400"});
+  EXPECT_EQ(built.exit_code, 0) << built.err;
+  return built.exit_code == 0 ? tiles : "";
+}
+
+// Lon/lat queries over the UTM tile set in `tiles` and around it: 1,000
+// uniform ones and the seams between its tiles, mapped from UTM with PROJ;
+// none (and a test failure) if PROJ fails.
+std::vector<Point2> LonLatQueries(const std::string& tiles) {
+  std::vector<Point2> queries;
+  for (const Point2& p : GenerateUniform(1000, 8).points) {
+    queries.push_back({499900 + 2200 * p.x, 5499900 + 2200 * p.y});
+  }
+  const std::vector<Point2> seams = TileSeamQueries(tiles);
+  queries.insert(queries.end(), seams.begin(), seams.end());
+  auto to_lon_lat = gis::CrsTransformer::Create("EPSG:4326", "EPSG:32633");
+  EXPECT_TRUE(to_lon_lat.ok()) << to_lon_lat.status().message();
+  if (!to_lon_lat.ok() || !(*to_lon_lat)->ToRequest(queries).ok()) return {};
+  return queries;
+}
+
+// Points sent in another CRS are routed where they are in the dataset's
+// CRS, as a shard transforms them: through the router, a tile set in UTM
+// answers lon/lat batches and locates as one server serving it whole, seams
+// included, and refuses what that server refuses with its words.
+TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
+  tiles_ = BuildUtmTileSet(dir_.path());
+  ASSERT_FALSE(tiles_.empty());
   ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter({}));
   std::unique_ptr<ServerProcess> whole;
   ASSERT_TRUE(
@@ -235,17 +262,8 @@ TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
   auto routed = NewStub(*router_);
   auto reference = NewStub(*whole);
 
-  // Lon/lat queries: uniform ones and the seams between tiles, mapped from
-  // UTM with PROJ.
-  std::vector<Point2> queries;
-  for (const Point2& p : GenerateUniform(1000, 8).points) {
-    queries.push_back({499900 + 2200 * p.x, 5499900 + 2200 * p.y});
-  }
-  const std::vector<Point2> seams = TileSeamQueries(tiles_);
-  queries.insert(queries.end(), seams.begin(), seams.end());
-  auto to_lon_lat = gis::CrsTransformer::Create("EPSG:4326", "EPSG:32633");
-  ASSERT_TRUE(to_lon_lat.ok()) << to_lon_lat.status().message();
-  ASSERT_TRUE((*to_lon_lat)->ToRequest(queries).ok());
+  const std::vector<Point2> queries = LonLatQueries(tiles_);
+  ASSERT_FALSE(queries.empty());
 
   const auto batch = [&](v1::Locator::Stub& stub,
                          const v1::LocateBatchRequest& request,
@@ -338,6 +356,41 @@ TEST_F(LocatordTileSetTest, TheRouterRoutesPointsSentInAnotherCrs) {
         reference->Locate(&reference_context, one, &unused);
     EXPECT_EQ(located.error_code(), wanted.error_code()) << crs;
     EXPECT_EQ(located.error_message(), wanted.error_message()) << crs;
+  }
+}
+
+// The elevation APIs, which no client routes, are answered whole by any
+// shard, as profiles, grids and terrain tiles are: Open Topo Data on one
+// shard answers points of every tile as the whole set's server does.
+TEST_F(LocatordTileSetTest, AShardAnswersTheElevationApisForEveryTile) {
+  tiles_ = BuildUtmTileSet(dir_.path());
+  ASSERT_FALSE(tiles_.empty());
+  const std::string spec = "tiles=" + tiles_ + "/manifest.json";
+  std::unique_ptr<ServerProcess> shard, whole;
+  ASSERT_TRUE(StartLocatord(spec,
+                            {"--tiles", "0/2", "--http-listen", "127.0.0.1:0"},
+                            &shard)
+                  .ok());
+  ASSERT_TRUE(
+      StartLocatord(spec, {"--http-listen", "127.0.0.1:0"}, &whole).ok());
+  ASSERT_TRUE(shard->WaitForListening().ok());  // their HTTP lines
+  ASSERT_TRUE(whole->WaitForListening().ok());
+  const std::vector<Point2> queries = LonLatQueries(tiles_);
+  ASSERT_GT(queries.size(), 200u);
+  // 100 points a call (Open Topo Data's own limit).
+  for (size_t first = 0; first + 100 <= 200; first += 100) {
+    std::string path = "/opentopodata/v1/tiles?locations=";
+    for (size_t i = first; i < first + 100; ++i) {
+      std::ostringstream location;
+      location << std::setprecision(17) << queries[i].y << "," << queries[i].x;
+      path += (i == first ? "" : "|") + location.str();
+    }
+    HttpReply from_shard, from_whole;
+    ASSERT_TRUE(SendHttp(shard->port(), "GET", path, &from_shard).ok());
+    ASSERT_TRUE(SendHttp(whole->port(), "GET", path, &from_whole).ok());
+    ASSERT_EQ(from_whole.status, 200u) << from_whole.body.substr(0, 300);
+    EXPECT_EQ(from_shard.status, 200u) << from_shard.body.substr(0, 300);
+    EXPECT_EQ(from_shard.body, from_whole.body);
   }
 }
 
