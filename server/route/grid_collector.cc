@@ -77,8 +77,9 @@ std::optional<grpc::Status> GridCollector::Take() {
   }
   for (uint32_t r = message_.first_row();
        r < message_.first_row() + message_.rows(); ++r) {
-    if (row_seen_[r])
+    if (row_seen_[r]) {
       return Broken("sends row " + std::to_string(r) + " twice");
+    }
     row_seen_[r] = true;
   }
   rows_seen_ += message_.rows();
