@@ -13,6 +13,7 @@
 #include <string_view>
 #include <utility>
 
+#include "common/input_text.h"
 #include "common/mutex.h"
 
 namespace locator::gis {
@@ -168,8 +169,12 @@ void GuardedProjContext::KeepError(void* self, int level, const char* message) {
       text.substr(0, colon).find(' ') == std::string_view::npos) {
     text.remove_prefix(colon + 2);
   }
-  static_cast<GuardedProjContext*>(self)->logged_error_ =
-      std::string(text.substr(0, kMaxLoggedError));
+  // PROJ may quote the request's text: one line, bounded.
+  std::string kept = TruncatedMessage(text, kMaxLoggedError);
+  for (char& c : kept) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == '\x7f') c = ' ';
+  }
+  static_cast<GuardedProjContext*>(self)->logged_error_ = std::move(kept);
 }
 
 std::string GuardedProjContext::TakeLoggedError() {

@@ -53,7 +53,8 @@ class GuardedProjContext {
   std::string TakeRefusal();
 
   // The last error PROJ logged since the last call (without the name of
-  // the PROJ function that logged it, cut to kMaxLoggedError bytes), or ""
+  // the PROJ function that logged it, on one line, cut to kMaxLoggedError
+  // bytes), or ""
   // if none was; forgets it. PROJ's error code alone is no substitute:
   // proj_create() leaves an earlier failure's code in the context.
   std::string TakeLoggedError();

@@ -74,6 +74,17 @@ TEST(RequestCrsPolicyTest, AnUnknownCrsIsRefusedInWordsOfItsOwn) {
     EXPECT_EQ(CreateRequestCrs("/etc/passwd").status().message(), fresh)
         << "after " << before;
   }
+  // PROJ's words stay on one line, whatever the CRS's text holds.
+  for (const std::string crs :
+       {std::string("GEOGCRS[\"a\nb\x01\",DATUM[\n"),
+        std::string("+proj=\x02\n"),
+        "PROJCRS[\"" + std::string(5000, '\n') + "\""}) {
+    const std::string message = CreateRequestCrs(crs).status().message();
+    EXPECT_FALSE(message.empty());
+    EXPECT_EQ(message.find_first_of(std::string("\x01\x02\n\r", 4)),
+              std::string::npos)
+        << message;
+  }
 }
 
 TEST(RequestCrsPolicyTest, TheLengthLimitIsNamed) {
