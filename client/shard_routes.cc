@@ -15,6 +15,8 @@ ShardRoutes::ShardRoutes(ShardMap map, std::string crs,
                          std::vector<std::unique_ptr<LocatorClient>> shards)
     : map_(std::move(map)), crs_(std::move(crs)), shards_(std::move(shards)) {}
 
+ShardRoutes::~ShardRoutes() { contexts_.WaitUntilNone(); }
+
 grpc::Status ShardRoutes::Create(const v1::GetTopologyResponse& topology,
                                  const ChannelOptions& channel,
                                  std::chrono::milliseconds deadline,
@@ -74,7 +76,9 @@ void ShardRoutes::StartLocateBatch(const v1::LocateBatchRequest* request,
     return;
   }
   ShardCalls calls;
-  calls.new_context = [] { return std::make_shared<grpc::ClientContext>(); };
+  calls.new_context = [this] {
+    return contexts_.Counted(std::make_unique<grpc::ClientContext>());
+  };
   calls.start = [this](size_t shard, grpc::ClientContext* context,
                        v1::LocateBatchRequest* part,
                        v1::LocateBatchResponse* answer, ShardCalls::Done done) {

@@ -8,8 +8,12 @@
 // scope's crs are routed where PROJ puts them in the dataset's CRS
 // (gis::RequestPointsToDataset, as a shard maps them) and sent as they are.
 //
-// Thread-safety: immutable after Create(); calls may start from any
-// thread.
+// Counts the contexts of the calls it starts, and outlives them: see
+// common/in_flight.h for why the last hold on a channel must not be let go
+// on a gRPC thread.
+//
+// Thread-safety: immutable after Create() but for that count; calls may
+// start from any thread.
 
 #ifndef LOCATOR_CLIENT_SHARD_ROUTES_H_
 #define LOCATOR_CLIENT_SHARD_ROUTES_H_
@@ -24,6 +28,7 @@
 
 #include "client/locator_client.h"
 #include "common/channel_options.h"
+#include "common/in_flight.h"
 #include "common/routing/shard_map.h"
 #include "locator/v1/locator.grpc.pb.h"
 
@@ -38,6 +43,12 @@ class ShardRoutes {
   // `channel.target`), each with `deadline` and `scope`. FAILED_PRECONDITION
   // when the topology is malformed or incomplete (a client cannot reach the
   // tiles no shard serves: go through a router).
+  // Waits until the context of every call started has been deleted.
+  ~ShardRoutes();
+
+  ShardRoutes(const ShardRoutes&) = delete;
+  ShardRoutes& operator=(const ShardRoutes&) = delete;
+
   static grpc::Status Create(const v1::GetTopologyResponse& topology,
                              const ChannelOptions& channel,
                              std::chrono::milliseconds deadline,
@@ -59,6 +70,7 @@ class ShardRoutes {
   const ShardMap map_;
   const std::string crs_;  // the scope's: the CRS of the points routed
   const std::vector<std::unique_ptr<LocatorClient>> shards_;
+  mutable InFlight contexts_;
 };
 
 }  // namespace locator

@@ -3,7 +3,7 @@
 #include <random>
 #include <thread>
 
-#include "client/load/in_flight.h"
+#include "common/in_flight.h"
 
 namespace locator {
 namespace {

@@ -45,8 +45,9 @@ class CallStarter {
   QuerySource& source_;
 };
 
-// What one call keeps alive until it ends. Starters hold it by shared_ptr
-// captured in the completion, which gRPC destroys after running it.
+// What one call keeps alive until it ends. Starters make it with
+// ClientPool::NewCall() and hold it by shared_ptr captured in the
+// completion, which gRPC destroys after running it.
 template <typename Request, typename Response>
 struct InFlightCall {
   grpc::ClientContext context;

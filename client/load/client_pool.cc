@@ -14,6 +14,8 @@ ClientPool::ClientPool(const ChannelOptions& options, size_t channels,
   }
 }
 
+ClientPool::~ClientPool() { calls_.WaitUntilNone(); }
+
 grpc::Status ClientPool::RouteByTopology() {
   for (const std::unique_ptr<LocatorClient>& client : clients_) {
     if (grpc::Status status = client->RouteByTopology(channel_); !status.ok()) {

@@ -5,7 +5,11 @@
 // each side reads a connection on one thread at a time: more connections
 // let client and server use more cores.
 //
-// Owns the channels and clients. Thread-safety: thread-safe.
+// Owns the channels and clients, and counts the call objects made on them
+// (NewCall) so as to outlive them: see common/in_flight.h for why the last
+// hold on a channel must not be let go on a gRPC thread.
+//
+// Thread-safety: thread-safe.
 
 #ifndef LOCATOR_CLIENT_LOAD_CLIENT_POOL_H_
 #define LOCATOR_CLIENT_LOAD_CLIENT_POOL_H_
@@ -19,6 +23,7 @@
 #include <vector>
 
 #include "client/locator_client.h"
+#include "common/in_flight.h"
 
 namespace locator {
 
@@ -29,6 +34,11 @@ class ClientPool {
   ClientPool(const ChannelOptions& options, size_t channels,
              std::chrono::milliseconds deadline,
              const RequestScope& scope = {});
+  // Waits until every call from NewCall() has been deleted.
+  ~ClientPool();
+
+  ClientPool(const ClientPool&) = delete;
+  ClientPool& operator=(const ClientPool&) = delete;
 
   size_t size() const { return clients_.size(); }
   std::chrono::milliseconds deadline() const { return deadline_; }
@@ -40,6 +50,12 @@ class ClientPool {
   LocatorClient& client(size_t i) { return *clients_[i]; }
   // The client for the next call, round-robin.
   LocatorClient& NextClient() { return client(NextIndex()); }
+  // A new call object (one that holds a grpc::ClientContext), counted until
+  // it is deleted.
+  template <typename Call>
+  std::shared_ptr<Call> NewCall() {
+    return calls_.Counted(std::make_unique<Call>());
+  }
   // Makes every client route Locate and LocateBatch straight to the shards
   // (LocatorClient::RouteByTopology), each over channels of its own. The
   // first client's error.
@@ -47,6 +63,7 @@ class ClientPool {
 
  private:
   const std::chrono::milliseconds deadline_;
+  InFlight calls_;
   ChannelOptions channel_;  // of every channel, own_connection set
   std::vector<std::shared_ptr<grpc::Channel>> channels_;
   std::vector<std::unique_ptr<LocatorClient>> clients_;

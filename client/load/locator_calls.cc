@@ -6,7 +6,7 @@
 namespace locator {
 void UnaryLocateCalls::Start(size_t /*points*/, Done done) {
   auto call =
-      std::make_shared<InFlightCall<v1::LocateRequest, v1::LocateResponse>>();
+      pool().NewCall<InFlightCall<v1::LocateRequest, v1::LocateResponse>>();
   const Point2 point = source().Next();
   call->request.mutable_point()->set_x(point.x);
   call->request.mutable_point()->set_y(point.y);
@@ -24,8 +24,10 @@ BatchLocateCalls::BatchLocateCalls(ClientPool& pool, QuerySource& source,
     : CallStarter(pool, source), columns_(columns) {}
 
 void BatchLocateCalls::Start(size_t points, Done done) {
-  auto call = std::make_shared<
-      InFlightCall<v1::LocateBatchRequest, v1::LocateBatchResponse>>();
+  auto call =
+      pool()
+          .NewCall<
+              InFlightCall<v1::LocateBatchRequest, v1::LocateBatchResponse>>();
   v1::LocateBatchRequest& request = call->request;
   request.mutable_xs()->Resize(static_cast<int>(points), 0.0);
   request.mutable_ys()->Resize(static_cast<int>(points), 0.0);

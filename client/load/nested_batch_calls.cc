@@ -12,8 +12,9 @@ NestedBatchCalls::NestedBatchCalls(ClientPool& pool, QuerySource& source)
 }
 
 void NestedBatchCalls::Start(size_t points, Done done) {
-  auto call = std::make_shared<InFlightCall<bench::v1::NestedBatchRequest,
-                                            bench::v1::NestedBatchResponse>>();
+  auto call = pool()
+                  .NewCall<InFlightCall<bench::v1::NestedBatchRequest,
+                                        bench::v1::NestedBatchResponse>>();
   // One lock on the source per batch, as for LocateBatch, so that the
   // comparison measures the encoding alone.
   std::vector<double> xs(points), ys(points);

@@ -2,7 +2,7 @@
 
 #include <deque>
 
-#include "client/load/in_flight.h"
+#include "common/in_flight.h"
 #include "common/mutex.h"
 
 namespace locator {

@@ -71,8 +71,9 @@ void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
     return ShardRouter::Call{
         .authorization = authorization,
         .new_context =
-            [deadline, authorization] {
-              auto context = std::make_shared<grpc::ClientContext>();
+            [this, deadline, authorization] {
+              auto context = router_->topology().NewContext(
+                  std::make_unique<grpc::ClientContext>());
               context->set_deadline(deadline);
               if (authorization) {
                 context->AddMetadata("authorization", *authorization);

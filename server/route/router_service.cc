@@ -38,8 +38,8 @@ RouterService::RouterService(ShardRouter* router,
 
 std::shared_ptr<grpc::ClientContext> RouterService::ShardContext(
     const grpc::CallbackServerContext& context) const {
-  std::shared_ptr<grpc::ClientContext> shard =
-      grpc::ClientContext::FromCallbackServerContext(context);
+  std::shared_ptr<grpc::ClientContext> shard = topology_->NewContext(
+      grpc::ClientContext::FromCallbackServerContext(context));
   if (context.deadline() == std::chrono::system_clock::time_point::max()) {
     shard->set_deadline(std::chrono::system_clock::now() +
                         (default_deadline_.count() > 0

@@ -34,6 +34,8 @@ ShardTopology::ShardTopology(const std::vector<std::string>& targets,
   }
 }
 
+ShardTopology::~ShardTopology() { contexts_.WaitUntilNone(); }
+
 grpc::Status ShardTopology::Get(const std::string& dataset,
                                 const std::optional<std::string>& authorization,
                                 std::shared_ptr<const Routed>* routed) {

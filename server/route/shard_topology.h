@@ -8,6 +8,10 @@
 // A dataset that is not a tile set is served whole by every shard that has
 // it: the router sends all its points to the first shard.
 //
+// The contexts of the calls made on its channels come from NewContext(),
+// counted, and it outlives them: see common/in_flight.h for why the last
+// hold on a channel must not be let go on a gRPC thread.
+//
 // Thread-safety: all methods may be called concurrently. Get() blocks on
 // the shards on a first use: call it off the gRPC callback threads.
 
@@ -19,9 +23,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/channel_options.h"
+#include "common/in_flight.h"
 #include "common/mutex.h"
 #include "common/routing/shard_map.h"
 #include "locator/v1/locator.grpc.pb.h"
@@ -41,6 +47,11 @@ class ShardTopology {
   ShardTopology(const std::vector<std::string>& targets,
                 const ChannelOptions& channel,
                 std::chrono::milliseconds fetch_deadline);
+  // Waits until every context from NewContext() has been deleted.
+  ~ShardTopology();
+
+  ShardTopology(const ShardTopology&) = delete;
+  ShardTopology& operator=(const ShardTopology&) = delete;
 
   // The routed topology of `dataset` ("": the shards' default) into
   // *routed, fetched with `authorization` (the caller's header, if any)
@@ -62,6 +73,11 @@ class ShardTopology {
   v1::Locator::StubInterface::async_interface* async(size_t shard) const {
     return stubs_[shard]->async();
   }
+  // `context` (of a call to a shard), counted until it is deleted.
+  std::shared_ptr<grpc::ClientContext> NewContext(
+      std::unique_ptr<grpc::ClientContext> context) {
+    return contexts_.Counted(std::move(context));
+  }
 
  private:
   grpc::Status Fetch(const std::string& dataset,
@@ -73,6 +89,7 @@ class ShardTopology {
   const std::chrono::milliseconds fetch_deadline_;
   mutable Mutex mu_;
   std::map<std::string, std::shared_ptr<const Routed>> known_ GUARDED_BY(mu_);
+  InFlight contexts_;
 };
 
 }  // namespace locator
