@@ -47,14 +47,20 @@ LocateBatch per shard, sent concurrently, and its answers merged back into
 input order (the same Locations an unrouted call returns). A dataset that
 is not tiled, or served by one shard, is called on the target as without
 routing. An incomplete topology (a shard started with --tiles answers for
-itself alone) raises LocatorError FAILED_PRECONDITION; points in a `crs`
-raise INVALID_ARGUMENT (tiles are in the dataset's own coordinates: send
-those to a router). An error from a shard names it in its details.
+itself alone) raises LocatorError FAILED_PRECONDITION. Points in a `crs`
+are routed where PROJ puts them in the dataset's CRS (the topology's crs),
+as a shard maps them: that needs pyproj (Debian: python3-pyproj), over the
+same PROJ library as the server; without it they raise INVALID_ARGUMENT
+(send them to a router, which maps them itself). A call with a point PROJ
+cannot map, or outside the area of use of either CRS, goes whole to the
+first shard, which refuses it in the server's words. An error from a shard
+names it in its details.
 
 Needs grpcio and protobuf (Debian: python3-grpcio, python3-protobuf) and the
 stubs generated from proto/locator/v1/locator.proto; grid() also needs
-numpy (python3-numpy). The build puts the stubs and a copy of this module
-in build/python, so PYTHONPATH=build/python makes both importable.
+numpy (python3-numpy), and routing points in a crs pyproj (python3-pyproj).
+The build puts the stubs and a copy of this module in build/python, so
+PYTHONPATH=build/python makes both importable.
 """
 
 import bisect
@@ -390,6 +396,7 @@ class _ShardMap:
     first_cells: Tuple[int, ...]
     shard_of_tile: Tuple[int, ...]
     targets: Tuple[str, ...]
+    crs: str  # the dataset's CRS ("": none)
 
     def tile_of(self, x: float, y: float) -> int:
         """The tile holding (x, y); every point has one (HilbertCell)."""
@@ -471,7 +478,8 @@ def _shard_map(topology: locator_pb2.GetTopologyResponse
     return _ShardMap(dataset=name, bounds=bounds, grid_level=level,
                      first_cells=tuple(first_cells),
                      shard_of_tile=tuple(shard_of_tile),
-                     targets=tuple(shard.target for shard in topology.shards))
+                     targets=tuple(shard.target for shard in topology.shards),
+                     crs=topology.crs)
 
 
 def _merge_batch(parts: Sequence[Tuple[Sequence[int], Sequence[Location]]],
@@ -484,6 +492,58 @@ def _merge_batch(parts: Sequence[Tuple[Sequence[int], Sequence[Location]]],
         for i, location in zip(positions, locations):
             merged[i] = location
     return merged
+
+
+class _CrsMapper:
+    """Maps points from a request's CRS to a dataset's as a shard does
+    (common/gis/crs_transformer.h): with PROJ, in traditional GIS axis
+    order (x = longitude/easting) on both sides, a point outside the area
+    of use of either CRS refused. Raises (pyproj's errors, ValueError) when
+    PROJ cannot make the transformation."""
+
+    def __init__(self, request_crs: str, dataset_crs: str):
+        from pyproj import CRS, Transformer  # ImportError: no pyproj
+        source = CRS.from_user_input(request_crs)
+        target = CRS.from_user_input(dataset_crs)
+        lon_lat = source.geodetic_crs
+        if lon_lat is None or not lon_lat.is_geographic:
+            raise ValueError(f"CRS {request_crs!r} has no geographic base CRS")
+        self._to_dataset = Transformer.from_crs(source, target,
+                                                always_xy=True)
+        self._to_lon_lat = Transformer.from_crs(source, lon_lat,
+                                                always_xy=True)
+        self._areas = [area for area in (source.area_of_use,
+                                         target.area_of_use) if area]
+
+    def _inside(self, lon: float, lat: float) -> bool:
+        """Whether (lon, lat) is in the area of use of both CRSs."""
+        def contains(area) -> bool:
+            if not area.south <= lat <= area.north:
+                return False
+            if area.west <= area.east:
+                return area.west <= lon <= area.east
+            return lon >= area.west or lon <= area.east  # across 180 degrees
+
+        return all(map(contains, self._areas))
+
+    def to_dataset(self, xs: Sequence[float], ys: Sequence[float]
+                   ) -> Optional[Tuple[List[float], List[float]]]:
+        """The points in the dataset's CRS (non-finite ones as they are);
+        None when one cannot be mapped."""
+        xs, ys = [float(x) for x in xs], [float(y) for y in ys]
+        lons, lats = self._to_lon_lat.transform(xs, ys, errcheck=False)
+        mapped_xs, mapped_ys = self._to_dataset.transform(xs, ys,
+                                                          errcheck=False)
+        mapped_xs, mapped_ys = list(mapped_xs), list(mapped_ys)
+        for i, point in enumerate(zip(xs, ys)):
+            if not all(map(math.isfinite, point)):
+                mapped_xs[i], mapped_ys[i] = point  # split() names it
+            elif not (math.isfinite(lons[i]) and math.isfinite(lats[i]) and
+                      self._inside(lons[i], lats[i]) and
+                      math.isfinite(mapped_xs[i]) and
+                      math.isfinite(mapped_ys[i])):
+                return None
+        return mapped_xs, mapped_ys
 
 
 class LocatorClient:
@@ -520,6 +580,9 @@ class LocatorClient:
         self._route = route
         self._topologies = {}  # dataset field -> GetTopologyResponse
         self._shard_maps = {}  # dataset field -> Optional[_ShardMap]
+        # (request crs, dataset crs) -> Optional[_CrsMapper] (None: PROJ
+        # cannot map between them)
+        self._mappers = {}
         self._shards_lock = threading.Lock()
         self._shard_channels = {}  # target -> (channel, stub)
 
@@ -556,22 +619,39 @@ class LocatorClient:
                     channel, locator_pb2_grpc.LocatorStub(channel))
             return self._shard_channels[target][1]
 
-    def _routing(self, dataset: str, crs: str) -> Optional[_ShardMap]:
+    def _routing(self, dataset: str) -> Optional[_ShardMap]:
         """The shards to route a call on `dataset` to; None: call the
         target (no routing, or the dataset needs none)."""
         if not self._route:
             return None
         if dataset not in self._shard_maps:
             self._shard_maps[dataset] = _shard_map(self.topology(dataset))
-        shard_map = self._shard_maps[dataset]
-        if shard_map is not None and crs:
-            raise LocatorError(
-                "INVALID_ARGUMENT",
-                f"points in crs {crs!r} cannot be routed to the shards of "
-                f"dataset '{shard_map.dataset}': routing needs the "
-                "dataset's own coordinates (crs=\"\"), or send them to a "
-                "router (locatord --route), which transforms them")
-        return shard_map
+        return self._shard_maps[dataset]
+
+    def _routed_points(self, shard_map: _ShardMap, crs: str,
+                       xs: Sequence[float], ys: Sequence[float]
+                       ) -> Optional[Tuple[Sequence[float], Sequence[float]]]:
+        """The points where routing reads them, in the dataset's
+        coordinates: as they are without a crs; None when one cannot be
+        mapped. LocatorError INVALID_ARGUMENT without pyproj."""
+        if not crs:
+            return xs, ys
+        key = (crs, shard_map.crs)
+        if key not in self._mappers:
+            try:
+                self._mappers[key] = _CrsMapper(*key)
+            except ImportError:
+                raise LocatorError(
+                    "INVALID_ARGUMENT",
+                    f"points in crs {crs!r} are routed to the shards of "
+                    f"dataset '{shard_map.dataset}' where PROJ maps them, "
+                    "which needs pyproj (Debian: python3-pyproj): install "
+                    "it, or send them to a router (locatord --route)"
+                ) from None
+            except Exception:  # pylint: disable=broad-except
+                self._mappers[key] = None  # the first shard says why
+        mapper = self._mappers[key]
+        return None if mapper is None else mapper.to_dataset(xs, ys)
 
     def _dataset_of(self, dataset: Optional[str]) -> str:
         """The dataset field of a request: the call's, else the client's."""
@@ -591,10 +671,13 @@ class LocatorClient:
         request = locator_pb2.LocateRequest(
             point=locator_pb2.Point(x=x, y=y),
             interpolation=_interpolation(interpolation), **scope)
-        shard_map = self._routing(**scope)
+        shard_map = self._routing(scope["dataset"])
         if shard_map is None:
             return _location(self._call(self._stub.Locate, request))
-        target = shard_map.targets[shard_map.shard_of(float(x), float(y))]
+        where = self._routed_points(shard_map, scope["crs"], [x], [y])
+        shard = 0 if where is None else shard_map.shard_of(
+            float(where[0][0]), float(where[1][0]))
+        target = shard_map.targets[shard]
         return _location(self._call(self._shard_stub(target).Locate,
                                     request, shard=target or self._target))
 
@@ -617,25 +700,34 @@ class LocatorClient:
             include_vertex_ids=vertex_ids, include_barycentric=barycentric,
             include_values=values,
             interpolation=_interpolation(interpolation), **scope)
-        shard_map = self._routing(**scope)
-        if shard_map is None:
+        shard_map = self._routing(scope["dataset"])
+        where = None if shard_map is None else self._routed_points(
+            shard_map, scope["crs"], xs, ys)
+        if where is None:
+            # Unrouted, or to the first shard, which refuses what cannot
+            # be mapped.
+            target = "" if shard_map is None else shard_map.targets[0]
             request.xs.extend(xs)
             request.ys.extend(ys)
             return _batch_locations(
-                self._call(self._stub.LocateBatch, request), len(xs))
-        return self._routed_batch(request, xs, ys, shard_map)
+                self._call(self._shard_stub(target).LocateBatch, request,
+                           shard=shard_map and (target or self._target)),
+                len(xs))
+        return self._routed_batch(request, xs, ys, where, shard_map)
 
     def _routed_batch(self, request: locator_pb2.LocateBatchRequest,
                       xs: Sequence[float], ys: Sequence[float],
+                      where: Tuple[Sequence[float], Sequence[float]],
                       shard_map: _ShardMap) -> list:
-        """Locates the points at their shards: one LocateBatch with the
-        fields of `request` (which has no points) per shard with points,
-        all sent before any answer is awaited; the answers merged into
-        input order."""
+        """Locates the points at their shards, by `where` (the points in
+        the dataset's coordinates): one LocateBatch with the fields of
+        `request` (which has no points) per shard with points, all sent
+        before any answer is awaited; the answers merged into input
+        order."""
         calls = []  # (positions, shard, future)
         try:
             for target, positions in zip(shard_map.targets,
-                                         shard_map.split(xs, ys)):
+                                         shard_map.split(*where)):
                 if not positions:
                     continue
                 part = locator_pb2.LocateBatchRequest()

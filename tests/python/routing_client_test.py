@@ -445,7 +445,7 @@ class RoutedClientTest(unittest.TestCase):
         self.assertEqual(raised.exception.details,
                          f"shard {self.shard_targets[2]}: down")
 
-    def test_an_incomplete_topology_and_a_crs_raise(self):
+    def test_an_incomplete_topology_or_an_unknown_dataset_raises(self):
         from locator_client import LocatorError
         with self.routed() as routed:
             with self.assertRaises(LocatorError) as raised:
@@ -456,14 +456,85 @@ class RoutedClientTest(unittest.TestCase):
                 "topology of dataset 'partial' is incomplete: tile 1 has no "
                 "shard; route through a router (locatord --route)")
             with self.assertRaises(LocatorError) as raised:
-                routed.locate_batch([1], [1], crs="EPSG:4326")
-            self.assertEqual(raised.exception.code, "INVALID_ARGUMENT")
-            self.assertIn("routing needs the dataset's own coordinates",
-                          raised.exception.details)
-            self.assertIn("locatord --route", raised.exception.details)
-            with self.assertRaises(LocatorError) as raised:
                 routed.locate(1, 1, dataset="absent")
             self.assertEqual(raised.exception.code, "NOT_FOUND")
+        self.assertEqual([len(fake.requests) for fake in self.shards],
+                         [0, 0, 0])
+
+    def test_points_in_a_crs_are_routed_where_proj_maps_them(self):
+        from pyproj import Transformer
+        # A topology in Web Mercator metres over [0, 10]^2, queried in
+        # lon/lat: each point goes to the shard of its quadrant in metres,
+        # sent as it came. Points within a millimetre of the middle lines
+        # are left out (a round trip through lon/lat may cross them).
+        self.shards[0].topologies["mercator"] = three_shard_topology(
+            self.shard_targets, dataset="mercator")
+        self.shards[0].topologies["mercator"].crs = "EPSG:3857"
+        metres = [(x, y) for x, y in POINTS[:120]
+                  if abs(x) < 1e6 and abs(y) < 1e6 and
+                  abs(x - 5) > 1e-3 and abs(y - 5) > 1e-3]
+        lon_lat = Transformer.from_crs("EPSG:3857", "EPSG:4326",
+                                       always_xy=True)
+        xs, ys = lon_lat.transform(*zip(*metres))
+        with self.routed(dataset="mercator", crs="EPSG:4326") as routed:
+            self.assertEqual(len(routed.locate_batch(xs, ys)), len(metres))
+            for x, y in zip(xs[:10], ys[:10]):
+                routed.locate(x, y)
+        for shard, fake in enumerate(self.shards):
+            batch, *singles = fake.requests
+            mine = [i for i, p in enumerate(metres)
+                    if quadrant_shard(*p) == shard]
+            self.assertEqual(list(zip(batch.xs, batch.ys)),
+                             [(xs[i], ys[i]) for i in mine])
+            self.assertEqual((batch.dataset, batch.crs),
+                             ("mercator", "EPSG:4326"))
+            self.assertEqual([(r.point.x, r.point.y) for r in singles],
+                             [(xs[i], ys[i]) for i in mine if i < 10])
+
+    def test_points_that_cannot_be_mapped_go_whole_to_the_first_shard(self):
+        # The dataset has no CRS, the crs is unknown, a point is outside
+        # the area of use: the first shard refuses the call in the server's
+        # words.
+        self.shards[0].topologies["mercator"] = three_shard_topology(
+            self.shard_targets, dataset="mercator")
+        self.shards[0].topologies["mercator"].crs = "EPSG:3857"
+        self.shards[0].topologies["no-crs"] = three_shard_topology(
+            self.shard_targets, dataset="no-crs")
+        for dataset, crs, xs, ys in [
+                ("no-crs", "EPSG:4326", [1, 9], [1, 1]),
+                ("mercator", "EPSG:999999", [1, 9], [1, 1]),
+                ("mercator", "EPSG:4326", [1e-5, 0], [1e-5, -89.9])]:
+            self.clear_requests()
+            with self.routed(dataset=dataset, crs=crs) as routed:
+                routed.locate_batch(xs, ys)
+            (whole,) = self.shards[0].requests
+            self.assertEqual((list(whole.xs), list(whole.ys), whole.crs),
+                             (xs, ys, crs), (dataset, crs))
+            self.assertEqual([len(fake.requests) for fake in self.shards],
+                             [1, 0, 0])
+        # A point that is not finite is refused as without a crs.
+        from locator_client import LocatorError
+        with self.routed(dataset="mercator", crs="EPSG:4326") as routed:
+            with self.assertRaises(LocatorError) as raised:
+                routed.locate_batch([1e-5, math.nan], [1e-5, 0])
+        self.assertEqual(raised.exception.code, "INVALID_ARGUMENT")
+
+    def test_without_pyproj_points_in_a_crs_are_refused(self):
+        from locator_client import LocatorError
+        self.shards[0].topologies["mercator"] = three_shard_topology(
+            self.shard_targets, dataset="mercator")
+        self.shards[0].topologies["mercator"].crs = "EPSG:3857"
+        saved = sys.modules.get("pyproj")
+        sys.modules["pyproj"] = None  # import pyproj raises ImportError
+        try:
+            with self.routed(dataset="mercator", crs="EPSG:4326") as routed:
+                with self.assertRaises(LocatorError) as raised:
+                    routed.locate(1e-5, 1e-5)
+        finally:
+            sys.modules["pyproj"] = saved
+        self.assertEqual(raised.exception.code, "INVALID_ARGUMENT")
+        self.assertIn("python3-pyproj", raised.exception.details)
+        self.assertIn("locatord --route", raised.exception.details)
         self.assertEqual([len(fake.requests) for fake in self.shards],
                          [0, 0, 0])
 
