@@ -17,7 +17,7 @@ PACKAGES=(
   prometheus-cpp-dev
   libgdal-dev gdal-bin libproj-dev proj-bin libgeotiff-dev
   libpng-dev libdeflate-dev
-  python3 python3-grpcio python3-protobuf python3-numpy
+  python3 python3-grpcio python3-protobuf python3-numpy python3-pyproj
   libssl-dev
   chromium nginx openssl curl
   clang libclang-rt-14-dev lld
