@@ -164,6 +164,14 @@ bool ReceiveRequest(const CorsPolicy& cors, const HttpLimits& limits,
     (*reply)(ProblemAnswer(request, limits));
     return true;
   }
+  if (request.method == "POST" &&
+      request.path.starts_with(JsonApi::kPathPrefix) &&
+      !IsJsonContentType(request.Header("content-type"))) {
+    (*reply)(ApiError(Status::InvalidArgument("a POST to the API must have "
+                                              "Content-Type: application/json"),
+                      415));
+    return true;
+  }
   return false;
 }
 
@@ -182,13 +190,6 @@ void HttpFrontend::Route(HttpRequest request, HttpReply reply) {
     return;
   }
   if (request.path.starts_with(JsonApi::kPathPrefix)) {
-    if (request.method == "POST" &&
-        !IsJsonContentType(request.Header("content-type"))) {
-      reply(ApiError(Status::InvalidArgument("a POST to the API must have "
-                                             "Content-Type: application/json"),
-                     415));
-      return;
-    }
     api_.Handle(std::move(request), std::move(reply));
     return;
   }

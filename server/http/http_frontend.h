@@ -60,7 +60,9 @@ struct HttpOptions {
 // request first: answers a CORS preflight, makes *reply add the CORS
 // headers `cors` gives the request's origin (which must outlive the
 // reply), and answers a request the server could not read (too large,
-// malformed, over `limits`). True when the request is answered.
+// malformed, over `limits`) and a POST to the API (/v1/) that does not say
+// Content-Type: application/json (415: see above). True when the request
+// is answered.
 bool ReceiveRequest(const CorsPolicy& cors, const HttpLimits& limits,
                     const HttpRequest& request, HttpReply* reply);
 

@@ -2,17 +2,20 @@
 // browsers and curl as the gRPC router does: :locate, :locateBatch,
 // :profile, :grid (in one message, within --http-max-grid-cells) and
 // :topology; other routes are 404 naming these, bad bodies 400, bodies
-// past --http-max-body-bytes 413.
+// past --http-max-body-bytes 413, POSTs that are not JSON 415; hostile
+// grids, profiles and bodies get what a shard's HTTP API gives them.
 
 #include <gmock/gmock.h>
 #include <google/protobuf/util/json_util.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "tests/server/http/http_test_client.h"
+#include "tests/server/http/json_api_support.h"
 #include "tests/server/main/e2e_support.h"
 #include "tests/server/main/tile_set_fixture.h"
 
@@ -41,9 +44,7 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   std::string body;
   ASSERT_TRUE(google::protobuf::util::MessageToJsonString(request, &body).ok());
   HttpReply reply;
-  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locateBatch",
-                       &reply, body)
-                  .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:locateBatch", body);
   ASSERT_EQ(reply.status, 200u) << reply.body;
   v1::LocateBatchResponse over_http;
   ASSERT_TRUE(
@@ -75,9 +76,7 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   std::string profile_body;
   ASSERT_TRUE(
       google::protobuf::util::MessageToJsonString(line, &profile_body).ok());
-  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:profile", &reply,
-                       profile_body)
-                  .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:profile", profile_body);
   ASSERT_EQ(reply.status, 200u) << reply.body;
   v1::ProfileResponse over_http_profile;
   ASSERT_TRUE(google::protobuf::util::JsonStringToMessage(reply.body,
@@ -85,9 +84,8 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
                   .ok());
   EXPECT_EQ(over_http_profile.SerializeAsString(),
             over_grpc_profile.SerializeAsString());
-  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:profile", &reply,
-                       "{\"vertices\": [{\"x\": 1e999, \"y\": 0}]}")
-                  .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:profile",
+               "{\"vertices\": [{\"x\": 1e999, \"y\": 0}]}");
   EXPECT_EQ(reply.status, 400u) << reply.body;
 
   // A grid in one JSON answer, as a shard streams it over gRPC; one past
@@ -99,9 +97,7 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   std::string grid_body;
   ASSERT_TRUE(
       google::protobuf::util::MessageToJsonString(grid, &grid_body).ok());
-  ASSERT_TRUE(
-      SendHttp(http_port, "POST", "/v1/datasets/tiles:grid", &reply, grid_body)
-          .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:grid", grid_body);
   ASSERT_EQ(reply.status, 200u) << reply.body.substr(0, 300);
   v1::GridResponse over_http_grid;
   ASSERT_TRUE(
@@ -119,9 +115,7 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   grid_body.clear();
   ASSERT_TRUE(
       google::protobuf::util::MessageToJsonString(grid, &grid_body).ok());
-  ASSERT_TRUE(
-      SendHttp(http_port, "POST", "/v1/datasets/tiles:grid", &reply, grid_body)
-          .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:grid", grid_body);
   EXPECT_EQ(reply.status, 429u) << reply.body;
   EXPECT_THAT(reply.body, HasSubstr("--http-max-grid-cells"));
 
@@ -132,25 +126,155 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   EXPECT_EQ(reply.status, 404u);
   EXPECT_THAT(reply.body,
               HasSubstr("tiles and the elevation APIs are a shard's"));
-  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
-                       "{\"point\": {\"x\": \"NaN\", \"y\": 1}}")
-                  .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:locate",
+               "{\"point\": {\"x\": \"NaN\", \"y\": 1}}");
   EXPECT_EQ(reply.status, 400u) << reply.body;
-  ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
-                       "{\"pont\": 1}")
-                  .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:locate", "{\"pont\": 1}");
   EXPECT_EQ(reply.status, 400u) << reply.body;
+  // A POST that does not say it is JSON is refused, as a shard refuses it:
+  // a page of another origin can send a text/plain one without a CORS
+  // preflight.
   ASSERT_TRUE(SendHttp(http_port, "POST", "/v1/datasets/tiles:locate", &reply,
-                       "{\"point\": {\"x\": \"Infinity\", \"y\": 1}}")
+                       "{\"point\": {\"x\": 0.5, \"y\": 0.5}}")
                   .ok());
+  EXPECT_EQ(reply.status, 415u) << reply.body;
+  reply = Post(http_port, "/v1/datasets/tiles:locate",
+               "{\"point\": {\"x\": \"Infinity\", \"y\": 1}}");
   EXPECT_EQ(reply.status, 400u) << reply.body;
   // A body past --http-max-body-bytes is refused before it is read whole.
   const std::string big = "{\"xs\": [" + std::string(5000, ' ') + "]}";
-  ASSERT_TRUE(
-      SendHttp(http_port, "POST", "/v1/datasets/tiles:locateBatch", &reply, big)
-          .ok());
+  reply = Post(http_port, "/v1/datasets/tiles:locateBatch", big);
   EXPECT_EQ(reply.status, 413u) << reply.body;
   EXPECT_THAT(reply.body, HasSubstr("--http-max-body-bytes"));
+}
+
+// The JSON body of `request` for the HTTP API, whose path names the
+// dataset: the dataset field cleared.
+template <typename Request>
+std::string JsonBodyOf(Request request) {
+  request.clear_dataset();
+  std::string body;
+  EXPECT_TRUE(google::protobuf::util::MessageToJsonString(request, &body).ok());
+  return body;
+}
+
+// The answer in `reply`'s JSON body (an empty one if it does not parse).
+template <typename Response>
+Response JsonAnswer(const HttpReply& reply) {
+  Response answer;
+  EXPECT_TRUE(
+      google::protobuf::util::JsonStringToMessage(reply.body, &answer).ok())
+      << reply.body.substr(0, 200);
+  return answer;
+}
+
+// Compares the router's HTTP answers to hostile requests with a shard's
+// (over HTTP too): the same status, and on 200 answers that `same` finds
+// equal. Counts answers and refusals.
+class SameHttpOutcome {
+ public:
+  SameHttpOutcome(int router_port, int shard_port)
+      : router_port_(router_port), shard_port_(shard_port) {}
+
+  // "" when both answer `body` POSTed to `target` alike, else what
+  // differs.
+  template <typename Same>
+  std::string operator()(const std::string& target, const std::string& body,
+                         Same same) {
+    HttpReply got, want;
+    const HttpHeaders json = {{"Content-Type", "application/json"}};
+    const Status sent =
+        SendHttp(router_port_, "POST", target, &got, body, json);
+    const Status sent_to_shard =
+        SendHttp(shard_port_, "POST", target, &want, body, json);
+    const std::string request =
+        target.substr(0, 80) + " " + body.substr(0, 160);
+    if (!sent.ok() || !sent_to_shard.ok()) {
+      return request + ": " + sent.message() + " / " + sent_to_shard.message();
+    }
+    if (got.status != want.status) {
+      return request + ": " + std::to_string(got.status) + " " +
+             got.body.substr(0, 200) + " / " + std::to_string(want.status) +
+             " " + want.body.substr(0, 200);
+    }
+    ++(got.status == 200 ? answered : refused);
+    if (got.status == 200 && !same(got, want)) return request + ": answers";
+    return "";
+  }
+
+  int answered = 0, refused = 0;
+
+ private:
+  const int router_port_, shard_port_;
+};
+
+// Hostile grids and profiles through the router's HTTP API get what a
+// shard's HTTP API gives them (the same status and, on 200, the same
+// answer), as do hostile JSON bodies, and the router keeps serving.
+TEST_F(LocatordTileSetTest,
+       TheRouterGivesHostileSurfacesOverHttpAShardsAnswers) {
+  const std::vector<std::string> flags = {
+      "--http-listen",         "127.0.0.1:0", "--max-grid-cells",      "5000",
+      "--http-max-grid-cells", "5000",        "--max-profile-samples", "300"};
+  ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter(flags, flags));
+  auto routed = NewStub(*router_);
+  // Their HTTP lines, after the gRPC ones.
+  ASSERT_TRUE(router_->WaitForListening().ok());
+  ASSERT_TRUE(shard0_->WaitForListening().ok());
+  SameHttpOutcome outcome(router_->port(), shard0_->port());
+
+  const auto same_grid = [](const HttpReply& got, const HttpReply& want) {
+    const auto a = JsonAnswer<v1::GridResponse>(got);
+    const auto b = JsonAnswer<v1::GridResponse>(want);
+    if (a.header().SerializeAsString() != b.header().SerializeAsString() ||
+        a.values_size() != b.values_size()) {
+      return false;
+    }
+    for (int v = 0; v < a.values_size(); ++v) {
+      // A cell on an edge may take its value from either face; nodata
+      // may be NaN.
+      const bool both_nan = std::isnan(a.values(v)) && std::isnan(b.values(v));
+      if (!both_nan && !(std::abs(a.values(v) - b.values(v)) <= 1e-9) &&
+          a.values(v) != b.values(v)) {
+        return false;
+      }
+    }
+    return true;
+  };
+  for (const v1::GridRequest& g : HostileGrids()) {
+    const std::string dataset = g.dataset().empty() ? "tiles" : g.dataset();
+    EXPECT_EQ(
+        outcome("/v1/datasets/" + dataset + ":grid", JsonBodyOf(g), same_grid),
+        "");
+  }
+  const auto same_profile = [](const HttpReply& got, const HttpReply& want) {
+    return JsonAnswer<v1::ProfileResponse>(got).SerializeAsString() ==
+           JsonAnswer<v1::ProfileResponse>(want).SerializeAsString();
+  };
+  for (const v1::ProfileRequest& p : HostileProfiles()) {
+    EXPECT_EQ(
+        outcome("/v1/datasets/tiles:profile", JsonBodyOf(p), same_profile), "");
+  }
+  // JSON that is no request, or numbers protobuf's JSON cannot hold.
+  for (const std::string& body :
+       {std::string(), std::string("{"), std::string("[]"), std::string("null"),
+        std::string("{\"box\": \"x\"}"),
+        std::string("{\"width\": 1e400, \"height\": 2}"),
+        std::string("{\"width\": -1, \"height\": 2}"),
+        std::string("{\"cellSize\": \"-Infinity\"}"),
+        std::string("{\"samples\": 18446744073709551616}"),
+        std::string("{\"vertices\": [{\"x\": \"NaN\", \"y\": 0}, {}]}"),
+        std::string("{\"vertices\": 7}"), std::string(3000, '[')}) {
+    EXPECT_EQ(outcome("/v1/datasets/tiles:grid", body, same_grid), "");
+    EXPECT_EQ(outcome("/v1/datasets/tiles:profile", body, same_profile), "");
+  }
+  // Both kinds came: answers to compare, and refusals.
+  EXPECT_GT(outcome.answered, 10);
+  EXPECT_GT(outcome.refused, 40);
+
+  // Still serving (a failed call is a test failure).
+  const std::vector<Point2> control = {{0.5, 0.5}, {0.25, 0.75}};
+  EXPECT_EQ(LocateEach(*routed, control).size(), 2u);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <utility>
 
 #include "server/core/dataset/file_io.h"
@@ -12,6 +13,80 @@
 #include "tests/testing/run_binary.h"
 
 namespace locator::test {
+
+std::vector<double> HostileCoordinates() {
+  const double kInf = std::numeric_limits<double>::infinity();
+  return {std::numeric_limits<double>::quiet_NaN(),
+          kInf,
+          -kInf,
+          1e300,
+          -1e300,
+          4.9e-324,
+          -0.0,
+          std::numeric_limits<double>::max()};
+}
+
+std::vector<v1::GridRequest> HostileGrids() {
+  v1::GridRequest benign;
+  benign.mutable_box()->set_min_x(0.1);
+  benign.mutable_box()->set_min_y(0.2);
+  benign.mutable_box()->set_max_x(0.9);
+  benign.mutable_box()->set_max_y(0.7);
+  benign.set_width(5);
+  benign.set_height(4);
+  using Field = void (*)(v1::GridRequest&, double);
+  const Field fields[] = {
+      [](v1::GridRequest& g, double v) { g.mutable_box()->set_min_x(v); },
+      [](v1::GridRequest& g, double v) { g.mutable_box()->set_min_y(v); },
+      [](v1::GridRequest& g, double v) { g.mutable_box()->set_max_x(v); },
+      [](v1::GridRequest& g, double v) { g.mutable_box()->set_max_y(v); },
+      [](v1::GridRequest& g, double v) { g.set_nodata(v); },
+      [](v1::GridRequest& g, double v) {
+        g.clear_width();
+        g.clear_height();
+        g.set_cell_size(v);
+      }};
+  std::vector<v1::GridRequest> grids;
+  for (const double v : HostileCoordinates()) {
+    for (const Field field : fields) {
+      field(grids.emplace_back(benign), v);
+    }
+  }
+  for (const auto& [width, height] : {std::pair<uint32_t, uint32_t>{0, 4},
+                                      {5, 0},
+                                      {5000, 2},
+                                      {4294967295u, 4294967295u}}) {
+    v1::GridRequest& g = grids.emplace_back(benign);
+    g.set_width(width);
+    g.set_height(height);
+  }
+  grids.emplace_back(benign).set_interpolation(
+      static_cast<v1::Interpolation>(99));
+  grids.emplace_back(benign).set_dataset(std::string(100000, 'x'));
+  return grids;
+}
+
+std::vector<v1::ProfileRequest> HostileProfiles() {
+  v1::ProfileRequest line;
+  for (const Point2& p : {Point2{0.1, 0.1}, Point2{0.9, 0.8}}) {
+    v1::Point* vertex = line.add_vertices();
+    vertex->set_x(p.x);
+    vertex->set_y(p.y);
+  }
+  std::vector<v1::ProfileRequest> profiles;
+  for (const double v : HostileCoordinates()) {
+    for (int field = 0; field < 4; ++field) {
+      v1::Point& vertex =
+          *profiles.emplace_back(line).mutable_vertices(field / 2);
+      field % 2 == 0 ? vertex.set_x(v) : vertex.set_y(v);
+    }
+  }
+  for (const uint32_t samples : {1u, 301u, 4294967295u}) {
+    profiles.emplace_back(line).set_samples(samples);
+  }
+  profiles.emplace_back();  // no vertices
+  return profiles;
+}
 
 std::vector<std::string> FilesIn(const std::string& dir) {
   std::vector<std::string> names;
