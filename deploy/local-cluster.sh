@@ -17,9 +17,14 @@
 # (locatord --tiles K/N), one nginx upstream per shard over its R replicas
 # (each on its own port), 2 routers (locatord --route) over the shards'
 # nginx ports, and nginx's front over the routers, which locator-load
-# drives. Replica 0 of shard 1 is SIGKILLed and restarted. It also prints
-# both throughputs and their ratio, and the calls that failed during the
-# kill. The nginx config comes from deploy/nginx/locator-shards.conf.
+# drives. Every shard replica and router also serves HTTP (--http-listen),
+# behind nginx's HTTP front: the routed JSON calls to the routers, the rest
+# (tiles, the elevation APIs, the web map) to the shard replicas. Before the
+# load it checks that front with curl: a :locate and a :locateBatch through
+# a router, and a terrain tile from a shard. Replica 0 of shard 1 is
+# SIGKILLed and restarted. It also prints both throughputs and their ratio,
+# and the calls that failed during the kill. The nginx config comes from
+# deploy/nginx/locator-shards.conf.
 #
 #   bash deploy/local-cluster.sh                 # 20 s of load
 #   DURATION=60 PLOT=cluster.svg bash deploy/local-cluster.sh
@@ -175,15 +180,19 @@ wait_for() {
 
 health() { "$LOCATOR" --target "$1" --deadline-ms 1000 health; }
 
-# Ports: nginx's front first, then one for every process that listens.
+# Ports: nginx's front first, then one for every process that listens
+# (sharded: then nginx's HTTP front and every shard replica's and router's
+# HTTP port).
 if sharded; then
-  read -r -a ports <<< "$(free_ports $((1 + SHARDS + SHARDS * REPLICAS + ROUTERS + 1)))"
+  read -r -a ports <<< "$(free_ports $((1 + SHARDS + SHARDS * REPLICAS + ROUTERS + 1 \
+    + 1 + SHARDS * REPLICAS + ROUTERS)))"
 else
   read -r -a ports <<< "$(free_ports 4)"
 fi
 nginx_port=${ports[0]}
 declare -A port=()      # name -> its port
 declare -A tiles_of=()  # replica name -> its --tiles selector (sharded)
+shard_flags=()          # the locatord flags every shard replica adds
 next_port=1
 assign_port() { port[$1]=${ports[$next_port]}; next_port=$((next_port + 1)); }
 replicas=()
@@ -198,6 +207,9 @@ if sharded; then
   done
   for ((r = 0; r < ROUTERS; r++)); do assign_port "router$r"; done
   assign_port one-box
+  assign_port http-front
+  for name in "${replicas[@]}"; do assign_port "$name-http"; done
+  for ((r = 0; r < ROUTERS; r++)); do assign_port "router$r-http"; done
   # The victim: replica 0 of shard 1.
   victim_shard=1 victim_replica=0
   victim_name=shard$victim_shard-$victim_replica
@@ -216,16 +228,49 @@ if sharded; then
     "$work/tileset/manifest.json")
   [ "$tile_count" -ge "$SHARDS" ] || fail "$tile_count tiles for $SHARDS shards: lower TILE_POINTS"
   dataset_flags=(--dataset "big=$work/tileset/manifest.json")
+  # The HTTP front's tile check needs a tile set that can be drawn on a web
+  # map: one with a CRS and values (server/tiles/terrain_tile.h). The
+  # generators' points have neither, so then the shards also serve
+  # "terrain", a small tile set of 1000 points per shard with both (UTM
+  # zone 32N, in 200-point tiles: 5 per shard), split by the same --tiles.
+  # The load and the one box use big alone.
+  if python3 -c 'import json, sys
+manifest = json.load(open(sys.argv[1]))
+sys.exit(0 if manifest["crs"] and manifest["has_values"] else 1)' "$work/tileset/manifest.json"; then
+    tile_dataset=big
+  else
+    tile_dataset=terrain
+    python3 - "$work/terrain.geojson" $((1000 * SHARDS)) <<'PY'
+import json, math, random, sys
+path, count = sys.argv[1], int(sys.argv[2])
+rng = random.Random(1)
+features = []
+for _ in range(count):
+    x, y = 500000 + 10000 * rng.random(), 5000000 + 10000 * rng.random()
+    z = 100 + 50 * math.sin(x / 900) * math.cos(y / 700)
+    features.append({"type": "Feature", "properties": {},
+                     "geometry": {"type": "Point", "coordinates": [x, y, z]}})
+json.dump({"type": "FeatureCollection", "features": features}, open(path, "w"))
+PY
+    "$LOCATOR_BUILD" "$work/terrain.geojson?a_srs=EPSG:32632" --out "$work/terrain" \
+      --tile-points 200 --quiet > "$work/terrain.log" 2>&1 ||
+      { cat "$work/terrain.log" >&2; fail "locator-build failed (terrain)"; }
+    shard_flags+=(--dataset "terrain=$work/terrain/manifest.json")
+  fi
 else
   dataset_flags=(--dataset "$DATASET")
 fi
 
 # start_replica NAME: starts replica NAME on its port (again, after a kill)
 # and waits until it listens; SERVING comes later, once the dataset is built
-# (or the tile set mapped).
+# (or the tile set mapped). A shard replica also serves HTTP on a port of
+# its own.
 start_replica() {
   local name=$1 tiles=()
-  if [ -n "${tiles_of[$name]:-}" ]; then tiles=(--tiles "${tiles_of[$name]}"); fi
+  if [ -n "${tiles_of[$name]:-}" ]; then
+    tiles=(--tiles "${tiles_of[$name]}" "${shard_flags[@]}"
+           --http-listen "127.0.0.1:${port[$name-http]}")
+  fi
   mkdir -p "$work/$name/state"
   "$LOCATORD" "${dataset_flags[@]}" "${tiles[@]}" --listen "127.0.0.1:${port[$name]}" \
     --state-dir "$work/$name/state" "${retune_flags[@]}" \
@@ -275,12 +320,18 @@ if sharded; then
     for ((j = 0; j < REPLICAS; j++)); do ports_of_shard+=",${port[shard$k-$j]}"; done
     shard_args+=("$ports_of_shard")
   done
-  routers_arg=${port[router0]}
-  for ((r = 1; r < ROUTERS; r++)); do routers_arg+=",${port[router$r]}"; done
+  routers_arg=${port[router0]} routers_http_arg=${port[router0-http]}
+  for ((r = 1; r < ROUTERS; r++)); do
+    routers_arg+=",${port[router$r]}" routers_http_arg+=",${port[router$r-http]}"
+  done
+  # The HTTP ports of every replica of every shard, for the HTTP front.
+  shards_http_arg=${port[${replicas[0]}-http]}
+  for name in "${replicas[@]:1}"; do shards_http_arg+=",${port[$name-http]}"; done
   python3 - "$repo/deploy/nginx/locator-shards.conf" "$work/nginx/locator.conf" "$nginx_port" \
-    "$routers_arg" "${shard_args[@]}" <<'PY'
+    "$routers_arg" "${port[http-front]}" "$routers_http_arg" "$shards_http_arg" \
+    "${shard_args[@]}" <<'PY'
 import pathlib, re, sys
-template, out, listen, routers, *shards = sys.argv[1:]
+template, out, listen, routers, http_listen, routers_http, shards_http, *shards = sys.argv[1:]
 text = pathlib.Path(template).read_text()
 block = re.search(r"^# BEGIN SHARD 0\n.*?^# END SHARD 0\n", text, re.S | re.M)
 replica_line = r"^( *)server shard0-\d+:50051( .*)\n"
@@ -312,6 +363,24 @@ text, m = re.subn(r"listen 8080 http2;", f"listen 127.0.0.1:{listen} http2;", te
 if (n, m) != (len(router_ports), 1):
     sys.exit(f"{template}: expected {len(router_ports)} router servers and 1 front"
              f" listen line, found {n} and {m}")
+# The HTTP front: the routers' HTTP ports, every shard replica's (the
+# template's adjacent shard HTTP lines become one line per replica), and
+# its listen line.
+router_http_ports = routers_http.split(",")
+servers = iter(router_http_ports)
+text, n = re.subn(r"server router\d+:9090", lambda m: f"server 127.0.0.1:{next(servers)}", text)
+shard_http_line = r"^( *)server shard\d+-\d+:9090( .*)\n"
+template_lines = re.findall(shard_http_line, text, re.M)
+if not template_lines:
+    sys.exit(f"{template}: expected shard HTTP servers (server shardK-J:9090), found none")
+indent, options = template_lines[0]
+servers = "".join(f"{indent}server 127.0.0.1:{p}{options}\n" for p in shards_http.split(","))
+text, s = re.subn(f"(?:{shard_http_line})+", lambda m: servers, text, flags=re.M)
+text, m = re.subn(r"listen 8088;", f"listen 127.0.0.1:{http_listen};", text)
+if (n, s, m) != (len(router_http_ports), 1, 1):
+    sys.exit(f"{template}: expected {len(router_http_ports)} router HTTP servers, 1 run of"
+             f" adjacent shard HTTP servers and 1 HTTP front listen line, found {n}, {s}"
+             f" and {m}")
 pathlib.Path(out).write_text(text)
 PY
 else
@@ -354,14 +423,15 @@ pids[nginx]=$!
 target="127.0.0.1:$nginx_port"
 
 # The routers: stateless; each asks every shard (through its nginx port)
-# for its topology, and forwards each call to its point's shard.
+# for its topology, and forwards each call to its point's shard: the gRPC
+# calls and, on its HTTP port, the routed JSON calls.
 if sharded; then
   shard_targets=127.0.0.1:${port[nginx-shard0]}
   for ((k = 1; k < SHARDS; k++)); do shard_targets+=",127.0.0.1:${port[nginx-shard$k]}"; done
   for ((r = 0; r < ROUTERS; r++)); do
     mkdir -p "$work/router$r"
     "$LOCATORD" --route --shards "$shard_targets" --listen "127.0.0.1:${port[router$r]}" \
-      >> "$work/router$r/locatord.log" 2>&1 &
+      --http-listen "127.0.0.1:${port[router$r-http]}" >> "$work/router$r/locatord.log" 2>&1 &
     pids[router$r]=$!
   done
   for ((r = 0; r < ROUTERS; r++)); do
@@ -371,6 +441,76 @@ if sharded; then
 fi
 wait_for 30 "${pids[nginx]}" "$work/nginx/error.log" health "$target"
 log "nginx on $target"
+
+# nginx's HTTP front (sharded), checked with curl before the load: the
+# routed calls must reach a router and the rest a shard. A :locate of the
+# centre of big's box must name a triangle; a :locateBatch of 16 points all
+# over the box must answer them all, which only a router does (a shard
+# refuses the points of the other shards' tiles with 400); a terrain tile
+# at the centre of the tile set's TileJSON must come back as a PNG, which
+# only a shard sends (a router 404s tiles).
+if sharded; then
+  http_front="127.0.0.1:${port[http-front]}"
+  log "nginx's HTTP front on $http_front: :locate, :locateBatch, :profile, :grid and :topology to the routers, the rest to the shard replicas"
+  mkdir -p "$work/http"
+  # front_call NAME METHOD PATH [JSON]: calls PATH on the HTTP front (with
+  # the JSON body, if given), writes the answer's body to $work/http/NAME
+  # and prints its status and content type (status 000: no answer).
+  front_call() {
+    local args=(-sS --max-time 60 -o "$work/http/$1" -w '%{http_code} %{content_type}' -X "$2")
+    if [ $# -ge 4 ]; then args+=(-H 'Content-Type: application/json' --data-binary "$4"); fi
+    : > "$work/http/$1"
+    curl "${args[@]}" "http://$http_front$3" 2> "$work/http/$1.err" || true
+  }
+  # front_fail NAME WHAT REPLY: fails, showing the answer's body (or curl's
+  # error).
+  front_fail() {
+    fail "$2 through the HTTP front answered ${3:-nothing}:
+$(head -c 2000 "$work/http/$1")$(cat "$work/http/$1.err")"
+  }
+  read -r locate_body batch_body <<< "$(python3 - "$work/tileset/manifest.json" <<'PY'
+import json, sys
+x0, y0, x1, y1 = json.load(open(sys.argv[1]))["bounds"]
+grid = [(i + 0.5) / 4 for i in range(4)]
+locate = {"point": {"x": (x0 + x1) / 2, "y": (y0 + y1) / 2}}
+batch = {"xs": [x0 + (x1 - x0) * u for u in grid for v in grid],
+         "ys": [y0 + (y1 - y0) * v for u in grid for v in grid]}
+print(json.dumps(locate, separators=(",", ":")), json.dumps(batch, separators=(",", ":")))
+PY
+)"
+  what="POST /v1/datasets/big:locate $locate_body"
+  reply=$(front_call locate.json POST /v1/datasets/big:locate "$locate_body")
+  [[ $reply == "200 application/json"* ]] || front_fail locate.json "$what" "$reply"
+  if ! triangle=$(python3 -c 'import json, sys
+print(int(json.load(open(sys.argv[1]))["triangle_id"]))' "$work/http/locate.json" 2>/dev/null) ||
+    [ "$triangle" -lt 0 ]; then
+    front_fail locate.json "$what" "$reply, no triangle"
+  fi
+  log "HTTP front: $what: $reply, triangle $triangle"
+  what="POST /v1/datasets/big:locateBatch (16 points all over the box)"
+  reply=$(front_call batch.json POST /v1/datasets/big:locateBatch "$batch_body")
+  [[ $reply == "200 application/json"* ]] || front_fail batch.json "$what" "$reply"
+  python3 -c 'import json, sys
+sys.exit(len(json.load(open(sys.argv[1]))["triangle_ids"]) != 16)' "$work/http/batch.json" 2>/dev/null ||
+    front_fail batch.json "$what" "$reply, not 16 answers"
+  log "HTTP front: $what: $reply, 16 answers (a router's: no shard holds all their tiles)"
+  what="GET /v1/datasets/$tile_dataset/tiles.json"
+  reply=$(front_call tiles.json GET "/v1/datasets/$tile_dataset/tiles.json")
+  [[ $reply == "200 application/json"* ]] || front_fail tiles.json "$what" "$reply"
+  # The XYZ tile holding the TileJSON's centre [lon, lat, zoom].
+  tile=$(python3 -c 'import json, math, sys
+lon, lat, z = json.load(open(sys.argv[1]))["center"]
+n = 2 ** int(z)
+x = int((lon + 180) / 360 * n)
+y = int((1 - math.asinh(math.tan(math.radians(lat))) / math.pi) / 2 * n)
+print(f"{int(z)}/{x}/{y}")' "$work/http/tiles.json" 2>/dev/null) || front_fail tiles.json "$what" "$reply, no centre"
+  what="GET /v1/datasets/$tile_dataset/tiles/$tile.png"
+  reply=$(front_call tile.png GET "/v1/datasets/$tile_dataset/tiles/$tile.png")
+  if [ "$reply" != "200 image/png" ] || [ "$(head -c 4 "$work/http/tile.png" | tail -c 3)" != PNG ]; then
+    front_fail tile.png "$what" "$reply"
+  fi
+  log "HTTP front: $what: $reply, $(wc -c < "$work/http/tile.png") bytes (a shard's: a router has no tiles)"
+fi
 
 plot_args=()
 if [ -n "${PLOT:-}" ]; then plot_args=(--plot "$PLOT"); fi
@@ -440,11 +580,12 @@ unset "pids[load]"
 
 # What the summary needs to know of the setup, as JSON.
 if sharded; then
-  listeners="\"$nginx_port\": \"front\""
+  listeners="\"$nginx_port\": \"front\", \"${port[http-front]}\": \"http front\""
   for ((k = 0; k < SHARDS; k++)); do listeners+=", \"${port[nginx-shard$k]}\": \"shard $k\""; done
   setup="{\"shard\": $victim_shard, \"replica\": $victim_replica, \"shards\": $SHARDS, \"replicas\": $REPLICAS,
     \"routers\": $ROUTERS, \"tiles\": $tile_count, \"tile_points\": $TILE_POINTS,
-    \"one_box_exit_code\": $one_box_status, \"nginx_listeners\": {$listeners}}"
+    \"one_box_exit_code\": $one_box_status, \"nginx_listeners\": {$listeners},
+    \"http_front\": \"$http_front\"}"
 else
   setup="{\"replica\": $victim_replica}"
 fi
@@ -538,7 +679,7 @@ if sharded:
     summary.update(
         sharded=dict(shards=setup["shards"], replicas_per_shard=setup["replicas"],
                      routers=setup["routers"], tiles=setup["tiles"],
-                     tile_points=setup["tile_points"]),
+                     tile_points=setup["tile_points"], http_front=setup["http_front"]),
         nginx_502_by_listener=nginx_502,
         failed_calls_during_kill=phases[1]["failed_calls"] if len(phases) > 1 else None,
         throughput=dict(
