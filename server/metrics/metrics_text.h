@@ -13,6 +13,10 @@
 
 namespace locator {
 
+// The Content-Type of MetricsText()'s answer to GET /metrics.
+inline constexpr char kMetricsContentType[] =
+    "text/plain; version=0.0.4; charset=utf-8";
+
 // Collects every collectable, in order, and serializes all their families.
 std::string MetricsText(
     const std::vector<std::shared_ptr<prometheus::Collectable>>& collectables);

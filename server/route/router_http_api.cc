@@ -9,6 +9,7 @@
 #include "common/input_text.h"
 #include "server/http/api_error.h"
 #include "server/http/json/api_answers.h"
+#include "server/metrics/metrics_text.h"
 
 namespace locator {
 namespace {
@@ -21,8 +22,8 @@ HttpResponse NotRouted(const HttpRequest& request) {
       "the router has no route " +
       QuotedInput(request.method + " " + request.path) +
       " (POST /v1/datasets/{name}:locate, :locateBatch, :profile, :grid, "
-      "GET /v1/datasets/{name}:topology); terrain tiles and the elevation "
-      "APIs are a shard's"));
+      "GET /v1/datasets/{name}:topology, GET /metrics); terrain tiles and "
+      "the elevation APIs are a shard's"));
 }
 
 // One HTTP call's request and response, alive until it is answered.
@@ -35,14 +36,22 @@ struct Exchange {
 }  // namespace
 
 RouterHttpApi::RouterHttpApi(ShardRouter* router,
-                             std::chrono::milliseconds deadline)
+                             std::chrono::milliseconds deadline,
+                             std::function<std::string()> metrics_text)
     : router_(router),
       deadline_(deadline.count() > 0
                     ? deadline
-                    : std::chrono::milliseconds(kLastResortDeadline)) {}
+                    : std::chrono::milliseconds(kLastResortDeadline)),
+      metrics_text_(std::move(metrics_text)) {}
 
 void RouterHttpApi::Handle(HttpRequest request, HttpReply reply) {
   const std::string_view path = request.path;
+  if (path == "/metrics") {
+    reply(request.method == "GET"
+              ? HttpResponse{200, kMetricsContentType, metrics_text_()}
+              : MethodNotAllowed(request, "GET"));
+    return;
+  }
   const size_t colon = path.rfind(':');
   if (!path.starts_with(kPrefix) || colon == std::string_view::npos ||
       colon < kPrefix.size() ||

@@ -8,6 +8,8 @@
 //   POST /v1/datasets/{name}:profile       ProfileRequest -> ProfileResponse
 //   POST /v1/datasets/{name}:grid          GridRequest -> one GridResponse
 //   GET  /v1/datasets/{name}:topology      -> GetTopologyResponse
+//   GET  /metrics                          the router's gRPC calls, as
+//                                          locatord's /metrics counts them
 //
 // in the JSON of locatord's own API (server/http/json/json_api.h: the same
 // bodies, answers and error shape, and a :grid held to
@@ -23,6 +25,8 @@
 #define LOCATOR_SERVER_ROUTE_ROUTER_HTTP_API_H_
 
 #include <chrono>
+#include <functional>
+#include <string>
 
 #include "server/http/http_server.h"
 #include "server/route/shard_router.h"
@@ -32,7 +36,9 @@ namespace locator {
 class RouterHttpApi {
  public:
   // Routes with `router` (which must outlive it); calls get `deadline`.
-  RouterHttpApi(ShardRouter* router, std::chrono::milliseconds deadline);
+  // GET /metrics answers `metrics_text()` (the Prometheus text).
+  RouterHttpApi(ShardRouter* router, std::chrono::milliseconds deadline,
+                std::function<std::string()> metrics_text);
 
   // Answers `request` through `reply`, possibly on another thread.
   void Handle(HttpRequest request, HttpReply reply);
@@ -40,6 +46,7 @@ class RouterHttpApi {
  private:
   ShardRouter* const router_;
   const std::chrono::milliseconds deadline_;
+  const std::function<std::string()> metrics_text_;
 };
 
 }  // namespace locator

@@ -4,12 +4,17 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "common/channel_options.h"
 #include "server/config/server_log.h"
 #include "server/http/cors_policy.h"
 #include "server/http/http_frontend.h"
 #include "server/main/server_runner.h"
+#include "server/metrics/metrics_text.h"
+#include "server/metrics/rpc_metrics.h"
 #include "server/route/router_http_api.h"
 #include "server/route/router_service.h"
 #include "server/route/shard_router.h"
@@ -38,9 +43,22 @@ void RunRouter(std::string_view program, const ServerConfig& config) {
                      config.serving.max_batch_points,
                      config.http_max_grid_cells);
   RouterService service(&router, config.serving.transport.default_deadline);
+  // With --http-listen, every gRPC call is counted for /metrics, as
+  // locatord counts its own.
+  auto registry = std::make_shared<prometheus::Registry>();
+  std::optional<RpcMetrics> rpc_metrics;
+  std::vector<
+      std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>>
+      interceptors;
+  if (config.http_enabled()) {
+    rpc_metrics.emplace(
+        registry.get(),
+        ServerRunner::MethodsServed({v1::Locator::service_full_name()}));
+    interceptors.push_back(rpc_metrics->NewInterceptorFactory());
+  }
   std::unique_ptr<ServerRunner> runner;
-  if (Status started =
-          ServerRunner::Start(program, config.serving, {&service}, {}, &runner);
+  if (Status started = ServerRunner::Start(program, config.serving, {&service},
+                                           std::move(interceptors), &runner);
       !started.ok()) {
     std::cerr << program << ": " << started.message() << std::endl;
     ExitWithoutTeardown(1);
@@ -51,7 +69,8 @@ void RunRouter(std::string_view program, const ServerConfig& config) {
       .max_body_bytes = config.http_max_body_bytes,
       .max_connections = config.http_max_connections,
       .max_connections_per_address = config.http_max_connections_per_address};
-  RouterHttpApi http_api(&router, config.serving.transport.default_deadline);
+  RouterHttpApi http_api(&router, config.serving.transport.default_deadline,
+                         [registry] { return MetricsText({registry}); });
   std::unique_ptr<HttpServer> http;
   if (config.http_enabled()) {
     if (Status listening = HttpServer::Start(

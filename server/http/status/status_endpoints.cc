@@ -7,12 +7,11 @@
 #include "server/http/api_error.h"
 #include "server/http/embedded_files.h"
 #include "server/http/query_string.h"
+#include "server/metrics/metrics_text.h"
 
 namespace locator {
 namespace {
 
-constexpr char kMetricsContentType[] =
-    "text/plain; version=0.0.4; charset=utf-8";
 constexpr std::string_view kWebPrefix = "/web/";
 
 // What an /api/ path answers when its source failed: 503

@@ -1,9 +1,10 @@
 // The router's HTTP/JSON API (locatord --route --http-listen) answers
 // browsers and curl as the gRPC router does: :locate, :locateBatch,
 // :profile, :grid (in one message, within --http-max-grid-cells) and
-// :topology; other routes are 404 naming these, bad bodies 400, bodies
-// past --http-max-body-bytes 413, POSTs that are not JSON 415; hostile
-// grids, profiles and bodies get what a shard's HTTP API gives them.
+// :topology, and /metrics counts its gRPC calls; other routes are 404 naming
+// these, bad bodies 400, bodies past --http-max-body-bytes 413, POSTs that are
+// not JSON 415; hostile grids, profiles and bodies get what a shard's HTTP API
+// gives them.
 
 #include <gmock/gmock.h>
 #include <google/protobuf/util/json_util.h>
@@ -58,6 +59,14 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
       SendHttp(http_port, "GET", "/v1/datasets/tiles:topology", &reply).ok());
   EXPECT_EQ(reply.status, 200u);
   EXPECT_THAT(reply.body, HasSubstr("\"complete\":true"));
+  // Its /metrics counts its gRPC calls (recorded before their status is
+  // sent), as locatord's does.
+  ASSERT_TRUE(HttpGet(http_port, "/metrics", &reply).ok());
+  EXPECT_EQ(reply.status, 200u);
+  EXPECT_THAT(reply.headers["content-type"], HasSubstr("version=0.0.4"));
+  EXPECT_THAT(reply.body,
+              HasSubstr("locator_rpc_requests_total{code=\"OK\",method="
+                        "\"LocateBatch\",service=\"locator.v1.Locator\"} 1"));
   // A profile across the tiles, as a shard answers it over gRPC.
   v1::ProfileRequest line;
   line.set_dataset("tiles");
