@@ -84,21 +84,6 @@ grpc::ServerUnaryReactor* RouterService::GetTopology(
   return reactor;
 }
 
-// Forwards a unary call to shard `shard` with `start` (which starts the
-// stub's callback method) and finishes the caller's call with its answer.
-template <typename Request, typename Response, typename Start>
-grpc::ServerUnaryReactor* ForwardUnary(
-    grpc::CallbackServerContext* context, ShardTopology* topology,
-    std::shared_ptr<grpc::ClientContext> call, size_t shard,
-    const Request* request, Response* response, Start start) {
-  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
-  start(topology->async(shard), call.get(), request, response,
-        [topology, call, shard, reactor](grpc::Status status) {
-          reactor->Finish(FromShard(*topology, shard, status));
-        });
-  return reactor;
-}
-
 grpc::ServerUnaryReactor* RouterService::Profile(
     grpc::CallbackServerContext* context, const v1::ProfileRequest* request,
     v1::ProfileResponse* response) {
@@ -110,22 +95,26 @@ grpc::ServerUnaryReactor* RouterService::Profile(
 grpc::ServerUnaryReactor* RouterService::GetStats(
     grpc::CallbackServerContext* context, const v1::GetStatsRequest* request,
     v1::GetStatsResponse* response) {
-  return ForwardUnary(
-      context, topology_, ShardContext(*context), 0, request, response,
-      [](auto* async, auto* call, auto* req, auto* resp, auto done) {
-        async->GetStats(call, req, resp, std::move(done));
-      });
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  router_->ForwardWhole(0, CallOf(context, reactor),
+                        [&](auto* async, auto* shard_context, auto done) {
+                          async->GetStats(shard_context, request, response,
+                                          std::move(done));
+                        });
+  return reactor;
 }
 
 grpc::ServerUnaryReactor* RouterService::ListDatasets(
     grpc::CallbackServerContext* context,
     const v1::ListDatasetsRequest* request,
     v1::ListDatasetsResponse* response) {
-  return ForwardUnary(
-      context, topology_, ShardContext(*context), 0, request, response,
-      [](auto* async, auto* call, auto* req, auto* resp, auto done) {
-        async->ListDatasets(call, req, resp, std::move(done));
-      });
+  grpc::ServerUnaryReactor* reactor = context->DefaultReactor();
+  router_->ForwardWhole(0, CallOf(context, reactor),
+                        [&](auto* async, auto* shard_context, auto done) {
+                          async->ListDatasets(shard_context, request, response,
+                                              std::move(done));
+                        });
+  return reactor;
 }
 
 grpc::ServerUnaryReactor* RouterService::Retune(

@@ -177,12 +177,9 @@ void ShardRouter::Profile(const v1::ProfileRequest* request,
           ? ShardNear(request->dataset(),
                       {request->vertices(0).x(), request->vertices(0).y()})
           : 0;
-  std::shared_ptr<grpc::ClientContext> context = call.new_context();
-  topology_->async(shard)->Profile(
-      context.get(), request, response,
-      [this, context, shard, finish = call.finish](grpc::Status status) {
-        finish(FromShard(*topology_, shard, status));
-      });
+  ForwardWhole(shard, call, [&](auto* async, auto* context, auto done) {
+    async->Profile(context, request, response, std::move(done));
+  });
 }
 
 void ShardRouter::GridWhole(const v1::GridRequest* request,

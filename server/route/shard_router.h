@@ -40,6 +40,10 @@
 
 namespace locator {
 
+// `status` from shard `shard` of `topology`, its message naming the shard.
+grpc::Status FromShard(const ShardTopology& topology, size_t shard,
+                       const grpc::Status& status);
+
 class ShardRouter {
  public:
   // One call, as its transport hands it over.
@@ -87,6 +91,19 @@ class ShardRouter {
 
   ShardTopology& topology() const { return *topology_; }
 
+  // Forwards a call whole to shard `shard`: `start(async, context, done)`
+  // starts the stub's callback method (async: the shard's
+  // async_interface) under a context from call.new_context, and
+  // call.finish gets its status, the message naming the shard.
+  template <typename Start>
+  void ForwardWhole(size_t shard, const Call& call, Start start) {
+    std::shared_ptr<grpc::ClientContext> context = call.new_context();
+    start(topology_->async(shard), context.get(),
+          [this, context, shard, finish = call.finish](grpc::Status status) {
+            finish(FromShard(*topology_, shard, status));
+          });
+  }
+
  private:
   // Runs `route` with `dataset`'s topology: at once on this thread when it
   // is known and `here`, else on the pool once known (a failed fetch ends
@@ -106,10 +123,6 @@ class ShardRouter {
   const uint64_t max_whole_grid_cells_;
   WorkerPool pool_;
 };
-
-// `status` from shard `shard` of `topology`, its message naming the shard.
-grpc::Status FromShard(const ShardTopology& topology, size_t shard,
-                       const grpc::Status& status);
 
 }  // namespace locator
 
