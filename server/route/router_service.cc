@@ -7,6 +7,7 @@
 #include "server/grpc/call_context.h"
 #include "server/grpc/locate_stream_reactor.h"
 #include "server/route/grid_relay.h"
+#include "server/route/shard_streams.h"
 
 namespace locator {
 namespace {
@@ -135,29 +136,40 @@ grpc::ServerUnaryReactor* RouterService::Reload(
 
 grpc::ServerBidiReactor<v1::LocateRequest, v1::LocateResponse>*
 RouterService::LocateStream(grpc::CallbackServerContext* context) {
-  // Each point is routed as a Locate is, several in flight at once; the
-  // reactor writes their answers in the order of the points.
+  // Each point is routed as a Locate is, several in flight at once, and
+  // sent on a stream to its shard (ShardStreams); the reactor writes their
+  // answers in the order of the points. The shard streams' contexts are
+  // made now, while the stream is surely alive: a point may reach its
+  // shard after the stream has finished.
+  std::vector<std::shared_ptr<grpc::ClientContext>> contexts;
+  for (size_t s = 0; s < topology_->num_shards(); ++s) {
+    contexts.push_back(ShardContext(*context));
+  }
+  auto streams = std::make_shared<ShardStreams>(topology_, std::move(contexts));
   return new LocateStreamReactor(
       context, default_deadline_,
-      [this, context](const v1::LocateRequest& request,
-                      LocateStreamReactor::Answer answer) {
+      [this, context, streams](const v1::LocateRequest& request,
+                               LocateStreamReactor::Answer answer) {
         struct Routed {
           v1::LocateRequest request;
           v1::LocateResponse response;
         };
         auto point = std::make_shared<Routed>();
         point->request = request;
-        // Made now, while the stream is surely alive: a Locate makes at most
-        // one shard call, perhaps after the stream has finished.
-        std::shared_ptr<grpc::ClientContext> shard = ShardContext(*context);
         router_->Locate(
             &point->request, &point->response,
             ShardRouter::Call{
                 .authorization = Authorization(*context),
-                .new_context = [shard] { return shard; },
+                .new_context = nullptr,  // the points go on the streams
                 .finish =
                     [point, answer = std::move(answer)](grpc::Status status) {
                       answer(status, &point->response);
+                    },
+                .send_locate =
+                    [streams](size_t shard, const v1::LocateRequest* routed,
+                              v1::LocateResponse* response,
+                              std::function<void(grpc::Status)> done) {
+                      streams->Send(shard, *routed, response, std::move(done));
                     }});
       });
 }

@@ -87,15 +87,23 @@ void ShardRouter::ForwardLocate(const v1::LocateRequest* request,
       return;
     }
   }
+  auto done = [this, shard, finish = call.finish,
+               dataset = request->dataset()](grpc::Status status) {
+    // The shard no longer serves that tile: learn the topology anew.
+    if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
+      topology_->Forget(dataset);
+    }
+    finish(FromShard(*topology_, shard, status));
+  };
+  if (call.send_locate) {
+    call.send_locate(shard, request, response, std::move(done));
+    return;
+  }
   std::shared_ptr<grpc::ClientContext> context = call.new_context();
   topology_->async(shard)->Locate(
       context.get(), request, response,
-      [this, context, shard, finish = call.finish,
-       dataset = request->dataset()](grpc::Status status) {
-        if (status.error_code() == grpc::StatusCode::FAILED_PRECONDITION) {
-          topology_->Forget(dataset);
-        }
-        finish(FromShard(*topology_, shard, status));
+      [context, done = std::move(done)](grpc::Status status) {
+        done(std::move(status));
       });
 }
 

@@ -54,6 +54,14 @@ class ShardRouter {
     std::function<std::shared_ptr<grpc::ClientContext>()> new_context;
     // Ends the call with its outcome; the response is complete when OK.
     std::function<void(grpc::Status)> finish;
+    // How a Locate reaches its shard when set (a stream's points, on
+    // streams to the shards: ShardStreams): sends `request` to `shard`,
+    // its answer into *response, and runs `done` with the shard's status.
+    // Unset: a unary Locate under a context from new_context.
+    std::function<void(size_t shard, const v1::LocateRequest* request,
+                       v1::LocateResponse* response,
+                       std::function<void(grpc::Status)> done)>
+        send_locate = nullptr;
   };
 
   // Routes to the shards of `topology` (which must outlive it) with

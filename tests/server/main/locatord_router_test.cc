@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <chrono>
@@ -219,6 +220,62 @@ TEST_F(LocatordTileSetTest, TheRouterStreamsEachPointToItsShardInOrder) {
   const std::span<const Point2> some(queries.data(), 100);
   EXPECT_EQ(
       reference->Disagreements(some, LocateOverStream(*stub, some), false), "");
+}
+
+// Each stream through the router reaches a shard on a stream of its own:
+// a shard that dies under it fails the points it had not answered, naming
+// the shard, and the client's stream ends with that status rather than
+// waiting; the router goes on serving the other shard's points.
+TEST_F(LocatordTileSetTest, AStreamThroughTheRouterEndsWhenItsShardDies) {
+  ASSERT_NO_FATAL_FAILURE(StartShardsAndRouter({}));
+  auto stub = NewStub(*router_);
+  const std::vector<Point2> queries = TestQueries();
+  ASSERT_GE(queries.size(), 200u);
+  ASSERT_EQ(LocateOverStream(*stub, queries).size(), queries.size());
+
+  grpc::ClientContext context;
+  context.set_deadline(std::chrono::system_clock::now() +
+                       std::chrono::seconds(30));
+  auto stream = stub->LocateStream(&context);
+  for (size_t i = 0; i < 50; ++i) {
+    ASSERT_TRUE(stream->Write(LocateRequestFor(queries[i])));
+  }
+  v1::LocateResponse answer;
+  ASSERT_TRUE(stream->Read(&answer));
+  shard1_->SendSignal(SIGKILL);
+  // Points of both shards after the kill: shard 1's cannot be answered.
+  for (size_t i = 50; i < 200; ++i) {
+    if (!stream->Write(LocateRequestFor(queries[i]))) break;
+  }
+  stream->WritesDone();
+  size_t answered = 1;
+  while (stream->Read(&answer)) ++answered;
+  const grpc::Status ended = stream->Finish();
+  EXPECT_LT(answered, 200u);
+  EXPECT_EQ(ended.error_code(), grpc::StatusCode::UNAVAILABLE)
+      << ended.error_message();
+  EXPECT_THAT(ended.error_message(), HasSubstr("shard 1 ("));
+
+  // Shard 0's points are still answered, shard 1's refused naming it (each
+  // after the channel's retries of UNAVAILABLE: one of each is enough).
+  int located = 0, refused = 0;
+  for (size_t i = 0; i < queries.size() && (located == 0 || refused == 0);
+       ++i) {
+    grpc::ClientContext one;
+    one.set_deadline(std::chrono::system_clock::now() +
+                     std::chrono::seconds(10));
+    v1::LocateResponse response;
+    const grpc::Status status =
+        stub->Locate(&one, LocateRequestFor(queries[i]), &response);
+    if (status.ok()) {
+      ++located;
+    } else {
+      ++refused;
+      EXPECT_THAT(status.error_message(), HasSubstr("shard 1 (")) << i;
+    }
+  }
+  EXPECT_GT(located, 0);
+  EXPECT_GT(refused, 0);
 }
 
 // Shards that serve mutual TLS only are reached by a router given the
