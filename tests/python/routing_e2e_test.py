@@ -48,21 +48,22 @@ def places(locations):
     return [place(location) for location in locations]
 
 
-class RoutingE2eTest(unittest.TestCase):
+class TileSetServers(unittest.TestCase):
+    """A test class over a tile set built in cls.work (setUpClass makes
+    it): two shards of it (--tiles 0/2 and 1/2), a router over them and
+    one locatord serving it whole, each logging in a directory of its
+    own."""
 
     @classmethod
-    def setUpClass(cls):
-        cls.work = tempfile.TemporaryDirectory()
-        tile_set = os.path.join(cls.work.name, "tiles")
-        subprocess.run([LOCATOR_BUILD, "uniform:20000:1", "--out", tile_set,
-                        "--tile-points", "2000", "--quiet"],
-                       check=True, capture_output=True)
-        dataset = "big=" + os.path.join(tile_set, "manifest.json")
+    def serve(cls, tile_set, name):
+        """Serves the tile set in directory `tile_set` as dataset `name`:
+        cls.shards, cls.router and cls.whole."""
+        dataset = f"{name}=" + os.path.join(tile_set, "manifest.json")
         cls.servers = []
 
-        def start(name, args):
-            work = os.path.join(cls.work.name, name)
-            os.mkdir(work)  # one log each
+        def start(server_name, args):
+            work = os.path.join(cls.work.name, server_name)
+            os.mkdir(work)
             server = Locatord(LOCATORD, args, work)
             cls.servers.append(server)
             return server
@@ -84,6 +85,18 @@ class RoutingE2eTest(unittest.TestCase):
         for server in cls.servers:
             server.stop()
         cls.work.cleanup()
+
+
+class RoutingE2eTest(TileSetServers):
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.TemporaryDirectory()
+        tile_set = os.path.join(cls.work.name, "tiles")
+        subprocess.run([LOCATOR_BUILD, "uniform:20000:1", "--out", tile_set,
+                        "--tile-points", "2000", "--quiet"],
+                       check=True, capture_output=True)
+        cls.serve(tile_set, "big")
 
     def test_a_shards_own_topology_is_incomplete(self):
         from locator_client import LocatorClient, LocatorError
@@ -138,7 +151,7 @@ class RoutingE2eTest(unittest.TestCase):
                                  without_costs([whole.locate(x, y)]))
 
 
-class CrsRoutingE2eTest(unittest.TestCase):
+class CrsRoutingE2eTest(TileSetServers):
     """A tile set in UTM zone 33N (3,000 points in a 2 km square near 15°E
     49.6°N, tiles of 400 points) served by two shards behind a router and
     by one locatord whole: a routing client given lon/lat points sends
@@ -162,33 +175,7 @@ class CrsRoutingE2eTest(unittest.TestCase):
                         "oo=Y_POSSIBLE_NAMES=y&z=h&a_srs=EPSG:32633",
                         "--out", tile_set, "--tile-points", "400", "--quiet"],
                        check=True, capture_output=True)
-        dataset = "utm=" + os.path.join(tile_set, "manifest.json")
-        cls.servers = []
-
-        def start(name, args):
-            work = os.path.join(cls.work.name, name)
-            os.mkdir(work)
-            server = Locatord(LOCATORD, args, work)
-            cls.servers.append(server)
-            return server
-
-        try:
-            shards = [start(f"shard{k}",
-                            ["--dataset", dataset, "--tiles", f"{k}/2"])
-                      for k in range(2)]
-            cls.router = start("router", [
-                "--route", "--shards",
-                ",".join(shard.target for shard in shards)])
-            cls.whole = start("whole", ["--dataset", dataset])
-        except Exception:
-            cls.tearDownClass()
-            raise
-
-    @classmethod
-    def tearDownClass(cls):
-        for server in cls.servers:
-            server.stop()
-        cls.work.cleanup()
+        cls.serve(tile_set, "utm")
 
     def clients(self, crs):
         from locator_client import LocatorClient
