@@ -56,7 +56,9 @@ std::optional<grpc::Status> GridCollector::Take() {
     header_seen_ = true;
     const v1::GridHeader& header = message_.header();
     const uint64_t cells = uint64_t{header.width()} * header.height();
-    if (cells > max_cells_) {
+    // A height past the limit is refused too: rows are counted one by one
+    // even when they have no cells.
+    if (cells > max_cells_ || header.height() > max_cells_) {
       return grpc::Status(
           grpc::StatusCode::RESOURCE_EXHAUSTED,
           "the grid has " + std::to_string(header.width()) + " x " +

@@ -3,9 +3,10 @@
 // GridResponse holds the header and every row. Any shard answers a grid
 // whole; the router asks the one holding the grid's centre.
 //
-// A grid of more than `max_cells` cells is refused with RESOURCE_EXHAUSTED
-// (naming the limit and --http-max-grid-cells, as a server's :grid is) as
-// soon as the shard's header says so, and the shard's call is cancelled.
+// A grid of more than `max_cells` cells (or rows) is refused with
+// RESOURCE_EXHAUSTED (naming the limit and --http-max-grid-cells, as a
+// server's :grid is) as soon as the shard's header says so, and the
+// shard's call is cancelled.
 // A stream that breaks its own header (rows past the height, twice, or
 // missing) ends the call with INTERNAL naming the shard. The shard's status
 // otherwise ends it, its message naming the shard.

@@ -5,8 +5,9 @@
 // nothing but the shards.
 //
 //   Locate, LocateBatch, GetTopology   ShardRouter (shard_router.h)
-//   LocateStream  each point as a Locate, several in flight, answered in
-//                 order (LocateStreamReactor)
+//   LocateStream  each point routed as a Locate and sent on a stream to
+//                 its shard (ShardStreams), several in flight, answered
+//                 in order (LocateStreamReactor)
 //   Profile       to the shard of the line's first vertex (any shard
 //                 answers a profile whole)
 //   Grid          to the shard of the grid's centre, streamed back as it
