@@ -120,8 +120,9 @@ class ShardStream final
       }
       ended_status_ = failure;
       failed = std::move(unanswered_);
-      for (Unsent& unsent : unsent_)
+      for (Unsent& unsent : unsent_) {
         failed.push_back(std::move(unsent.awaited));
+      }
       unsent_.clear();
     }
     for (Awaited& awaited : failed) awaited.done(failure);
