@@ -20,8 +20,8 @@ std::string_view Utf8Prefix(std::string_view text, size_t max_bytes) {
 void AppendShown(std::string_view text, std::string* out) {
   constexpr char kHex[] = "0123456789abcdef";
   for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7f) {
+    if (IsControlByte(c)) {
+      const auto byte = static_cast<unsigned char>(c);
       out->append("\\x");
       out->push_back(kHex[byte >> 4]);
       out->push_back(kHex[byte & 0xf]);

@@ -23,6 +23,13 @@ namespace locator {
 // The most bytes of a string QuotedInput() shows.
 inline constexpr size_t kQuotedInputBytes = 80;
 
+// Whether `c` is an ASCII control character (below 0x20, or DEL), which a
+// message of one line must not hold.
+inline bool IsControlByte(char c) {
+  const auto byte = static_cast<unsigned char>(c);
+  return byte < 0x20 || byte == 0x7f;
+}
+
 // `text` in single quotes. Longer than kQuotedInputBytes: its first bytes
 // (never half a UTF-8 character), "...", and its size, as
 // 'abc...' (10485760 bytes). Control characters are shown as \xNN, so that

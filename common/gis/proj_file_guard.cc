@@ -172,7 +172,7 @@ void GuardedProjContext::KeepError(void* self, int level, const char* message) {
   // PROJ may quote the request's text: one line, bounded.
   std::string kept = TruncatedMessage(text, kMaxLoggedError);
   for (char& c : kept) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == '\x7f') c = ' ';
+    if (IsControlByte(c)) c = ' ';
   }
   static_cast<GuardedProjContext*>(self)->logged_error_ = std::move(kept);
 }

@@ -54,9 +54,9 @@ class GuardedProjContext {
 
   // The last error PROJ logged since the last call (without the name of
   // the PROJ function that logged it, on one line, cut to kMaxLoggedError
-  // bytes), or ""
-  // if none was; forgets it. PROJ's error code alone is no substitute:
-  // proj_create() leaves an earlier failure's code in the context.
+  // bytes), or "" if none was; forgets it. PROJ's error code alone is no
+  // substitute: proj_create() leaves an earlier failure's code in the
+  // context.
   std::string TakeLoggedError();
 
   // Whether PROJ's look-up of the grid or file `name`, as a CRS names it,
