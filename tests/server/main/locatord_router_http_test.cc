@@ -7,7 +7,6 @@
 // gives them.
 
 #include <gmock/gmock.h>
-#include <google/protobuf/util/json_util.h>
 #include <grpcpp/grpcpp.h>
 #include <gtest/gtest.h>
 
@@ -42,14 +41,10 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   grpc::ClientContext context;
   ASSERT_TRUE(stub->LocateBatch(&context, request, &over_grpc).ok());
   request.clear_dataset();
-  std::string body;
-  ASSERT_TRUE(google::protobuf::util::MessageToJsonString(request, &body).ok());
-  HttpReply reply;
-  reply = Post(http_port, "/v1/datasets/tiles:locateBatch", body);
+  HttpReply reply =
+      Post(http_port, "/v1/datasets/tiles:locateBatch", ToJson(request));
   ASSERT_EQ(reply.status, 200u) << reply.body;
-  v1::LocateBatchResponse over_http;
-  ASSERT_TRUE(
-      google::protobuf::util::JsonStringToMessage(reply.body, &over_http).ok());
+  const auto over_http = FromJson<v1::LocateBatchResponse>(reply.body);
   EXPECT_EQ(over_http.triangle_ids_size(), 5);
   for (int i = 0; i < 5; ++i) {
     EXPECT_EQ(over_http.triangle_ids(i), over_grpc.triangle_ids(i)) << i;
@@ -82,15 +77,9 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
                   .ok());
   ASSERT_GT(over_grpc_profile.breakpoints_size(), 10);
   line.clear_dataset();
-  std::string profile_body;
-  ASSERT_TRUE(
-      google::protobuf::util::MessageToJsonString(line, &profile_body).ok());
-  reply = Post(http_port, "/v1/datasets/tiles:profile", profile_body);
+  reply = Post(http_port, "/v1/datasets/tiles:profile", ToJson(line));
   ASSERT_EQ(reply.status, 200u) << reply.body;
-  v1::ProfileResponse over_http_profile;
-  ASSERT_TRUE(google::protobuf::util::JsonStringToMessage(reply.body,
-                                                          &over_http_profile)
-                  .ok());
+  const auto over_http_profile = FromJson<v1::ProfileResponse>(reply.body);
   EXPECT_EQ(over_http_profile.SerializeAsString(),
             over_grpc_profile.SerializeAsString());
   reply = Post(http_port, "/v1/datasets/tiles:profile",
@@ -103,15 +92,9 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
   v1::GridResponse streamed;
   ASSERT_TRUE(StreamGrid(*NewStub(*shard1_), grid, &streamed).ok());
   grid.clear_dataset();
-  std::string grid_body;
-  ASSERT_TRUE(
-      google::protobuf::util::MessageToJsonString(grid, &grid_body).ok());
-  reply = Post(http_port, "/v1/datasets/tiles:grid", grid_body);
+  reply = Post(http_port, "/v1/datasets/tiles:grid", ToJson(grid));
   ASSERT_EQ(reply.status, 200u) << reply.body.substr(0, 300);
-  v1::GridResponse over_http_grid;
-  ASSERT_TRUE(
-      google::protobuf::util::JsonStringToMessage(reply.body, &over_http_grid)
-          .ok());
+  const auto over_http_grid = FromJson<v1::GridResponse>(reply.body);
   EXPECT_EQ(over_http_grid.header().SerializeAsString(),
             streamed.header().SerializeAsString());
   EXPECT_EQ(over_http_grid.rows(), 25u);
@@ -121,10 +104,7 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
     ASSERT_NEAR(over_http_grid.values(v), streamed.values(v), 1e-9) << v;
   }
   grid.set_height(26);
-  grid_body.clear();
-  ASSERT_TRUE(
-      google::protobuf::util::MessageToJsonString(grid, &grid_body).ok());
-  reply = Post(http_port, "/v1/datasets/tiles:grid", grid_body);
+  reply = Post(http_port, "/v1/datasets/tiles:grid", ToJson(grid));
   EXPECT_EQ(reply.status, 429u) << reply.body;
   EXPECT_THAT(reply.body, HasSubstr("--http-max-grid-cells"));
 
@@ -162,19 +142,7 @@ TEST_F(LocatordTileSetTest, TheRouterAnswersOverHttpAsOverGrpc) {
 template <typename Request>
 std::string JsonBodyOf(Request request) {
   request.clear_dataset();
-  std::string body;
-  EXPECT_TRUE(google::protobuf::util::MessageToJsonString(request, &body).ok());
-  return body;
-}
-
-// The answer in `reply`'s JSON body (an empty one if it does not parse).
-template <typename Response>
-Response JsonAnswer(const HttpReply& reply) {
-  Response answer;
-  EXPECT_TRUE(
-      google::protobuf::util::JsonStringToMessage(reply.body, &answer).ok())
-      << reply.body.substr(0, 200);
-  return answer;
+  return ToJson(request);
 }
 
 // Compares the router's HTTP answers to hostile requests with a shard's
@@ -233,8 +201,8 @@ TEST_F(LocatordTileSetTest,
   SameHttpOutcome outcome(router_->port(), shard0_->port());
 
   const auto same_grid = [](const HttpReply& got, const HttpReply& want) {
-    const auto a = JsonAnswer<v1::GridResponse>(got);
-    const auto b = JsonAnswer<v1::GridResponse>(want);
+    const auto a = FromJson<v1::GridResponse>(got.body);
+    const auto b = FromJson<v1::GridResponse>(want.body);
     if (a.header().SerializeAsString() != b.header().SerializeAsString() ||
         a.values_size() != b.values_size()) {
       return false;
@@ -257,8 +225,8 @@ TEST_F(LocatordTileSetTest,
         "");
   }
   const auto same_profile = [](const HttpReply& got, const HttpReply& want) {
-    return JsonAnswer<v1::ProfileResponse>(got).SerializeAsString() ==
-           JsonAnswer<v1::ProfileResponse>(want).SerializeAsString();
+    return FromJson<v1::ProfileResponse>(got.body).SerializeAsString() ==
+           FromJson<v1::ProfileResponse>(want.body).SerializeAsString();
   };
   for (const v1::ProfileRequest& p : HostileProfiles()) {
     EXPECT_EQ(

@@ -4,27 +4,15 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <limits>
 #include <utility>
 
 #include "server/core/dataset/file_io.h"
 #include "server/core/mesh/serving_mesh.h"
 #include "server/core/tileset/tile_file.h"
+#include "tests/server/main/hostile/hostile_values.h"
 #include "tests/testing/run_binary.h"
 
 namespace locator::test {
-
-std::vector<double> HostileCoordinates() {
-  const double kInf = std::numeric_limits<double>::infinity();
-  return {std::numeric_limits<double>::quiet_NaN(),
-          kInf,
-          -kInf,
-          1e300,
-          -1e300,
-          4.9e-324,
-          -0.0,
-          std::numeric_limits<double>::max()};
-}
 
 std::vector<v1::GridRequest> HostileGrids() {
   v1::GridRequest benign;

@@ -33,13 +33,10 @@ std::vector<Point2> TileSeamQueries(const std::string& dir);
 // and beyond it (nodata -1 there).
 v1::GridRequest GridAcrossTheTiles(uint32_t width, uint32_t height);
 
-// The hostile coordinates every coordinate field of a grid or a profile
-// gets: NaN, the infinities, huge, denormal and negative zero.
-std::vector<double> HostileCoordinates();
-
-// Grids over the tile set (the default dataset) with a hostile value in one
-// field each, sizes past every limit (of 5000 cells), an unknown interpolation
-// and a huge dataset name.
+// Grids over the tile set (the default dataset) with a hostile value
+// (HostileCoordinates(), hostile_values.h) in one field each, sizes past
+// every limit (of 5000 cells), an unknown interpolation and a huge dataset
+// name.
 std::vector<v1::GridRequest> HostileGrids();
 
 // Profiles across the tile set with a hostile value in one coordinate
